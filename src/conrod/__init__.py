@@ -1,0 +1,11 @@
+"""conrod — connecting-rod bearing dynamics.
+
+Data flows one way: case file → loads → film model → orbit solver → contact/EHD →
+results → plots/report. See ``docs/conventions.md`` for frames and signs.
+"""
+
+from conrod.cases import Case
+from conrod.errors import CaseError, ConrodError, ConvergenceError
+
+__all__ = ["Case", "CaseError", "ConrodError", "ConvergenceError"]
+__version__ = "0.1.0"

@@ -1,0 +1,95 @@
+"""The case file: one TOML document, validated section by section.
+
+.. code-block:: python
+
+    case = Case.from_toml("examples/passenger_car_diesel_2000rpm.toml")
+    case.engine.bore        # [m]
+
+Relative file names inside the case (pressure traces, load tables) are resolved
+against the folder of the case file (:meth:`Case.resolve`).
+"""
+
+from __future__ import annotations
+
+import os
+import tomllib
+from pathlib import Path
+
+from pydantic import Field, PrivateAttr
+
+from conrod.cases.base import Section, validate_section
+from conrod.cases.bearing import BearingSection
+from conrod.cases.contact import ContactSection
+from conrod.cases.engine import EngineSection
+from conrod.cases.load import LoadTableSection
+from conrod.cases.lubricant import LubricantSection
+from conrod.cases.mechanism import ClearanceSection
+from conrod.cases.solver import SolverSection
+from conrod.errors import CaseError
+
+
+class Case(Section):
+    """A whole case file. Sections are optional here; each command says which it needs."""
+
+    title: str = Field(default="", description="Free text shown on reports [-]")
+    source: str = Field(default="", description="Citation of where the numbers come from [-]")
+    engine: EngineSection | None = None
+    bearing: BearingSection | None = None
+    lubricant: LubricantSection | None = None
+    load: LoadTableSection | None = None
+    solver: SolverSection = SolverSection()
+    contact: ContactSection = ContactSection()
+    clearance: ClearanceSection | None = None
+
+    _base_dir: Path = PrivateAttr(default_factory=Path.cwd)
+    _path: Path | None = PrivateAttr(default=None)
+
+    @classmethod
+    def from_toml(cls, path: str | os.PathLike[str]) -> Case:
+        """Read and validate a case file; raise :class:`CaseError` on any problem."""
+        path = Path(path)
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError as error:
+            raise CaseError(f"case file {str(path)!r}: cannot be read ({error.strerror})") from None
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as error:
+            raise CaseError(f"case file {str(path)!r}: not valid TOML ({error})") from None
+        return cls.from_dict(data, base_dir=path.resolve().parent, path=path)
+
+    @classmethod
+    def from_dict(
+        cls, data: dict, *, base_dir: str | os.PathLike[str] | None = None, path: Path | None = None
+    ) -> Case:
+        """Validate a case given as a dict (as parsed from TOML)."""
+        case = validate_section(cls, data)
+        case._base_dir = Path(base_dir) if base_dir is not None else Path.cwd()
+        case._path = path
+        return case
+
+    @property
+    def path(self) -> Path | None:
+        """The case file this case was read from, if any."""
+        return self._path
+
+    @property
+    def base_dir(self) -> Path:
+        """Folder against which relative file names in the case are resolved."""
+        return self._base_dir
+
+    def resolve(self, name: str | os.PathLike[str]) -> Path:
+        """Absolute path of a file named in the case (relative to the case file's folder)."""
+        candidate = Path(name)
+        return candidate if candidate.is_absolute() else self._base_dir / candidate
+
+    def require(self, command: str, *sections: str) -> None:
+        """Raise :class:`CaseError` if a section needed by ``command`` is absent."""
+        missing = [name for name in sections if getattr(self, name) is None]
+        if missing:
+            where = f" {str(self._path)!r}" if self._path else ""
+            raise CaseError(
+                f"case file{where} lacks the section(s) "
+                + ", ".join(f"[{name}]" for name in missing)
+                + f" needed by '{command}'"
+            )

@@ -1,0 +1,24 @@
+"""``[load]`` section: a tabulated bearing load instead of ``[engine]`` (issue 4)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Literal
+
+from pydantic import Field
+
+from conrod.cases.base import Section
+
+
+class LoadTableSection(Section):
+    """Load diagram in the bearing frame read from CSV."""
+
+    table: Path = Field(description="CSV with columns crank_angle_deg, load_x_N, load_y_N [-]")
+    speed: float = Field(gt=0.0, le=30000.0, description="Crank speed n mapping angle to time [rpm]")
+    cycle_deg: Literal[360, 720] = Field(default=720, description="Load cycle length [deg]")
+    journal_speed: float | None = Field(
+        default=None, ge=-1.0e4, le=1.0e4, description="Journal angular velocity ω_j [rad/s]"
+    )
+    shell_speed: float = Field(
+        default=0.0, ge=-1.0e4, le=1.0e4, description="Shell angular velocity ω_b [rad/s]"
+    )

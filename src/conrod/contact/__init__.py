@@ -1,0 +1,1 @@
+"""contact stage of the conrod pipeline."""

@@ -1,0 +1,42 @@
+"""Exception types of conrod.
+
+Every error carries *what* failed, *where* and *by how much*, so that the CLI can
+print one clear line and exit with code 2 (bad input) or 3 (no convergence).
+"""
+
+from __future__ import annotations
+
+
+class ConrodError(Exception):
+    """Base class of every error raised on purpose by conrod."""
+
+
+class CaseError(ConrodError, ValueError):
+    """Bad input: a case-file field, a data file or a command-line option.
+
+    The message names the field, the offending value, the allowed range and the unit.
+    """
+
+
+class ConvergenceError(ConrodError, RuntimeError):
+    """A solver did not converge.
+
+    Parameters
+    ----------
+    message : str
+        What did not converge.
+    where : str
+        Where it happened (e.g. ``"crank angle 372.0 deg"``).
+    residual : float
+        How far from convergence it stopped (in the solver's own measure).
+    """
+
+    def __init__(self, message: str, *, where: str = "", residual: float = float("nan")):
+        self.where = where
+        self.residual = residual
+        detail = message
+        if where:
+            detail += f" at {where}"
+        if residual == residual:  # not NaN
+            detail += f" (residual {residual:.3g})"
+        super().__init__(detail)

@@ -1,0 +1,207 @@
+"""The one interface every oil-film model implements (SPEC S2, issue 3).
+
+Frame and signs (see ``docs/conventions.md``)
+----------------------------------------------
+All quantities are given in one *film frame* with axes x, y in the bearing mid-plane:
+
+* ``eccentricity_x, eccentricity_y`` [m]: position of the **journal centre relative to the
+  shell (bearing) centre**;  ``velocity_x, velocity_y`` [m/s]: its rate of change, both
+  as components in the film frame.
+* ``journal_speed`` ω_j and ``shell_speed`` ω_b [rad/s]: angular velocities of the journal
+  and of the shell surface *relative to the film frame*, positive from +x towards +y.
+  In a frame fixed to the shell (the connecting rod for a big end), ω_b = 0 and
+  ω_j = ω_crank − dβ/dt.
+* θ [rad] is measured on the shell from +x towards +y; z [m] is axial, 0 at mid-width.
+* Film thickness of the rigid bearing plus an additive field δ(θ, z) [m]:
+
+  .. math:: h(θ, z) = c - e_x \\cos θ - e_y \\sin θ + δ(θ, z)
+
+* Reynolds equation solved by every model (incompressible, isoviscous):
+
+  .. math:: \\frac{1}{R^2}\\partial_θ(h^3 \\partial_θ p) + \\partial_z(h^3 \\partial_z p)
+            = 6 μ (ω_j + ω_b) \\partial_θ h + 12 μ \\partial_t h
+
+  so ω_j = −ω_b with a stationary centre gives no wedge action (Booker).
+* ``force_x, force_y`` [N]: force of the film **on the journal**. A journal carrying an
+  external load W is in equilibrium when F + W = 0.
+* ``friction_torque_journal`` / ``friction_torque_shell`` [N m]: moments of the film
+  shear on each surface about its centre, positive from +x towards +y.
+* Pressures are gauge [Pa] relative to the ambient pressure at the bearing edges.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class Groove:
+    """Circumferential oil groove in the shell (full when ``extent`` = 2π).
+
+    start_angle : float  Angle θ where the groove starts [rad].
+    extent : float  Angular extent, 2π for a full groove [rad].
+    width : float  Axial width [m].
+    axial_position : float  Axial position of the groove centre, 0 = mid-width [m].
+    """
+
+    start_angle: float = 0.0
+    extent: float = 2.0 * np.pi
+    width: float = 0.0
+    axial_position: float = 0.0
+
+
+@dataclass(frozen=True)
+class FeedHole:
+    """Circular oil-feed hole in the shell.
+
+    angle : float  Angle θ of the hole centre [rad].
+    diameter : float  Hole diameter [m].
+    axial_position : float  Axial position of the hole centre, 0 = mid-width [m].
+    """
+
+    angle: float
+    diameter: float
+    axial_position: float = 0.0
+
+
+@dataclass(frozen=True)
+class BearingGeometry:
+    """Journal-bearing geometry and oil supply, SI units.
+
+    diameter : float  Journal diameter D [m].
+    width : float  Axial length L of the film (shell width) [m].
+    radial_clearance : float  Radial clearance c [m].
+    grooves : tuple  Circumferential grooves held at ``supply_pressure``.
+    feed_holes : tuple  Feed holes held at ``supply_pressure``.
+    supply_pressure : float  Gauge supply pressure [Pa].
+    cavitation_pressure : float  Gauge cavitation pressure [Pa] (≤ 0 ≤ supply).
+    """
+
+    diameter: float
+    width: float
+    radial_clearance: float
+    grooves: tuple[Groove, ...] = ()
+    feed_holes: tuple[FeedHole, ...] = ()
+    supply_pressure: float = 0.0
+    cavitation_pressure: float = 0.0
+
+    @property
+    def radius(self) -> float:
+        """Journal radius R = D/2 [m]."""
+        return 0.5 * self.diameter
+
+    @property
+    def length_to_diameter(self) -> float:
+        """Slenderness L/D [-]."""
+        return self.width / self.diameter
+
+
+@dataclass(frozen=True)
+class FilmState:
+    """Kinematic state handed to a film model (see the module docstring for the frame).
+
+    eccentricity_x, eccentricity_y : float  Journal centre relative to shell centre [m].
+    velocity_x, velocity_y : float  Rate of the above [m/s].
+    journal_speed, shell_speed : float  Surface angular velocities ω_j, ω_b [rad/s].
+    viscosity : float  Dynamic viscosity μ [Pa s].
+    deformation : ndarray or None  Additive film-thickness field δ(θ, z) [m] on the
+        model's grid (:meth:`FilmModel.grid`), None for a rigid bearing.
+    history : ndarray or None  Internal film history carried by the integrator
+        (e.g. film content of a mass-conserving model) [-]; None for memoryless models.
+    """
+
+    eccentricity_x: float
+    eccentricity_y: float
+    velocity_x: float = 0.0
+    velocity_y: float = 0.0
+    journal_speed: float = 0.0
+    shell_speed: float = 0.0
+    viscosity: float = 0.01
+    deformation: np.ndarray | None = None
+    history: np.ndarray | None = None
+
+
+@dataclass
+class FilmResult:
+    """Everything a film model returns for one state (units in brackets)."""
+
+    force_x: float
+    """Film force on the journal, x component [N]."""
+    force_y: float
+    """Film force on the journal, y component [N]."""
+    friction_torque_journal: float
+    """Shear moment of the film on the journal [N m]."""
+    friction_torque_shell: float
+    """Shear moment of the film on the shell [N m]."""
+    side_flow: float
+    """Oil leaving through both bearing edges [m^3/s]."""
+    supply_flow: float
+    """Oil entering through grooves and holes [m^3/s]."""
+    min_film_thickness: float
+    """Minimum film thickness h_min [m]."""
+    min_film_angle: float
+    """Shell angle θ of h_min [rad]."""
+    max_pressure: float
+    """Maximum gauge film pressure p_max [Pa]."""
+    max_pressure_angle: float
+    """Shell angle θ of p_max [rad]."""
+    cavitated_fraction: float
+    """Share of the film area that is cavitated [-]."""
+    friction_power: float = 0.0
+    """Power dissipated in the film [W]."""
+    pressure: np.ndarray | None = None
+    """Pressure field p(θ, z) on :meth:`FilmModel.grid` [Pa], when requested."""
+    history_rate: np.ndarray | None = None
+    """Time derivative of ``FilmState.history`` [1/s], for models with memory."""
+    extra: dict[str, float] = field(default_factory=dict)
+    """Model-specific diagnostics (iterations, residual, ...), units in the key names."""
+
+
+@runtime_checkable
+class FilmModel(Protocol):
+    """What the orbit solver may assume about a film model — and nothing more."""
+
+    name: str
+    """Short identifier: 'short', 'reynolds', 'mass_conserving', 'mobility', 'table'."""
+    geometry: BearingGeometry
+
+    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+        """Full result for one state."""
+        ...
+
+    def force(self, state: FilmState) -> tuple[float, float]:
+        """Film force on the journal (F_x, F_y) [N] — the fast path of the orbit."""
+        ...
+
+    def grid(self) -> tuple[np.ndarray, np.ndarray]:
+        """Nodes θ [rad] and z [m] of the pressure/deformation field."""
+        ...
+
+    def initial_history(self) -> np.ndarray | None:
+        """Initial film history for models with memory; None when memoryless."""
+        ...
+
+
+def film_thickness(
+    geometry: BearingGeometry,
+    eccentricity_x: float,
+    eccentricity_y: float,
+    theta: np.ndarray,
+    deformation: np.ndarray | None = None,
+) -> np.ndarray:
+    """Film thickness h(θ[, z]) = c − e_x cos θ − e_y sin θ + δ [m].
+
+    ``theta`` [rad] is 1-D; with ``deformation`` of shape (n_theta, n_z) the result
+    has that shape, otherwise it is 1-D.
+    """
+    rigid = (
+        geometry.radial_clearance
+        - eccentricity_x * np.cos(theta)
+        - eccentricity_y * np.sin(theta)
+    )
+    if deformation is None:
+        return rigid
+    return rigid[:, None] + deformation

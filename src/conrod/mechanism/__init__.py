@@ -1,0 +1,1 @@
+"""mechanism stage of the conrod pipeline."""
