@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from conrod.film.base import BearingGeometry, FilmResult, FilmState
+from conrod.film.base import BearingGeometry, FilmResult, FilmState, film_thickness
 from conrod.film.short_bearing_kernel import (
     ECCENTRICITY_LIMIT,
     short_bearing_force,
@@ -87,7 +87,9 @@ class ShortBearingFilm:
             result.pressure = self.pressure_field(state)
         return result
 
-    def _friction_torques(self, state: FilmState, eps: float, e_times_ft: float) -> tuple[float, float]:
+    def _friction_torques(
+        self, state: FilmState, eps: float, e_times_ft: float
+    ) -> tuple[float, float]:
         """Shear moments on journal and shell [N m] (full-film Couette + Poiseuille term)."""
         g = self.geometry
         couette = (
@@ -114,7 +116,7 @@ class ShortBearingFilm:
         """Short-bearing pressure p(θ, z) [Pa] on :meth:`grid`, cavitated part at 0."""
         g = self.geometry
         theta, z = self.grid()
-        h = g.radial_clearance - state.eccentricity_x * np.cos(theta) - state.eccentricity_y * np.sin(theta)
+        h = film_thickness(g, state.eccentricity_x, state.eccentricity_y, theta)
         dh_dtheta = state.eccentricity_x * np.sin(theta) - state.eccentricity_y * np.cos(theta)
         dh_dt = -state.velocity_x * np.cos(theta) - state.velocity_y * np.sin(theta)
         omega_sum = state.journal_speed + state.shell_speed

@@ -75,15 +75,14 @@ def write_csv(
     lengths = {a.shape for a in arrays}
     if len(lengths) != 1 or len(next(iter(lengths))) != 1:
         raise ValueError(f"CSV columns must be 1-D and equal length, got shapes {lengths}")
-    with atomic_path(target) as tmp:
-        with open(tmp, "w", encoding="utf-8", newline="") as handle:
-            handle.write(",".join(names) + "\n")
-            table = np.column_stack(
-                [a.astype(float) if a.dtype.kind in "biuf" else a for a in arrays]
-            )
-            if all(a.dtype.kind in "biuf" for a in arrays):
-                np.savetxt(handle, table, delimiter=",", fmt=float_format)
-            else:
-                for row in table:
-                    handle.write(",".join(str(v) for v in row) + "\n")
+    with atomic_path(target) as tmp, open(tmp, "w", encoding="utf-8", newline="") as handle:
+        handle.write(",".join(names) + "\n")
+        table = np.column_stack(
+            [a.astype(float) if a.dtype.kind in "biuf" else a for a in arrays]
+        )
+        if all(a.dtype.kind in "biuf" for a in arrays):
+            np.savetxt(handle, table, delimiter=",", fmt=float_format)
+        else:
+            for row in table:
+                handle.write(",".join(str(v) for v in row) + "\n")
     return Path(target)

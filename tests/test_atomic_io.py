@@ -1,0 +1,37 @@
+"""Atomic writers: a failure leaves neither a partial target nor a temporary file."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from conrod.io import atomic_path, write_csv, write_json
+
+
+def test_csv_round_trip(tmp_path):
+    target = tmp_path / "out" / "table.csv"
+    write_csv(target, {"a": np.array([1.0, 2.0]), "b": np.array([3, 4])})
+    assert target.read_text().splitlines() == ["a,b", "1,3", "2,4"]
+
+
+def test_failure_keeps_previous_file_and_leaves_no_temp(tmp_path):
+    target = tmp_path / "summary.json"
+    write_json(target, {"h_min_m": 1e-6})
+    with pytest.raises(RuntimeError), atomic_path(target) as tmp:
+        tmp.write_text("half")
+        raise RuntimeError("crash mid-write")
+    assert json.loads(target.read_text()) == {"h_min_m": 1e-6}
+    assert [p.name for p in tmp_path.iterdir()] == ["summary.json"]
+
+
+def test_json_refuses_nan(tmp_path):
+    with pytest.raises(ValueError):
+        write_json(tmp_path / "x.json", {"bad": float("nan")})
+    assert not (tmp_path / "x.json").exists()
+
+
+def test_csv_refuses_ragged_columns(tmp_path):
+    with pytest.raises(ValueError, match="equal length"):
+        write_csv(tmp_path / "x.csv", {"a": np.zeros(2), "b": np.zeros(3)})
