@@ -1,0 +1,187 @@
+"""Typed results of one orbit run (issue 4): per-angle :class:`CycleResults`,
+cycle :class:`RunSummary` and the bundle :class:`RunResults`.
+
+Every field documents its unit in brackets. No plotting and no I/O here
+(writers: :mod:`conrod.results.writers`, figures: :mod:`conrod.plotting.orbit_plots`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, fields
+from typing import Any, Protocol, runtime_checkable
+
+import numpy as np
+
+
+@dataclass
+class CycleResults:
+    """Characteristics of the periodic orbit at each output crank angle (seed 002 Table 1)."""
+
+    crank_angle: np.ndarray
+    """Crank angle φ of each output point, 0 at firing TDC [rad]."""
+    eccentricity_x: np.ndarray
+    """Journal centre relative to the shell centre, x, film frame [m]."""
+    eccentricity_y: np.ndarray
+    """Journal centre relative to the shell centre, y, film frame [m]."""
+    velocity_x: np.ndarray
+    """Rate of ``eccentricity_x`` [m/s]."""
+    velocity_y: np.ndarray
+    """Rate of ``eccentricity_y`` [m/s]."""
+    eccentricity_ratio: np.ndarray
+    """ε = |e|/c [-]."""
+    attitude_angle: np.ndarray
+    """Angle from the load vector to the line of centres, positive with rotation [rad]."""
+    h_min: np.ndarray
+    """Minimum film thickness [m]."""
+    h_min_angle_shell: np.ndarray
+    """Shell angle θ of h_min, film frame [rad]."""
+    h_min_angle_journal: np.ndarray
+    """Angle of h_min on the journal, from a journal-fixed mark (θ_shell − journal rotation) [rad]."""
+    p_max: np.ndarray
+    """Maximum gauge film pressure [Pa]."""
+    p_max_angle_shell: np.ndarray
+    """Shell angle θ of p_max [rad]."""
+    friction_torque: np.ndarray
+    """Film shear moment on the journal [N m]."""
+    friction_power: np.ndarray
+    """Film friction power loss |M_j (ω_j − ω_b)| (or the model's own) [W]."""
+    side_flow: np.ndarray
+    """Oil leaving through the bearing edges [m^3/s]."""
+    supply_flow: np.ndarray
+    """Oil entering through grooves and holes [m^3/s]."""
+    load_x: np.ndarray
+    """Load pressing the journal on the shell, x, film frame [N]."""
+    load_y: np.ndarray
+    """Load pressing the journal on the shell, y, film frame [N]."""
+    journal_speed: np.ndarray
+    """Journal angular velocity ω_j in the film frame [rad/s]."""
+    shell_speed: np.ndarray
+    """Shell angular velocity ω_b in the film frame [rad/s]."""
+    contact_force: np.ndarray
+    """Hard-contact normal force P_c ≥ 0 (seed 004 eq. 4.2.5) [N]."""
+    friction_force: np.ndarray
+    """Dry-friction force μ_dry P_c (seed 004 eq. 4.2.6) [N]."""
+    contact_angle: np.ndarray
+    """Shell angle θ of the contact point, film frame (NaN-free: ψ of the centre) [rad]."""
+    journal_rotation: np.ndarray
+    """Rotation of the journal relative to the shell, ∫(ω_j − ω_b) dt from the cycle start [rad]."""
+    sliding_speed: np.ndarray
+    """Surface sliding speed at the contact point V_k + (ω_j − ω_b) R [m/s]."""
+    in_contact: np.ndarray
+    """True where the journal touches the shell [-]."""
+
+    def __len__(self) -> int:
+        return int(self.crank_angle.size)
+
+    @property
+    def crank_angle_deg(self) -> np.ndarray:
+        """Crank angle [deg]."""
+        return np.degrees(self.crank_angle)
+
+    def as_columns(self) -> dict[str, np.ndarray]:
+        """All fields as name → array (SI units, names without unit suffix)."""
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+@dataclass
+class RunSummary:
+    """Cycle characteristics (seed 002 Table 1 'cycle' columns) and run diagnostics."""
+
+    h_min: float
+    """Smallest h_min over the cycle [m]."""
+    h_min_crank_angle: float
+    """Crank angle of the smallest h_min [rad]."""
+    p_max: float
+    """Largest p_max over the cycle [Pa]."""
+    p_max_crank_angle: float
+    """Crank angle of the largest p_max [rad]."""
+    mean_h_min: float
+    """Cycle mean of h_min [m]."""
+    mean_p_max: float
+    """Cycle mean of p_max [Pa]."""
+    mean_friction_power: float
+    """Cycle mean friction power loss [W]."""
+    mean_side_flow: float
+    """Cycle mean side flow [m^3/s]."""
+    mean_supply_flow: float
+    """Cycle mean supply flow [m^3/s]."""
+    effective_temperature: float | None
+    """Effective film temperature from the heat balance [°C] (None if no flow)."""
+    viscosity: float
+    """Viscosity used for the final orbit [Pa s]."""
+    cycles: int
+    """Number of cycles integrated [-]."""
+    periodicity_error: float
+    """max |e_k − e_{k−1}|/c between the last two cycles at the same angles [-]."""
+    periodic: bool
+    """True if ``periodicity_error`` ≤ the tolerance of ``[solver]``."""
+    film_model: str
+    """Film model name [-]."""
+    integrator: str
+    """Integrator name [-]."""
+    wall_time: float
+    """Wall-clock time of the run [s]."""
+    thermal_iterations: int = 0
+    """Heat-balance iterations performed [-]."""
+    max_contact_force: float = 0.0
+    """Largest hard-contact force over the cycle [N]."""
+    warnings: list[str] = field(default_factory=list)
+    """Human-readable warnings (non-periodic orbit, ...) [-]."""
+
+    def as_json_items(self) -> dict[str, Any]:
+        """The summary.json items (engineering-friendly names with units in the key)."""
+        return {
+            "h_min_m": self.h_min,
+            "h_min_crank_angle_deg": float(np.degrees(self.h_min_crank_angle)),
+            "p_max_Pa": self.p_max,
+            "p_max_crank_angle_deg": float(np.degrees(self.p_max_crank_angle)),
+            "mean_h_min_m": self.mean_h_min,
+            "mean_p_max_Pa": self.mean_p_max,
+            "mean_friction_power_W": self.mean_friction_power,
+            "mean_side_flow_m3_s": self.mean_side_flow,
+            "mean_supply_flow_m3_s": self.mean_supply_flow,
+            "effective_temperature_C": self.effective_temperature,
+            "viscosity_Pa_s": self.viscosity,
+            "cycles": self.cycles,
+            "periodicity_error": self.periodicity_error,
+            "periodic": self.periodic,
+            "film_model": self.film_model,
+            "integrator": self.integrator,
+            "wall_time_s": self.wall_time,
+            "thermal_iterations": self.thermal_iterations,
+            "max_orbit_contact_force_N": self.max_contact_force,
+            "warnings": list(self.warnings),
+        }
+
+
+@runtime_checkable
+class ContactAnalysis(Protocol):
+    """What :func:`conrod.contact.analysis.analyse_contact` returns (issue 5, H5)."""
+
+    def summary_items(self) -> dict[str, Any]:
+        """Items merged into summary.json."""
+        ...
+
+    def write_files(self, out_dir: Any) -> list[Any]:
+        """Write wear CSVs and figures into ``out_dir``; return the paths."""
+        ...
+
+
+@dataclass
+class RunResults:
+    """Everything ``Simulation(case).run()`` returns."""
+
+    cycle: CycleResults
+    """Per-angle characteristics of the last (periodic) cycle."""
+    summary: RunSummary
+    """Cycle summary and diagnostics."""
+    clearance: float
+    """Radial clearance c [m]."""
+    pressure_at_p_max: np.ndarray | None = None
+    """Pressure field p(θ, z) at the crank angle of the largest p_max [Pa]."""
+    pressure_grid: tuple[np.ndarray, np.ndarray] | None = None
+    """(θ [rad], z [m]) nodes of ``pressure_at_p_max``."""
+    previous_cycle_eccentricity: np.ndarray | None = None
+    """(x, y) of the cycle before the last, shape (2, n) [m] (periodicity figure)."""
+    contact: ContactAnalysis | None = None
+    """Contact post-processing of H5 (friction work, wear) when available."""
