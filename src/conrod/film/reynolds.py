@@ -1,0 +1,257 @@
+"""Finite-difference Reynolds film with Swift–Stieber cavitation (SPEC S2, seed 002 ch. 3).
+
+The pressure solves the Reynolds equation of :mod:`conrod.film.base` on a
+``n_theta × (n_z + 1)``-node grid (:class:`~conrod.film.characteristics.FilmGrid`) with
+
+* p = 0 (ambient, gauge) on the edges z = ±L/2,
+* p = supply pressure on grooves and feed holes (:mod:`conrod.film.supply`),
+* optionally p = 0 on an axial inlet line at the largest gap θ = ψ + π (Raimondi &
+  Boyd's full-bearing condition, ``ambient_line_at_max_gap=True``),
+* cavitation by projection p := max(p, p_cav) inside projected SOR
+  (:mod:`conrod.film.reynolds_kernel`).
+
+Speed: a cold solve starts on up to three nested grids (coarse → fine, seed 002);
+later solves start from the last converged field (warm start), which is what makes
+a transient orbit cheap.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from conrod.errors import CaseError, ConvergenceError
+from conrod.film import characteristics as chars
+from conrod.film import reynolds_kernel as kernel
+from conrod.film.base import BearingGeometry, FilmResult, FilmState
+from conrod.film.characteristics import FilmGrid
+from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
+
+FrictionConvention = Literal["full_film", "film_fraction"]
+
+
+def optimal_relaxation(grid: FilmGrid) -> float:
+    """SOR factor ω = 2/(1 + √(1 − ρ_J²)) of the constant-h model problem [-].
+
+    ρ_J = (a_θ + a_z cos(π/n_z))/(a_θ + a_z), a_θ = 1/(RΔθ)², a_z = 1/Δz² — the slowest
+    mode is uniform in θ (periodic) and a half sine in z (Young's theory of SOR).
+    """
+    a_theta = 1.0 / (grid.radius * grid.d_theta) ** 2
+    a_z = 1.0 / grid.d_z**2
+    rho = (a_theta + a_z * math.cos(math.pi / grid.n_z)) / (a_theta + a_z)
+    return 2.0 / (1.0 + math.sqrt(1.0 - rho * rho))
+
+
+@dataclass
+class _Problem:
+    """Discrete problem of one grid level (arrays in SI units)."""
+
+    grid: FilmGrid
+    h: np.ndarray
+    h_rate: np.ndarray
+    fixed: np.ndarray
+    fixed_values: np.ndarray
+
+    def coarsened(self) -> _Problem:
+        """The same problem on every other node (coinciding nodes, exact subsampling)."""
+        g = self.grid
+        coarse = FilmGrid(g.radius, g.width, g.n_theta // 2, g.n_z // 2)
+        return _Problem(coarse, self.h[::2, ::2].copy(), self.h_rate[::2, ::2].copy(),
+                        self.fixed[::2, ::2].copy(), self.fixed_values[::2, ::2].copy())
+
+
+@dataclass
+class ReynoldsFilm:
+    """Finite-difference Reynolds film model implementing :class:`FilmModel`.
+
+    geometry : BearingGeometry  Geometry and oil supply.
+    n_theta : int  Circumferential intervals (= nodes, periodic) [-].
+    n_z : int  Axial intervals; the grid has n_z + 1 axial nodes including the edges [-].
+    tolerance : float  SOR stops when max|Δp| ≤ tolerance·max|p| in one sweep [-].
+    max_iterations : int  Sweep limit per grid level; beyond it ConvergenceError [-].
+    friction : 'full_film' (Raimondi–Boyd 360° Couette) or 'film_fraction'.
+    ambient_line_at_max_gap : bool  Hold p = 0 on the axial line at θ = ψ + π.
+    relaxation : float or None  SOR factor ω [-]; None = :func:`optimal_relaxation`.
+    warm_start : bool  Start from the last converged field when available.
+    """
+
+    geometry: BearingGeometry
+    n_theta: int = 144
+    n_z: int = 32
+    tolerance: float = 1.0e-7
+    max_iterations: int = 20000
+    friction: FrictionConvention = "full_film"
+    ambient_line_at_max_gap: bool = False
+    relaxation: float | None = None
+    warm_start: bool = True
+    name: str = "reynolds"
+    _last_pressure: np.ndarray | None = field(default=None, init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if self.n_theta < 8 or self.n_theta % 2:
+            raise CaseError(f"n_theta = {self.n_theta}: out of range (allowed: even, >= 8)")
+        if self.n_z < 2 or self.n_z % 2:
+            raise CaseError(f"n_z = {self.n_z}: out of range (allowed: even, >= 2)")
+        if self.friction not in ("full_film", "film_fraction"):
+            raise CaseError(
+                f"friction = {self.friction!r}: allowed 'full_film' or 'film_fraction'"
+            )
+        g = self.geometry
+        self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
+        self._cos = np.cos(self.film_grid.theta)[:, None]
+        self._sin = np.sin(self.film_grid.theta)[:, None]
+        self._supply = supply_mask(g, self.film_grid)
+        self._edges = edge_mask(self.film_grid)
+
+    # ----------------------------------------------------------------- interface
+    def grid(self) -> tuple[np.ndarray, np.ndarray]:
+        """θ nodes [rad] (periodic, 2π excluded) and z nodes [m] (edges included)."""
+        return self.film_grid.theta, self.film_grid.z
+
+    def initial_history(self) -> None:
+        """The Swift–Stieber film has no memory."""
+        return None
+
+    def reset(self) -> None:
+        """Forget the warm-start field (the next solve is cold)."""
+        self._last_pressure = None
+
+    def force(self, state: FilmState) -> tuple[float, float]:
+        """Film force on the journal (F_x, F_y) [N]."""
+        problem = self._problem(state)
+        pressure, _ = self._solve_pressure(problem, state)
+        return chars.pressure_force(pressure, self.film_grid)
+
+    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+        """All film characteristics for one state (friction convention in ``extra``)."""
+        problem = self._problem(state)
+        pressure, info = self._solve_pressure(problem, state)
+        result = self._characteristics(problem, pressure, state, info)
+        if with_pressure:
+            result.pressure = pressure
+        return result
+
+    # ----------------------------------------------------------------- internals
+    def _problem(self, state: FilmState) -> _Problem:
+        """Film thickness, its rate and the Dirichlet regions for ``state``."""
+        g = self.geometry
+        h = g.radial_clearance - state.eccentricity_x * self._cos - state.eccentricity_y * self._sin
+        h = np.repeat(h, self.n_z + 1, axis=1)
+        if state.deformation is not None:
+            if np.shape(state.deformation) != h.shape:
+                raise CaseError(
+                    f"deformation shape = {np.shape(state.deformation)}: "
+                    f"out of range (allowed: {h.shape} = (n_theta, n_z + 1))"
+                )
+            h = h + state.deformation
+        smallest = float(h.min())
+        if not smallest > 0.0:
+            raise CaseError(
+                f"film thickness min = {smallest:.3g}: out of range (allowed: > 0 m); "
+                "the journal touches the shell"
+            )
+        h_rate = -state.velocity_x * self._cos - state.velocity_y * self._sin
+        h_rate = np.repeat(h_rate, self.n_z + 1, axis=1)
+        fixed = self._edges | self._supply
+        values = np.where(self._supply, g.supply_pressure, 0.0)
+        if self.ambient_line_at_max_gap:
+            psi = math.atan2(state.eccentricity_y, state.eccentricity_x)
+            column = nearest_theta_index(psi + math.pi, self.film_grid)
+            fixed[column, :] = True
+            values[column, :] = 0.0
+        return _Problem(self.film_grid, h, h_rate, fixed, values)
+
+    def _levels(self, problem: _Problem) -> list[_Problem]:
+        """Coarse-to-fine problems: up to three nested grids for a cold start."""
+        levels = [problem]
+        while len(levels) < 3:
+            g = levels[-1].grid
+            if g.n_theta % 4 or g.n_z % 4 or g.n_theta < 48 or g.n_z < 8:
+                break
+            levels.append(levels[-1].coarsened())
+        return levels[::-1]
+
+    def _sweep(self, level: _Problem, pressure: np.ndarray, state: FilmState,
+               tolerance: float) -> tuple[int, float]:
+        g = level.grid
+        a_east, a_north, source = kernel.assemble_coefficients(
+            level.h, level.h_rate, g.radius, g.d_theta, g.d_z,
+            state.journal_speed + state.shell_speed, state.viscosity,
+        )
+        pressure[level.fixed] = level.fixed_values[level.fixed]
+        omega = self.relaxation if self.relaxation is not None else optimal_relaxation(g)
+        sweeps, change = kernel.sor_solve(
+            pressure, a_east, a_north, source, level.fixed,
+            self.geometry.cavitation_pressure, omega, tolerance, self.max_iterations,
+        )
+        if not change <= tolerance:
+            raise ConvergenceError(
+                f"Reynolds SOR on {g.n_theta}x{g.n_z} after {sweeps} sweeps",
+                where=f"e = ({state.eccentricity_x:.4g}, {state.eccentricity_y:.4g}) m, "
+                f"v = ({state.velocity_x:.4g}, {state.velocity_y:.4g}) m/s",
+                residual=change,
+            )
+        return sweeps, change
+
+    def _solve_pressure(self, problem: _Problem, state: FilmState) -> tuple[np.ndarray, dict]:
+        """Converged pressure [Pa] on the fine grid and solver diagnostics."""
+        warm = self.warm_start and self._last_pressure is not None
+        if warm:
+            pressure = self._last_pressure.copy()
+            sweeps, change = self._sweep(problem, pressure, state, self.tolerance)
+            total = sweeps
+        else:
+            levels = self._levels(problem)
+            pressure = np.zeros(levels[0].h.shape)
+            total = 0
+            for k, level in enumerate(levels):
+                if k > 0:
+                    pressure = np.maximum(kernel.prolongate(pressure),
+                                          self.geometry.cavitation_pressure)
+                final = k == len(levels) - 1
+                tolerance = self.tolerance if final else 10.0 * self.tolerance
+                sweeps, change = self._sweep(level, pressure, state, tolerance)
+                total += sweeps
+        self._last_pressure = pressure.copy()
+        return pressure, {"sweeps": float(total), "relative_update": change,
+                          "warm_start": float(warm)}
+
+    def _characteristics(self, problem: _Problem, pressure: np.ndarray, state: FilmState,
+                         info: dict) -> FilmResult:
+        grid, h = self.film_grid, problem.h
+        g = self.geometry
+        omega_sum = state.journal_speed + state.shell_speed
+        a_east, a_north, source = kernel.assemble_coefficients(
+            h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
+        )
+        inflow = kernel.node_imbalance(pressure, a_east, a_north, source) / (12.0 * state.viscosity)
+        free = ~problem.fixed
+        cavitated = free & (pressure <= g.cavitation_pressure)
+        fraction = None
+        if self.friction == "film_fraction":
+            direction = 1 if omega_sum >= 0.0 else -1
+            fraction = kernel.film_fraction_swift_stieber(
+                pressure, h, problem.fixed, g.cavitation_pressure, direction)
+        torque_j, torque_b = chars.friction_torques(
+            pressure, h, grid, state.journal_speed, state.shell_speed, state.viscosity, fraction)
+        fx, fy = chars.pressure_force(pressure, grid)
+        h_min, h_angle = chars.minimum_film(h, grid)
+        p_max, p_angle = chars.peak_pressure(pressure, grid)
+        info = dict(info)
+        info["cavitation_flow_m3_per_s"] = float(inflow[cavitated].sum())
+        info["friction_full_film"] = float(self.friction == "full_film")
+        return FilmResult(
+            force_x=fx, force_y=fy,
+            friction_torque_journal=torque_j, friction_torque_shell=torque_b,
+            side_flow=-float(inflow[:, [0, -1]].sum()),
+            supply_flow=float(inflow[problem.fixed & ~self._edges].sum()),
+            min_film_thickness=h_min, min_film_angle=h_angle,
+            max_pressure=p_max, max_pressure_angle=p_angle,
+            cavitated_fraction=chars.cavitated_fraction(
+                pressure, free, g.cavitation_pressure, grid),
+            friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
+            extra=info,
+        )
