@@ -6,6 +6,7 @@ The keys named in issue 2 are fixed; later checks rely on them.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Literal
 
 from pydantic import Field, model_validator
 
@@ -34,7 +35,9 @@ class EngineSection(Section):
 
     bore: float = Field(gt=0.0, le=2.0, description="Cylinder bore D_p [m]")
     stroke: float = Field(gt=0.0, le=4.0, description="Piston stroke S_p = 2 r [m]")
-    rod_length: float = Field(gt=0.0, le=10.0, description="Rod length L, big-end to small-end centre [m]")
+    rod_length: float = Field(
+        gt=0.0, le=10.0, description="Rod length L, big-end to small-end centre [m]"
+    )
     speed: float = Field(gt=0.0, le=30000.0, description="Crank speed n [rpm]")
     piston_mass: float = Field(gt=0.0, le=1.0e4, description="Piston, pin and rings m_p [kg]")
     rod_mass: float = Field(gt=0.0, le=1.0e4, description="Connecting-rod mass m_rod [kg]")
@@ -42,7 +45,9 @@ class EngineSection(Section):
         gt=0.0, le=10.0, description="Rod centre of mass from the big-end centre L_1 [m]"
     )
     rod_inertia: float | None = Field(
-        default=None, gt=0.0, le=1.0e3,
+        default=None,
+        gt=0.0,
+        le=1.0e3,
         description="Rod moment of inertia about its centre of mass J_c [kg m^2]; "
         "three-mass rod model when given",
     )
@@ -51,6 +56,17 @@ class EngineSection(Section):
         description="CSV file with columns crank_angle_deg, pressure_Pa (absolute) over 0..720 [-]",
     )
     pressure_model: PressureModelSection | None = None
+    ambient_pressure: float | None = Field(
+        default=None,
+        gt=0.0,
+        le=1.0e6,
+        description="Ambient (crankcase) pressure used with pressure_trace; default 1e5 [Pa]",
+    )
+    kinematics: Literal["exact", "series"] = Field(
+        default="exact",
+        description="Piston acceleration of the two-mass model: exact or the seed-003 "
+        "series r ω²(cos φ + λ cos 2φ) [-]",
+    )
 
     @model_validator(mode="after")
     def _check_geometry(self) -> EngineSection:
@@ -67,8 +83,12 @@ class EngineSection(Section):
             )
         if (self.pressure_trace is None) == (self.pressure_model is None):
             raise ValueError(
-                "engine: give exactly one of pressure_trace (CSV file) or "
-                "[engine.pressure_model]"
+                "engine: give exactly one of pressure_trace (CSV file) or [engine.pressure_model]"
+            )
+        if self.ambient_pressure is not None and self.pressure_model is not None:
+            raise ValueError(
+                "engine.ambient_pressure is for pressure_trace; with [engine.pressure_model] "
+                "set engine.pressure_model.ambient_pressure instead"
             )
         return self
 
