@@ -1,0 +1,126 @@
+"""Contact geometry and contact law of a worn (elliptical) rod-bearing shell (seed 003).
+
+A worn shell is an ellipse with semi-axes
+
+.. math::
+
+    a = (D + Δ_{max})/2, \\quad b = (D + Δ_{min})/2, \\quad e^2 = 1 - b^2/a^2,
+
+its major axis at the angle γ to the rod axis. The radius from the shell centre to
+the shell surface in the direction ϕ measured from the major axis is
+
+.. math::
+
+    p(ϕ) = \\frac{b}{\\sqrt{1 - e^2 \\cos^2 ϕ}}
+
+(seed 003 prints ``b / (√(1 − cos²ϕ)·ε²)``, misplacing the root; SPEC S6 fixes it:
+p(0) = a, p(π/2) = b). With the shell centre displaced by ``r`` from the journal
+centre in the direction ϕ, the seed's penetration along that ray is
+
+.. math::
+
+    δ = (r + D/2) - p(ϕ),
+
+and the normal contact force, zero for δ ≤ 0, is (seed 003, reaction R₁₂/R₃₂)
+
+.. math::
+
+    R = c δ^α + β \\dot δ, \\qquad β = 2 μ \\sqrt{c\\, m_{eff}} .
+
+The printed seed multiplies β by ṙ; here the penetration rate δ̇ = ṙ − ṗ is used
+(identical for circular shells, where ṗ = 0). A damping term that would pull the
+surfaces together (R < 0 while separating) is clipped to R = 0.
+
+All functions are numba kernels usable on scalars; SI units.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+
+def shell_semi_axes(diameter: float, clearance_max: float, clearance_min: float) -> tuple:
+    """Semi-axes ``(a, b)`` [m] and squared eccentricity ``e²`` [-] of a worn shell.
+
+    diameter : float  Journal (or pin) diameter D [m].
+    clearance_max, clearance_min : float  Diametral clearances Δmax ≥ Δmin [m].
+    """
+    major = 0.5 * (diameter + clearance_max)
+    minor = 0.5 * (diameter + clearance_min)
+    return major, minor, 1.0 - (minor / major) ** 2
+
+
+@njit(cache=True)
+def shell_radius(angle: float, minor: float, eccentricity_sq: float) -> float:
+    """Ellipse radius p(ϕ) = b/√(1 − e² cos²ϕ) [m]; ``angle`` ϕ from the major axis [rad]."""
+    cosine = math.cos(angle)
+    return minor / math.sqrt(1.0 - eccentricity_sq * cosine * cosine)
+
+
+@njit(cache=True)
+def shell_radius_slope(angle: float, minor: float, eccentricity_sq: float) -> float:
+    """dp/dϕ = −b e² sinϕ cosϕ / (1 − e² cos²ϕ)^{3/2} [m/rad]."""
+    cosine = math.cos(angle)
+    denominator = 1.0 - eccentricity_sq * cosine * cosine
+    numerator = -minor * eccentricity_sq * math.sin(angle) * cosine
+    return numerator / (denominator * math.sqrt(denominator))
+
+
+@njit(cache=True)
+def penetration(
+    dx: float, dy: float, rod_angle: float, diameter: float,
+    minor: float, eccentricity_sq: float, ellipse_angle: float,
+) -> float:
+    """Penetration δ = (r + D/2) − p(ϕ) [m] of a journal in a worn shell (> 0: contact).
+
+    dx, dy : float  Shell centre minus journal centre, engine frame [m].
+    rod_angle : float  Rod angle φ₂ in the engine frame [rad].
+    ellipse_angle : float  Major axis to rod axis γ [rad].
+    The direction in the shell frame is ϕ = atan2(dy, dx) − γ − φ₂ (seed 003).
+    """
+    radius = math.sqrt(dx * dx + dy * dy)
+    angle = math.atan2(dy, dx) - ellipse_angle - rod_angle
+    return radius + 0.5 * diameter - shell_radius(angle, minor, eccentricity_sq)
+
+
+@njit(cache=True)
+def penetration_rate(
+    dx: float, dy: float, vx: float, vy: float, rod_angle: float, rod_rate: float,
+    minor: float, eccentricity_sq: float, ellipse_angle: float,
+) -> tuple:
+    """Radial rate ṙ and penetration rate δ̇ = ṙ − p'(ϕ)·ϕ̇ (same time unit as vx, vy).
+
+    vx, vy : float  Rates of dx, dy; rod_rate : float  rate of φ₂ (consistent units).
+    ϕ̇ = (dx·vy − vx·dy)/r² − φ̇₂ (seed 003, derivative of p₁, p₂).
+    """
+    radius_sq = dx * dx + dy * dy + 1.0e-50
+    radius = math.sqrt(radius_sq)
+    radial_rate = (dx * vx + dy * vy) / radius
+    angle = math.atan2(dy, dx) - ellipse_angle - rod_angle
+    angle_rate = (dx * vy - vx * dy) / radius_sq - rod_rate
+    slope = shell_radius_slope(angle, minor, eccentricity_sq)
+    return radial_rate, radial_rate - slope * angle_rate
+
+
+@njit(cache=True)
+def contact_force(depth: float, depth_rate: float, stiffness: float, exponent: float,
+                  damping: float) -> tuple:
+    """Normal force R = c δ^α + β δ̇ (≥ 0) and its elastic part c δ^α [N]; 0 if δ ≤ 0."""
+    if depth <= 0.0:
+        return 0.0, 0.0
+    elastic = stiffness * depth**exponent
+    return max(elastic + damping * depth_rate, 0.0), elastic
+
+
+def damping_coefficient(damping_factor: float, stiffness: float, effective_mass: float) -> float:
+    """Seed 003 damping β = 2 μ √(c m_eff) [N s/m for α = 1]."""
+    return 2.0 * damping_factor * math.sqrt(stiffness * effective_mass)
+
+
+def shell_outline(minor: float, eccentricity_sq: float, points: int = 361) -> np.ndarray:
+    """Angles ϕ [rad] and radii p(ϕ) [m] of the shell outline, for plotting."""
+    angles = np.linspace(0.0, 2.0 * np.pi, points)
+    return np.stack([angles, minor / np.sqrt(1.0 - eccentricity_sq * np.cos(angles) ** 2)])

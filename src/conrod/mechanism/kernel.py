@@ -1,0 +1,215 @@
+"""Right-hand side of the slider-crank with two clearance joints (seed 003, numba).
+
+State (seed 003 names), with the crank angle α = ω₁t as independent variable and
+primes meaning d/dα:
+
+    y = (x_c, x_c', y_c, y_c', φ₂, φ₂', x₃, x₃', W)
+
+x_c, y_c : rod centre of mass [m]; φ₂ : rod angle [rad] (φ₂ = π at TDC: the unit
+vector (cos φ₂, sin φ₂) points from the centre of mass to the big end); x₃ : piston-pin
+centre on the cylinder axis [m]; W : work done on the rod and piston by the crank and
+the gas minus the contact losses [J] (energy check only).
+
+Frame: x along the cylinder axis from the crank centre towards the cylinder head,
+crank-pin centre at (r cos α, r sin α); α = 0 at firing TDC.
+
+Relative coordinates (seed 003): big end (shell of the rod on the crank pin)
+
+    x₁₂ = x_c − r cos α + L₁ cos φ₂,   y₁₂ = y_c − r sin α + L₁ sin φ₂,
+
+small end (shell of the rod on the piston pin)
+
+    x₃₂ = x_c − (L − L₁) cos φ₂ − x₃,  y₃₂ = y_c − (L − L₁) sin φ₂.
+
+Equations of motion (seed 003, forces divided by m ω₁², moments by J_c2 ω₁²):
+
+    m₂ x_c'' ω₁² = X₁₂ + X₃₂ + F₁₂ₓ,   m₂ y_c'' ω₁² = Y₁₂ + Y₃₂ + F₁₂ᵧ,
+    J_c2 φ₂'' ω₁² = Σ M_C,              m₃ x₃'' ω₁² = −X₃₂ − P.
+
+Sign convention: X₁₂, X₃₂ here are the forces **on the rod**; they push the shell
+centre back towards the journal (−R·(x, y)/r). The seed prints +R·(x, y)/r, which
+with its own initial conditions would pull the surfaces into each other; the
+restoring sign is the physical one and is used here. The big-end friction F₁₂ = f R
+acts on the rod at the contact point against the sliding of the rod's surface over
+the crank pin; its moment about the big-end centre is f R D/2 (seed 003: "+F₁₂·D/2").
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from conrod.mechanism.geometry import contact_force, penetration, penetration_rate
+
+# --- layout of the parameter vector -------------------------------------------------
+CRANK_RADIUS, ROD_LENGTH, ROD_CG, ROD_MASS, ROD_INERTIA, PISTON_MASS = 0, 1, 2, 3, 4, 5
+CRANK_SPEED, FRICTION_VELOCITY = 6, 7
+BIG_END, SMALL_END = 8, 16
+"""Offsets of the two joint blocks."""
+DIAMETER, MINOR, ECC_SQ, ELLIPSE_ANGLE, STIFFNESS, EXPONENT, DAMPING, FRICTION = range(8)
+"""Entries of a joint block."""
+PARAMETER_COUNT = 24
+STATE_SIZE = 9
+
+
+@njit(cache=True)
+def big_end_relative(y: np.ndarray, alpha: float, p: np.ndarray) -> tuple:
+    """Big end: shell centre − crank-pin centre and its α-derivative [m, m/rad]."""
+    r, cg = p[CRANK_RADIUS], p[ROD_CG]
+    c, s = math.cos(y[4]), math.sin(y[4])
+    dx = y[0] - r * math.cos(alpha) + cg * c
+    dy = y[2] - r * math.sin(alpha) + cg * s
+    vx = y[1] + r * math.sin(alpha) - cg * s * y[5]
+    vy = y[3] - r * math.cos(alpha) + cg * c * y[5]
+    return dx, dy, vx, vy
+
+
+@njit(cache=True)
+def small_end_relative(y: np.ndarray, p: np.ndarray) -> tuple:
+    """Small end: shell centre − piston-pin centre and its α-derivative [m, m/rad]."""
+    arm = p[ROD_LENGTH] - p[ROD_CG]
+    c, s = math.cos(y[4]), math.sin(y[4])
+    dx = y[0] - arm * c - y[6]
+    dy = y[2] - arm * s
+    vx = y[1] + arm * s * y[5] - y[7]
+    vy = y[3] - arm * c * y[5]
+    return dx, dy, vx, vy
+
+
+@njit(cache=True)
+def joint_depth(dx: float, dy: float, rod_angle: float, p: np.ndarray, block: int) -> float:
+    """Penetration δ of one joint [m] (> 0: contact)."""
+    return penetration(dx, dy, rod_angle, p[block + DIAMETER], p[block + MINOR],
+                       p[block + ECC_SQ], p[block + ELLIPSE_ANGLE])
+
+
+@njit(cache=True)
+def joint_loads(dx: float, dy: float, vx: float, vy: float, rod_angle: float, rod_rate: float,
+                journal_rate: float, p: np.ndarray, block: int) -> tuple:
+    """Contact of one joint; rates per radian of crank angle.
+
+    Returns (Fx, Fy, moment, normal, elastic, radial_rate, depth_rate, slide_rate, tangential):
+    force on the rod [N], moment of friction about the shell centre [N m], normal force R
+    and its elastic part [N], ṙ and δ̇ [m/s], sliding speed [m/s], friction force [N].
+    journal_rate : rotation of the journal per radian of crank (1 crank pin, 0 piston pin).
+    """
+    depth = joint_depth(dx, dy, rod_angle, p, block)
+    if depth <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    omega = p[CRANK_SPEED]
+    radial, depth_rate = penetration_rate(dx, dy, vx, vy, rod_angle, rod_rate, p[block + MINOR],
+                                          p[block + ECC_SQ], p[block + ELLIPSE_ANGLE])
+    normal, elastic = contact_force(depth, omega * depth_rate, p[block + STIFFNESS],
+                                    p[block + EXPONENT], p[block + DAMPING])
+    radius = math.sqrt(dx * dx + dy * dy) + 1.0e-30
+    nx, ny = dx / radius, dy / radius
+    half_d = 0.5 * p[block + DIAMETER]
+    slide = omega * (-ny * vx + nx * vy - half_d * (rod_rate - journal_rate))
+    v_reg = p[FRICTION_VELOCITY]
+    tangential = -p[block + FRICTION] * normal * slide / math.sqrt(slide * slide + v_reg * v_reg)
+    fx = -normal * nx - tangential * ny
+    fy = -normal * ny + tangential * nx
+    return (fx, fy, -half_d * tangential, normal, elastic, omega * radial, omega * depth_rate,
+            slide, tangential)
+
+
+@njit(cache=True)
+def gas_force(alpha: float, table: np.ndarray) -> float:
+    """Gas force P on the piston [N] (towards the crank when > 0), periodic over 4π.
+
+    ``table`` holds P at equally spaced angles 0, 4π/n, …; linear interpolation.
+    """
+    n = table.shape[0]
+    position = (alpha % (4.0 * math.pi)) / (4.0 * math.pi) * n
+    index = int(position)
+    weight = position - index
+    if index >= n:
+        index, weight = n - 1, 1.0
+    return (1.0 - weight) * table[index] + weight * table[(index + 1) % n]
+
+
+@njit(cache=True)
+def mechanism_rhs(alpha: float, y: np.ndarray, p: np.ndarray, table: np.ndarray) -> np.ndarray:
+    """dy/dα of the 9-state system (seed 003 matrix of right-hand sides)."""
+    omega = p[CRANK_SPEED]
+    w2 = omega * omega
+    phi, phi_rate = y[4], y[5]
+    c, s = math.cos(phi), math.sin(phi)
+    cg, arm = p[ROD_CG], p[ROD_LENGTH] - p[ROD_CG]
+    bx, by, bvx, bvy = big_end_relative(y, alpha, p)
+    big = joint_loads(bx, by, bvx, bvy, phi, phi_rate, 1.0, p, BIG_END)
+    sx, sy, svx, svy = small_end_relative(y, p)
+    small = joint_loads(sx, sy, svx, svy, phi, phi_rate, 0.0, p, SMALL_END)
+    pressure_force = gas_force(alpha, table)
+    moment = (cg * (c * big[1] - s * big[0]) + big[2]
+              - arm * (c * small[1] - s * small[0]) + small[2])
+    out = np.empty(STATE_SIZE)
+    out[0] = y[1]
+    out[1] = (big[0] + small[0]) / (p[ROD_MASS] * w2)
+    out[2] = y[3]
+    out[3] = (big[1] + small[1]) / (p[ROD_MASS] * w2)
+    out[4] = phi_rate
+    out[5] = moment / (p[ROD_INERTIA] * w2)
+    out[6] = y[7]
+    out[7] = (-small[0] - pressure_force) / (p[PISTON_MASS] * w2)
+    out[8] = _net_power(alpha, y, p, big, small, pressure_force) / omega
+    return out
+
+
+@njit(cache=True)
+def _net_power(alpha: float, y: np.ndarray, p: np.ndarray, big: tuple, small: tuple,
+               pressure_force: float) -> float:
+    """Crank power + gas power − contact losses [W] (energy balance, see module doc).
+
+    Loss of a joint: R ṙ − c δ^α δ̇ − F_t v_t (damping, clipping, friction and the
+    non-potential part of the seed's radial force on an elliptical shell).
+    """
+    omega, r = p[CRANK_SPEED], p[CRANK_RADIUS]
+    pin_vx, pin_vy = -omega * r * math.sin(alpha), omega * r * math.cos(alpha)
+    # crank-pin surface point at the contact moves with v_pin − ω₁ (D/2) t; F·t = F_t
+    crank = (big[0] * pin_vx + big[1] * pin_vy
+             - big[8] * omega * 0.5 * p[BIG_END + DIAMETER])
+    gas = -pressure_force * omega * y[7]
+    loss = 0.0
+    for joint in (big, small):
+        loss += joint[3] * joint[5] - joint[4] * joint[6] - joint[8] * joint[7]
+    return crank + gas - loss
+
+
+@njit(cache=True)
+def penetrations(y: np.ndarray, alpha: float, p: np.ndarray) -> tuple:
+    """Penetrations (δ_big, δ_small) [m] at state ``y`` (> 0: contact)."""
+    bx, by, _, _ = big_end_relative(y, alpha, p)
+    sx, sy, _, _ = small_end_relative(y, p)
+    return joint_depth(bx, by, y[4], p, BIG_END), joint_depth(sx, sy, y[4], p, SMALL_END)
+
+
+@njit(cache=True)
+def penetration_rates(y: np.ndarray, alpha: float, p: np.ndarray) -> tuple:
+    """Penetration rates (δ̇_big, δ̇_small) [m/s] at state ``y``."""
+    omega = p[CRANK_SPEED]
+    bx, by, bvx, bvy = big_end_relative(y, alpha, p)
+    sx, sy, svx, svy = small_end_relative(y, p)
+    _, big = penetration_rate(bx, by, bvx, bvy, y[4], y[5], p[BIG_END + MINOR],
+                              p[BIG_END + ECC_SQ], p[BIG_END + ELLIPSE_ANGLE])
+    _, small = penetration_rate(sx, sy, svx, svy, y[4], y[5], p[SMALL_END + MINOR],
+                                p[SMALL_END + ECC_SQ], p[SMALL_END + ELLIPSE_ANGLE])
+    return omega * big, omega * small
+
+
+@njit(cache=True)
+def mechanical_energy(y: np.ndarray, alpha: float, p: np.ndarray) -> float:
+    """Kinetic energy of rod and piston + elastic contact energy c δ^{α+1}/(α+1) [J]."""
+    omega = p[CRANK_SPEED]
+    kinetic = 0.5 * omega * omega * (
+        p[ROD_MASS] * (y[1] ** 2 + y[3] ** 2) + p[ROD_INERTIA] * y[5] ** 2
+        + p[PISTON_MASS] * y[7] ** 2)
+    depths = penetrations(y, alpha, p)
+    elastic = 0.0
+    for depth, block in ((depths[0], BIG_END), (depths[1], SMALL_END)):
+        if depth > 0.0:
+            exponent = p[block + EXPONENT]
+            elastic += p[block + STIFFNESS] * depth ** (exponent + 1.0) / (exponent + 1.0)
+    return kinetic + elastic

@@ -1,0 +1,153 @@
+"""Orchestrator of one clearance-mechanism run: integrate, sample, check energy.
+
+.. code-block:: python
+
+    results = simulate(mechanism, gas_table, RunSettings(cycles=2))
+    results.summary()["max_impact_velocity_big_end_m_s"]
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from conrod.errors import ConvergenceError
+from conrod.mechanism import integrator as rk
+from conrod.mechanism import kernel as k
+from conrod.mechanism.geometry import shell_outline
+from conrod.mechanism.model import Mechanism, seed_initial_state
+from conrod.mechanism.results import Impacts, MechanismResults
+
+CYCLE = 4.0 * math.pi
+"""Four-stroke cycle [rad]."""
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    """Numerics of a run.
+
+    cycles : int  Engine cycles of 4π integrated; results use the last one [-].
+    tolerance : float  Local error per step relative to the smallest radial clearance [-].
+    output_step : float  Crank-angle spacing of the sampled results [rad].
+    max_step : float  Largest integrator step [rad].
+    fixed_step : float | None  Run at this fixed step instead of adaptively [rad].
+    impact_separation : float  Separation, as a fraction of the joint's smallest radial
+        clearance, needed before a new contact entry counts as an impact [-].
+    max_steps : int  Step budget; exceeding it raises ConvergenceError [-].
+    """
+
+    cycles: int = 2
+    tolerance: float = 1.0e-4
+    output_step: float = math.radians(0.5)
+    max_step: float = math.radians(0.25)
+    fixed_step: float | None = None
+    impact_separation: float = 0.01
+    max_steps: int = 20_000_000
+
+
+def rigid_piston_position(crank_angle: np.ndarray, crank_radius: float, rod_length: float):
+    """Exact slider-crank pin position x = r cos α + √(L² − r² sin² α) [m]."""
+    return crank_radius * np.cos(crank_angle) + np.sqrt(
+        rod_length**2 - (crank_radius * np.sin(crank_angle)) ** 2)
+
+
+def error_scale(mechanism: Mechanism, tolerance: float) -> np.ndarray:
+    """Absolute error scale of each state component (clearance-sized) [m, m/rad, rad, J]."""
+    reference = tolerance * min(mechanism.big_end.radial_clearance_min,
+                                mechanism.small_end.radial_clearance_min)
+    angle = reference / mechanism.crank.rod_length
+    return np.array([reference, reference, reference, reference, angle, angle,
+                     reference, reference, 1.0e300])
+
+
+def simulate(
+    mechanism: Mechanism, gas_table: np.ndarray, settings: RunSettings
+) -> MechanismResults:
+    """Integrate ``settings.cycles`` cycles from the seed-003 initial state at firing TDC.
+
+    gas_table : ndarray  Gas force on the piston at equally spaced angles over [0, 4π) [N].
+    Raises ConvergenceError when the integrator fails or exceeds its step budget.
+    """
+    p = mechanism.parameters()
+    table = np.ascontiguousarray(gas_table, dtype=float)
+    y0 = seed_initial_state(mechanism, float(table[0]))
+    end = settings.cycles * CYCLE
+    samples = int(round(end / settings.output_step))
+    out_alpha = np.linspace(0.0, end, samples + 1)
+    separation = settings.impact_separation * np.array(
+        [mechanism.big_end.radial_clearance_min, mechanism.small_end.radial_clearance_min])
+    adaptive = settings.fixed_step is None
+    step = settings.fixed_step if not adaptive else min(1e-5, settings.max_step)
+    max_step = settings.fixed_step if not adaptive else settings.max_step
+    out_y, impacts, count, steps, rejected, status, reached = rk.integrate(
+        y0, 0.0, end, p, table, error_scale(mechanism, settings.tolerance), step, max_step,
+        adaptive, out_alpha, separation, settings.max_steps, 200_000)
+    _check_status(status, reached, steps)
+    count = min(count, impacts.shape[0])
+    found = Impacts(impacts[:count, 0], impacts[:count, 1].astype(int), impacts[:count, 2])
+    return _assemble(mechanism, p, table, out_alpha, out_y, found, settings, steps, rejected)
+
+
+def _check_status(status: int, reached: float, steps: int) -> None:
+    if status == rk.OK:
+        return
+    reason = {rk.TOO_MANY_STEPS: "step budget exhausted",
+              rk.STEP_TOO_SMALL: "step size fell below 1e-14 rad",
+              rk.NOT_FINITE: "state became non-finite"}[status]
+    raise ConvergenceError(f"clearance mechanism integration failed ({reason}, {steps} steps)",
+                           where=f"crank angle {math.degrees(reached):.3f} deg")
+
+
+def _assemble(mechanism, p, table, alpha, states, impacts, settings, steps, rejected):
+    columns = sample_columns(alpha, states, p, table)
+    energy = columns[10]
+    residual = energy - energy[0] - (states[:, 8] - states[0, 8])
+    c = mechanism.crank
+    outline = {}
+    for name, joint in (("big_end", mechanism.big_end), ("small_end", mechanism.small_end)):
+        minor = p[(k.BIG_END if name == "big_end" else k.SMALL_END) + k.MINOR]
+        ecc = p[(k.BIG_END if name == "big_end" else k.SMALL_END) + k.ECC_SQ]
+        angles, radii = shell_outline(minor, ecc)
+        outline[name] = (angles + joint.ellipse_angle, radii - 0.5 * joint.diameter)
+    return MechanismResults(
+        crank_angle=alpha, piston_position=states[:, 6],
+        piston_position_rigid=rigid_piston_position(alpha, c.crank_radius, c.rod_length),
+        rod_angle=states[:, 4] - math.pi, gap=-columns[0:2], journal_offset=np.stack(
+            [columns[5:7], columns[7:9]]), contact_force=columns[2:4],
+        friction_force=columns[11:13], gas_force=columns[4], energy_residual=residual,
+        impacts=impacts, cycles=settings.cycles, steps=steps, rejected_steps=rejected,
+        kinetic_energy_scale=float(np.max(columns[9])), clearance_outline=outline)
+
+
+@njit(cache=True)
+def sample_columns(alpha, states, p, table):
+    """Per-sample derived quantities (rows): δ_big, δ_small, R_big, R_small, P_gas,
+    journal offset big (along, across), small (along, across), kinetic energy,
+    mechanical energy, friction big, friction small."""
+    n = alpha.shape[0]
+    out = np.zeros((13, n))
+    omega = p[k.CRANK_SPEED]
+    for i in range(n):
+        y = states[i]
+        phi = y[4]
+        bx, by, bvx, bvy = k.big_end_relative(y, alpha[i], p)
+        sx, sy, svx, svy = k.small_end_relative(y, p)
+        big = k.joint_loads(bx, by, bvx, bvy, phi, y[5], 1.0, p, k.BIG_END)
+        small = k.joint_loads(sx, sy, svx, svy, phi, y[5], 0.0, p, k.SMALL_END)
+        depths = k.penetrations(y, alpha[i], p)
+        out[0, i], out[1, i] = depths[0], depths[1]
+        out[2, i], out[3, i] = big[3], small[3]
+        out[4, i] = k.gas_force(alpha[i], table)
+        # journal relative to shell, rod frame: e = −(cos φ, sin φ) points to the small end
+        c, s = -math.cos(phi), -math.sin(phi)
+        out[5, i], out[6, i] = -(bx * c + by * s), -(-bx * s + by * c)
+        out[7, i], out[8, i] = -(sx * c + sy * s), -(-sx * s + sy * c)
+        out[9, i] = 0.5 * omega * omega * (p[k.ROD_MASS] * (y[1] ** 2 + y[3] ** 2)
+                                           + p[k.ROD_INERTIA] * y[5] ** 2
+                                           + p[k.PISTON_MASS] * y[7] ** 2)
+        out[10, i] = k.mechanical_energy(y, alpha[i], p)
+        out[11, i], out[12, i] = big[8], small[8]
+    return out
