@@ -1,0 +1,198 @@
+"""Figures of the loads stage: polar load diagram, load vs crank angle, wear diagram,
+and the frames/sign-convention sketch of ``docs/conventions.md``. One function per
+figure; each returns a matplotlib Figure (save it with :func:`save_figure`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from conrod.loads.diagrams import polar_diagram_points
+from conrod.loads.engine_loads import EngineLoads
+
+KN = 1.0e-3
+
+
+def _label_angles(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, every: float) -> None:
+    """Mark and label the points at multiples of ``every`` degrees of crank angle."""
+    marks = np.isclose(np.mod(angle_deg + 1e-9, every), 0.0, atol=1e-6)
+    axes.plot(x[marks], y[marks], "o", ms=3, color="k")
+    for xi, yi, ai in zip(x[marks], y[marks], angle_deg[marks], strict=True):
+        axes.annotate(f"{ai:.0f}°", (xi, yi), textcoords="offset points", xytext=(4, 3), fontsize=7)
+
+
+def polar_load_diagram(loads: EngineLoads) -> Figure:
+    """Polar diagram of the rod force S on the crankpin with poles O and O' (seed 001)."""
+    tangential, outward, pole_shift = polar_diagram_points(
+        loads.radial_force, loads.tangential_force, loads.rotating_inertia_force
+    )
+    figure = Figure(figsize=(7.0, 7.0))
+    axes = figure.add_subplot()
+    axes.plot(
+        np.append(tangential, tangential[0]) * KN,
+        np.append(outward, outward[0]) * KN,
+        lw=1.2,
+        color="C0",
+        label="tip of S (and of R from O')",
+    )
+    _label_angles(axes, tangential * KN, outward * KN, loads.crank_angle_deg, 30.0)
+    axes.plot(0.0, 0.0, "s", color="C3")
+    axes.annotate("O", (0.0, 0.0), xytext=(-12, -4), textcoords="offset points", color="C3")
+    axes.plot(pole_shift[0] * KN, pole_shift[1] * KN, "D", color="C2")
+    axes.annotate(
+        "O'",
+        (pole_shift[0] * KN, pole_shift[1] * KN),
+        xytext=(-14, -10),
+        textcoords="offset points",
+        color="C2",
+    )
+    axes.axhline(0.0, color="0.7", lw=0.6)
+    axes.axvline(0.0, color="0.7", lw=0.6)
+    axes.set_aspect("equal", adjustable="datalim")
+    axes.set_xlabel("T, tangential force on the crankpin (+ along rotation) [kN]")
+    axes.set_ylabel("radial force of S on the crankpin (+ outward along the crank) [kN]")
+    axes.set_title(
+        "Polar load diagram of the crankpin (crank frame)\n"
+        "O' shifted from O by the rotating-mass force "
+        f"K_R = {-loads.rotating_inertia_force * KN:.2f} kN outward",
+        fontsize=10,
+    )
+    axes.legend(loc="best", fontsize=8)
+    axes.grid(True, lw=0.3)
+    return figure
+
+
+def load_vs_crank_angle(loads: EngineLoads) -> Figure:
+    """|R|(φ) with its mean, and the components R, T, gas force (unrolled polar diagram)."""
+    figure = Figure(figsize=(9.0, 6.0))
+    top, bottom = figure.subplots(2, 1, sharex=True)
+    angle = loads.crank_angle_deg
+    mean = float(np.mean(loads.load_magnitude))
+    top.plot(angle, loads.load_magnitude * KN, color="C0", label="|R| resultant on the crankpin")
+    top.axhline(mean * KN, color="C3", ls="--", label=f"mean R = {mean * KN:.2f} kN")
+    top.set_ylabel("load magnitude [kN]")
+    top.legend(fontsize=8)
+    bottom.plot(angle, loads.gas_force * KN, color="0.5", lw=0.9, label="gas force P_g")
+    bottom.plot(angle, loads.radial_force * KN, color="C1", label="radial R (+ towards crank axis)")
+    bottom.plot(angle, loads.tangential_force * KN, color="C2", label="tangential T (+ rotation)")
+    bottom.set_ylabel("force [kN]")
+    bottom.set_xlabel("crank angle φ from firing TDC [deg]")
+    bottom.legend(fontsize=8, ncol=3)
+    for axes in (top, bottom):
+        axes.grid(True, lw=0.3)
+        axes.set_xticks(np.arange(0, 721, 90))
+        axes.set_xlim(0.0, 720.0)
+    figure.suptitle("Big-end bearing load over the cycle")
+    return figure
+
+
+def wear_diagram_figure(loads: EngineLoads) -> Figure:
+    """Journal wear diagram (seed 001) in the crank frame with the oil-hole direction."""
+    angle, wear = loads.wear()
+    hole = loads.oil_hole_angle()
+    figure = Figure(figsize=(6.5, 6.5))
+    axes = figure.add_subplot(projection="polar")
+    axes.set_theta_zero_location("N")  # outward crank radius drawn upwards
+    axes.set_theta_direction(1)  # counter-clockwise = direction of rotation
+    relative = wear / max(float(wear.max()), 1e-300)
+    radius = 1.0 + 0.6 * relative
+    axes.fill_between(
+        np.append(angle, angle[0]),
+        1.0,
+        np.append(radius, radius[0]),
+        color="C0",
+        alpha=0.5,
+        label="wear strips (∝ load, ±60°)",
+    )
+    axes.plot(np.linspace(0, 2 * math.pi, 361), np.ones(361), color="k", lw=1.0)
+    axes.annotate(
+        "",
+        xy=(hole, 1.7),
+        xytext=(hole, 0.0),
+        arrowprops={"arrowstyle": "->", "color": "C3", "lw": 1.5},
+    )
+    axes.set_rmax(1.75)
+    axes.set_yticks([])
+    axes.set_title(
+        "Crankpin wear diagram (journal, crank frame)\n0° = outward crank radius, angles along "
+        f"rotation; oil hole at {math.degrees(hole):.1f}°",
+        fontsize=10,
+    )
+    axes.legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.1, -0.1))
+    return figure
+
+
+def conventions_figure() -> Figure:
+    """Sketch of the engine, crank and rod frames, angles and force signs (for the docs)."""
+    phi, lam, r = math.radians(50.0), 0.3, 1.0
+    length = r / lam
+    beta = math.asin(lam * math.sin(phi))
+    pin = np.array([r * math.cos(phi), r * math.sin(phi)])
+    small = np.array([r * math.cos(phi) + length * math.cos(beta), 0.0])
+    figure = Figure(figsize=(8.0, 8.0))
+    axes = figure.add_subplot()
+    axes.plot([0, pin[0]], [0, pin[1]], color="k", lw=3)
+    axes.plot([pin[0], small[0]], [pin[1], small[1]], color="0.4", lw=6, alpha=0.6)
+    axes.add_patch(_circle(pin, 0.35, "C0"))
+    axes.add_patch(_circle((0.0, 0.0), 1.0, "0.8", fill=False))
+    axes.plot([small[0] - 0.5, small[0] + 0.5], [0.55, 0.55], color="k")
+    axes.plot([small[0] - 0.5, small[0] + 0.5], [-0.55, -0.55], color="k")
+    _arrow(axes, (0, 0), (4.6, 0), "X (engine), towards TDC", "k")
+    _arrow(axes, (0, 0), (0, 1.8), "Y (engine)", "k")
+    u = (small - pin) / length
+    v = np.array([-u[1], u[0]])
+    _arrow(axes, pin, pin + 1.2 * u, "x rod (to small end)", "C0")
+    _arrow(axes, pin, pin + 1.2 * v, "y rod = z × x", "C0")
+    e_r = pin / r
+    _arrow(axes, pin, pin + 0.9 * e_r, "x crank (outward)", "C2")
+    _arrow(axes, pin, pin + 0.9 * np.array([-e_r[1], e_r[0]]), "y crank (rotation)", "C2")
+    axes.annotate("φ (from firing TDC, CCW = rotation)", (0.55, 0.2), fontsize=9)
+    axes.annotate(
+        "β: sin β = λ sin φ\nrod orientation −β", (pin[0] + 1.4, pin[1] - 0.2), fontsize=9
+    )
+    axes.annotate(
+        "θ on the shell: from x rod towards y rod",
+        (pin[0] - 0.6, pin[1] + 0.55),
+        fontsize=9,
+        color="C0",
+    )
+    _arrow(
+        axes,
+        small + np.array([0, 0.9]),
+        small + np.array([0, 0.9]) + np.array([-0.9, 0]),
+        "P_g, P_Σ > 0 towards the crank",
+        "C3",
+    )
+    axes.annotate(
+        "S > 0: rod in compression\nR > 0 towards the crank axis\nT > 0 along rotation\n"
+        "W = load on journal = −(force of rod on crankpin)",
+        (-1.4, -1.5),
+        fontsize=9,
+    )
+    axes.set_aspect("equal")
+    axes.set_xlim(-1.6, 5.2)
+    axes.set_ylim(-1.8, 2.2)
+    axes.axis("off")
+    axes.set_title("conrod frames and signs (crank at φ = 50°, λ = 0.3)")
+    return figure
+
+
+def _circle(centre, radius: float, color: str, fill: bool = True):
+    from matplotlib.patches import Circle
+
+    return Circle(tuple(centre), radius, color=color, fill=fill, alpha=0.35 if fill else 1.0)
+
+
+def _arrow(axes, start, end, label: str, color: str) -> None:
+    axes.annotate(
+        "",
+        xy=tuple(end),
+        xytext=tuple(start),
+        arrowprops={"arrowstyle": "->", "color": color, "lw": 1.5},
+    )
+    axes.annotate(
+        label, tuple(end), fontsize=8, color=color, xytext=(3, 3), textcoords="offset points"
+    )
