@@ -230,6 +230,10 @@ class ReynoldsFilm:
         inflow = kernel.node_imbalance(pressure, a_east, a_north, source) / (12.0 * state.viscosity)
         free = ~problem.fixed
         cavitated = free & (pressure <= g.cavitation_pressure)
+        leaking = self._edges.copy()
+        leaking[:, 0] &= ~cavitated[:, 1]
+        leaking[:, -1] &= ~cavitated[:, -2]
+        lost = cavitated | (self._edges & ~leaking)
         fraction = None
         if self.friction == "film_fraction":
             direction = 1 if omega_sum >= 0.0 else -1
@@ -241,12 +245,12 @@ class ReynoldsFilm:
         h_min, h_angle = chars.minimum_film(h, grid)
         p_max, p_angle = chars.peak_pressure(pressure, grid)
         info = dict(info)
-        info["cavitation_flow_m3_per_s"] = float(inflow[cavitated].sum())
+        info["cavitation_flow_m3_per_s"] = float(inflow[lost].sum())
         info["friction_full_film"] = float(self.friction == "full_film")
         return FilmResult(
             force_x=fx, force_y=fy,
             friction_torque_journal=torque_j, friction_torque_shell=torque_b,
-            side_flow=-float(inflow[:, [0, -1]].sum()),
+            side_flow=-float(inflow[leaking].sum()),
             supply_flow=float(inflow[problem.fixed & ~self._edges].sum()),
             min_film_thickness=h_min, min_film_angle=h_angle,
             max_pressure=p_max, max_pressure_angle=p_angle,

@@ -1,0 +1,109 @@
+"""``conrod steady``: steady journal-bearing characteristics (Raimondi–Boyd conditions).
+
+Two modes:
+
+* dimensionless — ``--length-to-diameter 1 --eccentricity 0.8`` prints S, φ, (R/c)f,
+  Q/(RcNL), Q_s/Q, P/p_max, θ_pmax, θ_p0 (see :mod:`conrod.film.steady`);
+* dimensional — ``--load 10000 --speed-rpm 3000 --viscosity 0.01 --diameter 0.05
+  --width 0.05 --radial-clearance 5e-5`` finds ε and prints h_min, p_max, friction
+  power and flows (SI units).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from enum import StrEnum
+
+import typer
+
+from conrod.cli.app import exits_cleanly
+from conrod.errors import CaseError
+from conrod.film.base import BearingGeometry
+from conrod.film.steady import raimondi_boyd_point, solve_for_load
+
+
+class Model(StrEnum):
+    """Film models available to the steady calculator."""
+
+    reynolds = "reynolds"
+    mass_conserving = "mass_conserving"
+    short = "short"
+
+
+class Friction(StrEnum):
+    """Friction conventions (see :mod:`conrod.film.characteristics`)."""
+
+    full_film = "full_film"
+    film_fraction = "film_fraction"
+
+
+MODEL_OPTION = typer.Option(Model.reynolds, help="Film model")
+FRICTION_OPTION = typer.Option(Friction.full_film, help="Friction convention")
+
+
+def parse_grid(text: str | None) -> tuple[int, int] | None:
+    """'144x32' → (144, 32) intervals; None stays None."""
+    if text is None:
+        return None
+    try:
+        n_theta, n_z = (int(part) for part in text.lower().split("x"))
+    except ValueError:
+        raise CaseError(f"grid = {text!r}: expected NTHETAxNZ, e.g. 144x32") from None
+    if n_theta < 8 or n_z < 2 or n_theta % 2 or n_z % 2:
+        raise CaseError(f"grid = {text!r}: out of range (allowed: even NTHETA >= 8, "
+                        "even NZ >= 2)")
+    return n_theta, n_z
+
+
+def _print(values: dict, as_json: bool) -> None:
+    if as_json:
+        typer.echo(json.dumps(values, indent=2))
+        return
+    for key, value in values.items():
+        shown = f"{value:.6g}" if isinstance(value, float) else str(value)
+        typer.echo(f"{key:32s} {shown}")
+
+
+def register(app: typer.Typer) -> None:
+    """Add the ``steady`` command to ``app``."""
+
+    @app.command("steady")
+    @exits_cleanly
+    def steady(
+        length_to_diameter: float = typer.Option(None, help="L/D [-] (dimensionless mode)"),
+        eccentricity: float = typer.Option(None, help="Eccentricity ratio ε [-]"),
+        load: float = typer.Option(None, help="Bearing load W [N] (dimensional mode)"),
+        speed_rpm: float = typer.Option(None, help="Journal speed [rpm]"),
+        viscosity: float = typer.Option(None, help="Dynamic viscosity μ [Pa s]"),
+        diameter: float = typer.Option(None, help="Journal diameter D [m]"),
+        width: float = typer.Option(None, help="Bearing width L [m]"),
+        radial_clearance: float = typer.Option(None, help="Radial clearance c [m]"),
+        model: Model = MODEL_OPTION,
+        grid: str = typer.Option(None, help="NTHETAxNZ intervals, e.g. 144x32"),
+        friction: Friction = FRICTION_OPTION,
+        as_json: bool = typer.Option(False, "--json", help="Print JSON"),
+    ) -> None:
+        """Steady bearing characteristics under Raimondi & Boyd's full-bearing conditions."""
+        cells = parse_grid(grid)
+        if eccentricity is not None:
+            if length_to_diameter is None:
+                raise CaseError("length_to_diameter: required with --eccentricity [-]")
+            point = raimondi_boyd_point(length_to_diameter, eccentricity, model.value,
+                                        cells, friction.value)
+            _print(point.as_dict(), as_json)
+            return
+        needed = {"load": load, "speed_rpm": speed_rpm, "viscosity": viscosity,
+                  "diameter": diameter, "width": width, "radial_clearance": radial_clearance}
+        missing = [name for name, value in needed.items() if value is None]
+        if missing:
+            raise CaseError("give --length-to-diameter and --eccentricity, or all of "
+                            "--load --speed-rpm --viscosity --diameter --width "
+                            f"--radial-clearance (missing: {', '.join(missing)})")
+        for name, value in needed.items():
+            if not value > 0.0:
+                raise CaseError(f"{name} = {value!r}: out of range (allowed: > 0)")
+        geometry = BearingGeometry(diameter, width, radial_clearance)
+        answer = solve_for_load(load, speed_rpm * math.pi / 30.0, viscosity, geometry,
+                                model.value, cells, friction.value)
+        _print(answer.as_dict(), as_json)
