@@ -34,9 +34,11 @@ from typing import Literal
 
 import numpy as np
 
-from conrod.errors import ConvergenceError
+from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import BearingGeometry, FilmResult, FilmState, film_thickness
+from conrod.film.characteristics import FilmGrid
 from conrod.film.mass_conserving_kernel import elrod_adams_steady, projected_sor
+from conrod.film.supply import nearest_theta_index, supply_mask
 
 FULL = 1.0 - 1.0e-9
 """Film fraction above which a node counts as full [-]."""
@@ -66,31 +68,14 @@ class FilmFields:
         return ~(self.edge | self.supply)
 
 
-def supply_mask(geometry: BearingGeometry, theta: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """Nodes covered by grooves and feed holes (nearest node at least) [bool (n, m)]."""
-    mask = np.zeros((theta.size, z.size), dtype=bool)
-    for groove in geometry.grooves:
-        offset = (theta - groove.start_angle) % (2.0 * math.pi)
-        in_arc = (offset <= groove.extent + 1e-12) | (groove.extent >= 2.0 * math.pi)
-        in_band = np.abs(z - groove.axial_position) <= 0.5 * groove.width + 1e-12
-        if not in_band.any():
-            in_band[np.argmin(np.abs(z - groove.axial_position))] = True
-        mask |= in_arc[:, None] & in_band[None, :]
-    for hole in geometry.feed_holes:
-        arc = geometry.radius * (np.angle(np.exp(1j * (theta - hole.angle))))
-        dist = np.hypot(arc[:, None], (z - hole.axial_position)[None, :])
-        mask |= dist <= 0.5 * hole.diameter
-        mask[np.unravel_index(np.argmin(dist), dist.shape)] = True
-    mask[:, 0] = mask[:, -1] = False
-    return mask
-
-
 @dataclass
 class MassConservingFilm:
     """JFO film (Elrod–Adams p–ϑ) on an (n_theta × n_z) finite-volume grid.
 
     geometry : BearingGeometry  Bearing geometry and supply features.
-    n_theta, n_z : int  Nodes around (periodic) and across (edges included) [-].
+    n_theta : int  Circumferential intervals = nodes (periodic) [-].
+    n_z : int  Axial intervals; n_z + 1 axial nodes including the edges [-]
+        (the grid of :class:`~conrod.film.characteristics.FilmGrid`, as ReynoldsFilm).
     tolerance : float  Relative max pressure change per sweep that stops SOR [-].
     max_iterations : int  Sweep limit; exceeding it raises ConvergenceError [-].
     omega : float  SOR relaxation factor [-].
@@ -109,29 +94,38 @@ class MassConservingFilm:
     last_iterations: int = field(default=0, init=False)
     _warm: np.ndarray | None = field(default=None, init=False, repr=False)
 
+    def __post_init__(self) -> None:
+        if self.n_theta < 8 or self.n_z < 2:
+            raise CaseError(
+                f"grid {self.n_theta}x{self.n_z}: out of range (allowed: n_theta >= 8, n_z >= 2)"
+            )
+        g = self.geometry
+        self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
+
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
         """θ nodes [rad] (periodic, no duplicate of 2π) and z nodes [m] (edges included)."""
-        theta = np.linspace(0.0, 2.0 * math.pi, self.n_theta, endpoint=False)
-        half = 0.5 * self.geometry.width
-        return theta, np.linspace(-half, half, self.n_z)
+        return self.film_grid.theta, self.film_grid.z
 
     def spacing(self) -> tuple[float, float]:
         """Cell sizes Δx = R Δθ and Δz [m]."""
-        return (self.geometry.radius * 2.0 * math.pi / self.n_theta,
-                self.geometry.width / (self.n_z - 1))
+        return self.geometry.radius * self.film_grid.d_theta, self.film_grid.d_z
 
     def initial_history(self) -> np.ndarray:
-        """Full film: ϑ = 1 on every node [-]."""
-        return np.ones((self.n_theta, self.n_z))
+        """Full film: ϑ = 1 on every node, shape (n_theta, n_z + 1) [-]."""
+        return np.ones((self.n_theta, self.n_z + 1))
+
+    def reset(self) -> None:
+        """Forget the warm-start field (the next solve is cold)."""
+        self._warm = None
 
     def fields(self, state: FilmState) -> FilmFields:
         """Assemble the cell-balance coefficients for one state."""
         g = self.geometry
-        theta, z = self.grid()
+        theta, _ = self.grid()
         dx, dz = self.spacing()
         mu = state.viscosity
         h = film_thickness(g, state.eccentricity_x, state.eccentricity_y, theta, state.deformation)
-        h = np.broadcast_to(h[:, None] if h.ndim == 1 else h, (self.n_theta, self.n_z))
+        h = np.broadcast_to(h[:, None] if h.ndim == 1 else h, (self.n_theta, self.n_z + 1))
         h_east = 0.5 * (h + np.roll(h, -1, axis=0))
         h_north = np.empty_like(h)
         h_north[:, :-1] = 0.5 * (h[:, 1:] + h[:, :-1])
@@ -140,7 +134,7 @@ class MassConservingFilm:
         dh_dt = -state.velocity_x * np.cos(theta) - state.velocity_y * np.sin(theta)
         edge = np.zeros(h.shape, dtype=bool)
         edge[:, 0] = edge[:, -1] = True
-        supply = supply_mask(g, theta, z)
+        supply = supply_mask(g, self.film_grid)
         fixed = np.where(supply, g.supply_pressure, 0.0) - g.cavitation_pressure
         return FilmFields(
             h=np.ascontiguousarray(h), a_east=h_east**3 * (dz / dx), a_north=h_north**3 * (dx / dz),
@@ -165,7 +159,8 @@ class MassConservingFilm:
         self._warm = pressure.copy()
         imbalance = cell_imbalance(f, pressure, fraction)
         dx, dz = self.spacing()
-        rate = np.where(f.free & (pressure <= 0.0), -imbalance / (12.0 * state.viscosity * dx * dz * f.h), 0.0)
+        cell_mass = 12.0 * state.viscosity * dx * dz * f.h
+        rate = np.where(f.free & (pressure <= 0.0), -imbalance / cell_mass, 0.0)
         rate = np.where(fraction >= FULL, np.minimum(rate, 0.0), rate)
         result = self.characteristics(state, f, pressure, fraction)
         result.history_rate = rate
@@ -197,7 +192,7 @@ class MassConservingFilm:
         f = self.fields(state)
         theta, _ = self.grid()
         psi = math.atan2(state.eccentricity_y, state.eccentricity_x)
-        inlet = int(np.argmin(np.abs(np.angle(np.exp(1j * (theta - psi - math.pi))))))
+        inlet = nearest_theta_index(psi + math.pi, self.film_grid)
         f.supply[inlet, 1:-1] = True
         f.fixed_pressure[inlet, :] = -self.geometry.cavitation_pressure
         fraction = np.ones_like(f.h)
@@ -256,10 +251,7 @@ class MassConservingFilm:
 def convection(couette_east: np.ndarray, fraction: np.ndarray) -> np.ndarray:
     """Upwind Couette-flux balance C_e ϑ_e − C_w ϑ_w per cell [Pa m³]."""
     forward = couette_east[0, couette_east.shape[1] // 2] >= 0.0
-    if forward:
-        east = couette_east * fraction
-    else:
-        east = couette_east * np.roll(fraction, -1, axis=0)
+    east = couette_east * (fraction if forward else np.roll(fraction, -1, axis=0))
     return east - np.roll(east, 1, axis=0)
 
 

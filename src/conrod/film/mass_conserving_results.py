@@ -41,7 +41,8 @@ def boundary_inflows(
         mask_east = np.roll(mask, -1, axis=0)
         free_east = np.roll(free, -1, axis=0)
         flow = np.sum(east[mask & free_east]) - np.sum(east[free & mask_east])
-        flow += np.sum(north[mask[:, :-1] & free[:, 1:]]) - np.sum(north[free[:, :-1] & mask[:, 1:]])
+        flow += np.sum(north[mask[:, :-1] & free[:, 1:]])
+        flow -= np.sum(north[free[:, :-1] & mask[:, 1:]])
         totals[name] = flow / (12.0 * viscosity)
     return totals["edge"], totals["supply"]
 
