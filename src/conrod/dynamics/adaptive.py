@@ -1,0 +1,176 @@
+"""Adaptive, implicit orbit integration (seed 002: BDF with steps ≤ 1° crank angle).
+
+SciPy ``solve_ivp`` (Radau by default, BDF or LSODA on request) integrates the scaled state
+u = (x/c, y/c, v_x/(cω), v_y/(cω)) over the crank angle φ with ``max_step`` ≤ 1°.
+Hard contact (seed 004 §4.1–4.2) is handled by phases located with events:
+
+* free phase until Z = |e|/r_c − 1 crosses zero upwards (event, not a step crossing);
+  at entry the normal velocity is removed (eqs 4.1.5–4.1.8: perfectly plastic impact);
+* contact phase with the state (angle θ on the circle, V_k/(cω)) — the journal cannot leave
+  the circle numerically — until the normal force P_c crosses zero downwards (event).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from conrod.dynamics.contact import contact_acceleration, contact_normal_force
+from conrod.dynamics.problem import OrbitProblem, OrbitState, load_table, periodic_sample
+from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.errors import ConvergenceError
+
+MAX_PHASE_CHANGES = 5000
+"""Most contact entries + exits per cycle before giving up (chattering) [-]."""
+
+
+class _Phases:
+    """Right-hand sides and events of the free and the contact phase."""
+
+    def __init__(self, problem: OrbitProblem):
+        self.p = problem
+        self.force = problem.force_function()
+        self.c = problem.clearance
+        self.rc = problem.contact_radius
+        self.omega = problem.crank_speed
+        self.radius = problem.film.geometry.radius
+        self.loads = problem.loads
+        self.angles, self.table = load_table(problem.loads)
+        peak = np.max(np.hypot(problem.loads.load_x, problem.loads.load_y))
+        self.force_scale = float(peak) + 1.0
+
+    def forces(self, phi: float, x: float, y: float, vx: float, vy: float):
+        """X = W + F [N] and the surface speed (ω_j − ω_b) R [m/s] at φ."""
+        wx, wy, wj, wb = periodic_sample(phi, self.angles, self.table, self.loads.cycle)
+        fx, fy = self.force(x, y, vx, vy, wj, wb)
+        return wx + fx, wy + fy, (wj - wb) * self.radius
+
+    def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:
+        c, w = self.c, self.omega
+        x, y, vx, vy = u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w
+        big_x, big_y, _ = self.forces(phi, x, y, vx, vy)
+        scale = c * w * w
+        return np.array(
+            [u[2], u[3], big_x / (self.p.mass_x * scale), big_y / (self.p.mass_y * scale)]
+        )
+
+    def hit(self, phi: float, u: np.ndarray) -> float:
+        return math.hypot(u[0], u[1]) * self.c / self.rc - 1.0
+
+    def on_circle(self, w: np.ndarray) -> tuple[float, float, float, float]:
+        """(x, y, v_x, v_y) from the contact-phase state (θ, V_k/(cω))."""
+        theta, v_k = w[0], w[1] * self.c * self.omega
+        cos_t, sin_t = math.cos(theta), math.sin(theta)
+        return self.rc * cos_t, self.rc * sin_t, -v_k * sin_t, v_k * cos_t
+
+    def contact_rhs(self, phi: float, w: np.ndarray) -> np.ndarray:
+        x, y, vx, vy = self.on_circle(w)
+        big_x, big_y, surface = self.forces(phi, x, y, vx, vy)
+        ax, ay, _, _ = contact_acceleration(
+            x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
+            self.p.dry_friction, self.rc, surface, True,
+        )
+        tangential = -ax * math.sin(w[0]) + ay * math.cos(w[0])
+        return np.array([w[1] * self.c / self.rc, tangential / (self.c * self.omega**2)])
+
+    def normal_force(self, phi: float, w: np.ndarray) -> float:
+        """Unclamped contact force P_c [N] in the contact phase."""
+        x, y, vx, vy = self.on_circle(w)
+        big_x, big_y, surface = self.forces(phi, x, y, vx, vy)
+        p_c, _ = contact_normal_force(
+            x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
+            self.p.dry_friction, self.rc, surface,
+        )
+        return p_c
+
+    def leave(self, phi: float, w: np.ndarray) -> float:
+        return self.normal_force(phi, w) / self.force_scale
+
+
+def adaptive_cycle(
+    problem: OrbitProblem, state: OrbitState, settings, output_step_deg: float
+) -> CycleTrajectory:
+    """One cycle from ``state`` at φ = 0 with ``settings`` = the ``[solver]`` section."""
+    phases = _Phases(problem)
+    phi_out = problem.output_angles(output_step_deg)
+    table = np.zeros((phi_out.size, 7))
+    end = problem.loads.cycle
+    phi, contact, steps = 0.0, state.in_contact, 0
+    c, w = problem.clearance, problem.crank_speed
+    current = _scaled(state, c, w, phases)
+    def hit(phi_event: float, u: np.ndarray) -> float:
+        return phases.hit(phi_event, u)
+
+    def leave(phi_event: float, u: np.ndarray) -> float:
+        return phases.leave(phi_event, u)
+
+    hit.terminal, hit.direction = True, 1.0  # type: ignore[attr-defined]
+    leave.terminal, leave.direction = True, -1.0  # type: ignore[attr-defined]
+    for _ in range(MAX_PHASE_CHANGES):
+        rhs, event = (phases.contact_rhs, leave) if contact else (phases.free_rhs, hit)
+        sol = solve_ivp(
+            rhs, (phi, end), current, method=settings.adaptive_method, events=event,
+            dense_output=True, max_step=math.radians(settings.max_step_deg),
+            rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
+        )
+        if sol.status < 0:
+            raise ConvergenceError(f"adaptive orbit integration failed: {sol.message}",
+                                   where=f"crank angle {math.degrees(phi):.2f} deg")
+        steps += sol.t.size - 1
+        phi_end = float(sol.t[-1])
+        last = sol.status == 0
+        mask = (phi_out >= phi) & ((phi_out <= phi_end) if last else (phi_out < phi_end))
+        _record(phases, sol, phi_out, mask, table, contact)
+        if last:
+            return CycleTrajectory.from_table(
+                phi_out, table, _state(phases, sol.y[:, -1], contact), steps
+            )
+        phi = phi_end
+        current, contact = _switch(phases, phi, sol.y[:, -1], contact)
+    raise ConvergenceError("contact chattering: too many contact entries/exits",
+                           where=f"crank angle {math.degrees(phi):.2f} deg")
+
+
+def _scaled(state: OrbitState, c: float, w: float, phases: _Phases) -> np.ndarray:
+    if state.in_contact:
+        theta = math.atan2(state.y, state.x)
+        v_k = state.vy * math.cos(theta) - state.vx * math.sin(theta)
+        return np.array([theta, v_k / (c * w)])
+    return np.array([state.x / c, state.y / c, state.vx / (c * w), state.vy / (c * w)])
+
+
+def _state(phases: _Phases, u: np.ndarray, contact: bool) -> OrbitState:
+    if contact:
+        return OrbitState(*phases.on_circle(u), True)
+    c, w = phases.c, phases.omega
+    return OrbitState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, False)
+
+
+def _switch(phases: _Phases, phi: float, u: np.ndarray, contact: bool):
+    """State of the next phase after an event at φ (entry: plastic impact, eq. 4.1.5)."""
+    if contact:  # leaving: free flight from the circle with the tangential velocity
+        x, y, vx, vy = phases.on_circle(u)
+        c, w = phases.c, phases.omega
+        return np.array([x / c, y / c, vx / (c * w), vy / (c * w)]), False
+    theta = math.atan2(u[1], u[0])
+    v_k = (u[3] * math.cos(theta) - u[2] * math.sin(theta))
+    entry = np.array([theta, v_k])
+    if phases.normal_force(phi, entry) > 0.0:
+        return entry, True
+    x, y, vx, vy = phases.on_circle(entry)
+    c, w = phases.c, phases.omega
+    return np.array([x / c, y / c, vx / (c * w), vy / (c * w)]), False
+
+
+def _record(phases: _Phases, sol, phi_out, mask, table, contact: bool) -> None:
+    for i in np.flatnonzero(mask):
+        u = sol.sol(phi_out[i])
+        if not contact:
+            c, w = phases.c, phases.omega
+            table[i] = (u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, 0.0, 0.0, 0.0)
+            continue
+        x, y, vx, vy = phases.on_circle(u)
+        p_c = max(phases.normal_force(phi_out[i], u), 0.0)
+        table[i] = (x, y, vx, vy, p_c, phases.p.dry_friction * p_c, 1.0)

@@ -1,0 +1,88 @@
+"""Hydromechanical characteristics along the orbit (seed 002 Table 1 columns).
+
+At each output angle the film model is solved once for the orbit state, giving h_min and
+its shell angle, p_max, friction torque, side and supply flow. Derived here:
+
+* attitude angle: from the load vector to the line of centres [rad];
+* journal rotation relative to the shell ∫(ω_j − ω_b)/ω dφ (trapezoid) [rad], and the
+  h_min position on the journal θ − rotation [rad];
+* friction power = |M_j (ω_j − ω_b)| unless the model reports its own [W];
+* sliding speed at the contact point V_k + (ω_j − ω_b) R [m/s].
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from conrod.dynamics.problem import OrbitProblem
+from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.film.base import FilmResult, FilmState
+from conrod.results.cycle_results import CycleResults
+
+TWO_PI = 2.0 * math.pi
+
+
+def journal_rotation(
+    crank_angle: np.ndarray, relative_speed: np.ndarray, crank_speed: float
+) -> np.ndarray:
+    """∫ (ω_j − ω_b) dt from the first output angle, trapezoid rule [rad]."""
+    increments = 0.5 * (relative_speed[1:] + relative_speed[:-1]) * np.diff(crank_angle)
+    return np.concatenate([[0.0], np.cumsum(increments)]) / crank_speed
+
+
+def attitude_angle(
+    ex: np.ndarray, ey: np.ndarray, load_x: np.ndarray, load_y: np.ndarray
+) -> np.ndarray:
+    """Angle from the load vector to the line of centres, in (−π, π] [rad]."""
+    return np.arctan2(load_x * ey - load_y * ex, load_x * ex + load_y * ey)
+
+
+def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[FilmState]:
+    """Film states at the output angles."""
+    return [
+        FilmState(float(traj.x[i]), float(traj.y[i]), float(traj.vx[i]), float(traj.vy[i]),
+                  float(wj[i]), float(wb[i]), problem.viscosity)
+        for i in range(traj.crank_angle.size)
+    ]
+
+
+def _film_columns(results: list[FilmResult], relative_speed: np.ndarray) -> dict[str, np.ndarray]:
+    def column(name: str) -> np.ndarray:
+        return np.array([getattr(r, name) for r in results], dtype=float)
+
+    torque = column("friction_torque_journal")
+    own_power = column("friction_power")
+    power = np.where(own_power > 0.0, own_power, np.abs(torque * relative_speed))
+    return {
+        "h_min": column("min_film_thickness"), "h_min_angle_shell": column("min_film_angle"),
+        "p_max": column("max_pressure"), "p_max_angle_shell": column("max_pressure_angle"),
+        "friction_torque": torque, "friction_power": power,
+        "side_flow": column("side_flow"), "supply_flow": column("supply_flow"),
+    }
+
+
+def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory) -> CycleResults:
+    """Per-angle characteristics of the orbit ``traj`` (SI units, see :class:`CycleResults`)."""
+    phi = traj.crank_angle
+    load_x, load_y = problem.loads.load(phi)
+    wj, wb = problem.loads.speeds(phi)
+    relative = wj - wb
+    results = [problem.film.solve(state) for state in film_states(problem, traj, wj, wb)]
+    film = _film_columns(results, relative)
+    rotation = journal_rotation(phi, relative, problem.crank_speed)
+    contact_angle = np.arctan2(traj.y, traj.x) % TWO_PI
+    tangential_speed = traj.vy * np.cos(contact_angle) - traj.vx * np.sin(contact_angle)
+    return CycleResults(
+        crank_angle=phi, eccentricity_x=traj.x, eccentricity_y=traj.y,
+        velocity_x=traj.vx, velocity_y=traj.vy,
+        eccentricity_ratio=np.hypot(traj.x, traj.y) / problem.clearance,
+        attitude_angle=attitude_angle(traj.x, traj.y, load_x, load_y),
+        h_min_angle_journal=(film["h_min_angle_shell"] - rotation) % TWO_PI,
+        load_x=load_x, load_y=load_y, journal_speed=wj, shell_speed=wb,
+        contact_force=traj.contact_force, friction_force=traj.friction_force,
+        contact_angle=contact_angle, journal_rotation=rotation,
+        sliding_speed=tangential_speed + relative * problem.film.geometry.radius,
+        in_contact=traj.in_contact, **film,
+    )

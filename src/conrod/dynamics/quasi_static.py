@@ -1,0 +1,168 @@
+"""Massless quasi-static orbit (Booker's mobility idea, SPEC S3): the journal centre velocity
+solves the force balance F_film(e, ė) + W = 0 at every instant, and only the position is
+integrated (Heun, fixed step ``[solver] quasi_static_step_deg``).
+
+The velocity comes from the film model's ``journal_velocity`` when it has one (mobility
+film), otherwise from a damped Newton solve on ``force`` (compiled for the short bearing).
+On the contact circle the outward normal velocity is removed (seed 004 eqs 4.1.5–4.1.8) and
+the unbalanced normal force is reported as the contact force.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
+from conrod.dynamics.problem import OrbitProblem, OrbitState
+from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.errors import ConvergenceError
+from conrod.film.short_bearing_kernel import short_bearing_force
+
+NEWTON_ITERATIONS = 60
+"""Most Newton iterations of the velocity solve [-]."""
+
+
+@nb.njit(cache=True)
+def short_bearing_velocity(
+    x, y, load_x, load_y, journal_speed, shell_speed, viscosity, radius, width, clearance,
+    vx, vy, speed_scale,
+):
+    """Velocity (v_x, v_y) [m/s] with F_short(x, y, v) + W = 0 by damped Newton from (vx, vy);
+    third value: final residual |F + W| relative to |W| + 1 N [-]."""
+    omega_sum = journal_speed + shell_speed
+    load = math.hypot(load_x, load_y) + 1.0
+    fx, fy = short_bearing_force(x, y, vx, vy, omega_sum, viscosity, radius, width, clearance)
+    rx, ry = fx + load_x, fy + load_y
+    res = math.hypot(rx, ry)
+    delta = 1e-7 * speed_scale
+    for _ in range(NEWTON_ITERATIONS):
+        if res <= 1e-10 * load:
+            break
+        f1x, f1y = short_bearing_force(
+            x, y, vx + delta, vy, omega_sum, viscosity, radius, width, clearance
+        )
+        f2x, f2y = short_bearing_force(
+            x, y, vx, vy + delta, omega_sum, viscosity, radius, width, clearance
+        )
+        j11, j21 = (f1x - fx) / delta, (f1y - fy) / delta
+        j12, j22 = (f2x - fx) / delta, (f2y - fy) / delta
+        det = j11 * j22 - j12 * j21
+        if det == 0.0:
+            break
+        dvx = -(j22 * rx - j12 * ry) / det
+        dvy = -(-j21 * rx + j11 * ry) / det
+        lam = 1.0
+        for _ in range(30):
+            nvx, nvy = vx + lam * dvx, vy + lam * dvy
+            gx, gy = short_bearing_force(
+                x, y, nvx, nvy, omega_sum, viscosity, radius, width, clearance
+            )
+            new_res = math.hypot(gx + load_x, gy + load_y)
+            if new_res < res or lam < 1e-6:
+                break
+            lam *= 0.5
+        vx, vy, fx, fy = nvx, nvy, gx, gy
+        rx, ry, res = gx + load_x, gy + load_y, new_res
+    return vx, vy, res / load
+
+
+def _velocity_solver(problem: OrbitProblem):
+    """(x, y, W_x, W_y, ω_j, ω_b, guess) → (v_x, v_y, relative residual)."""
+    mu = problem.viscosity
+    film = problem.film
+    if hasattr(film, "journal_velocity"):
+        def mobility(x, y, wx, wy, wj, wb, guess):
+            vx, vy = film.journal_velocity(x, y, wx, wy, wj, wb, mu)
+            return float(vx), float(vy), 0.0
+        return mobility
+    g = film.geometry
+    scale = g.radial_clearance * max(problem.crank_speed, 1e-3)
+    if problem.is_short_bearing:
+        def short(x, y, wx, wy, wj, wb, guess):
+            return short_bearing_velocity(
+                x, y, wx, wy, wj, wb, mu, g.radius, g.width, g.radial_clearance,
+                guess[0], guess[1], scale,
+            )
+        return short
+    return _generic_newton(problem, scale)
+
+
+def _generic_newton(problem: OrbitProblem, scale: float):
+    force = problem.force_function()
+
+    def solve(x, y, wx, wy, wj, wb, guess):
+        v = np.array(guess, dtype=float)
+        load = math.hypot(wx, wy) + 1.0
+        f = np.array(force(x, y, v[0], v[1], wj, wb))
+        residual = f + (wx, wy)
+        for _ in range(NEWTON_ITERATIONS):
+            if np.hypot(*residual) <= 1e-8 * load:
+                break
+            delta = 1e-6 * scale
+            jac = np.empty((2, 2))
+            for i in range(2):
+                dv = v.copy()
+                dv[i] += delta
+                jac[:, i] = (np.array(force(x, y, dv[0], dv[1], wj, wb)) - f) / delta
+            v = v - np.linalg.lstsq(jac, residual, rcond=None)[0]
+            f = np.array(force(x, y, v[0], v[1], wj, wb))
+            residual = f + (wx, wy)
+        return float(v[0]), float(v[1]), float(np.hypot(*residual) / load)
+
+    return solve
+
+
+def quasi_static_cycle(
+    problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float
+) -> CycleTrajectory:
+    """One cycle of the massless orbit from ``state`` (only its position is used)."""
+    from conrod.dynamics.rk2 import _step_grid
+
+    phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
+    load_x, load_y = problem.loads.load(phi)
+    wj, wb = problem.loads.speeds(phi)
+    dt = (phi[1] - phi[0]) / problem.crank_speed
+    velocity = _velocity_solver(problem)
+    rc = problem.contact_radius * (1.0 - 1e-9)
+    x, y, guess = state.x, state.y, (state.vx, state.vy)
+    table = np.zeros((n_out, 7))
+    worst = 0.0
+    for k in range(len(phi) - 1):
+        vx, vy, r1 = velocity(x, y, load_x[k], load_y[k], wj[k], wb[k], guess)
+        contact = math.hypot(x, y) >= rc * (1.0 - 1e-9)
+        if contact:
+            vx, vy = _inward_only(x, y, vx, vy)
+        if k % record_every == 0:
+            table[k // record_every] = (x, y, vx, vy, 0.0, 0.0, float(contact))
+        xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, rc)
+        k1 = k + 1
+        vx2, vy2, r2 = velocity(xp, yp, load_x[k1], load_y[k1], wj[k1], wb[k1], (vx, vy))
+        x, y, _ = project_onto_circle(x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), rc)
+        guess = (vx2, vy2)
+        worst = max(worst, r1, r2)
+    if worst > 1e-4 or not np.all(np.isfinite(table)):
+        raise ConvergenceError("quasi-static velocity solve failed", residual=worst)
+    sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
+    _contact_forces(problem, table, *sampled)
+    end = OrbitState(x, y, guess[0], guess[1], False)
+    return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, 2 * (len(phi) - 1))
+
+
+def _inward_only(x: float, y: float, vx: float, vy: float) -> tuple[float, float]:
+    if x * vx + y * vy > 0.0:
+        return remove_normal_velocity(x, y, vx, vy)
+    return vx, vy
+
+
+def _contact_forces(problem, table, load_x, load_y, wj, wb) -> None:
+    """P_c = (W + F)·n̂ ≥ 0 where the massless journal sits on the contact circle."""
+    force = problem.force_function()
+    for i in np.flatnonzero(table[:, 6] > 0.5):
+        x, y, vx, vy = table[i, :4]
+        fx, fy = force(x, y, vx, vy, wj[i], wb[i])
+        e = math.hypot(x, y)
+        p_c = max(((load_x[i] + fx) * x + (load_y[i] + fy) * y) / e, 0.0)
+        table[i, 4], table[i, 5] = p_c, problem.dry_friction * p_c

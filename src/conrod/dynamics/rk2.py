@@ -1,0 +1,143 @@
+"""Seed 000's second-order Runge–Kutta (Heun) at a fixed crank-angle step, with the seed 004
+contact treatment: projection x := x/Z after a step and removal of the normal velocity
+(eqs 4.1.1–4.1.8), constrained motion along the circle while the journal presses on it.
+
+The film is stiff (damping time m/B ≪ 1° of crank angle), so this explicit scheme needs a
+small step (``[solver] step_deg``, 0.01° by default); it is kept for fidelity to the seed and
+as an independent check of the adaptive integrator. The short bearing runs fully compiled.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+from conrod.dynamics.contact import (
+    contact_acceleration,
+    project_onto_circle,
+    remove_normal_velocity,
+)
+from conrod.dynamics.problem import OrbitProblem, OrbitState
+from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.errors import CaseError, ConvergenceError
+from conrod.film.short_bearing_kernel import short_bearing_force
+
+
+@nb.njit(cache=True)
+def _settle_contact(x, y, vx, vy, radius):
+    """Projection + normal-velocity removal after a step; returns state and contact flag."""
+    x, y, projected = project_onto_circle(x, y, radius)
+    if projected or math.hypot(x, y) >= radius * (1.0 - 1e-12):
+        e = math.hypot(x, y)
+        if (x * vx + y * vy) / e > 0.0:
+            vx, vy = remove_normal_velocity(x, y, vx, vy)
+        return x, y, vx, vy, True
+    return x, y, vx, vy, False
+
+
+@nb.njit(cache=True)
+def rk2_short_bearing_cycle(
+    state, dt, load_x, load_y, journal_speed, shell_speed, record_every,
+    viscosity, radius, width, clearance, mass_x, mass_y, dry_friction, contact_radius,
+):
+    """Compiled Heun steps over one cycle for the short-bearing film.
+
+    state = (x, y, vx, vy, in_contact) [m, m/s]; loads and speeds sampled at the n+1 step
+    points [N, rad/s]; ``dt`` step [s]. Returns rows (x, y, vx, vy, P_c, P_f, contact) every
+    ``record_every`` steps, and the end state.
+    """
+    x, y, vx, vy, contact = state[0], state[1], state[2], state[3], state[4] > 0.5
+    n_steps = load_x.size - 1
+    out = np.empty((n_steps // record_every, 7))
+    for k in range(n_steps):
+        wj, wb = journal_speed[k], shell_speed[k]
+        fx, fy = short_bearing_force(x, y, vx, vy, wj + wb, viscosity, radius, width, clearance)
+        ax, ay, pc, pf = contact_acceleration(
+            x, y, vx, vy, load_x[k] + fx, load_y[k] + fy, mass_x, mass_y, dry_friction,
+            contact_radius, (wj - wb) * radius, contact,
+        )
+        if k % record_every == 0 and k // record_every < out.shape[0]:
+            row = k // record_every
+            out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
+            out[row, 4], out[row, 5], out[row, 6] = pc, pf, 1.0 if contact else 0.0
+        xp, yp = x + dt * vx, y + dt * vy
+        vxp, vyp = vx + dt * ax, vy + dt * ay
+        wj, wb = journal_speed[k + 1], shell_speed[k + 1]
+        fx, fy = short_bearing_force(xp, yp, vxp, vyp, wj + wb, viscosity, radius, width, clearance)
+        ax2, ay2, _, _ = contact_acceleration(
+            xp, yp, vxp, vyp, load_x[k + 1] + fx, load_y[k + 1] + fy, mass_x, mass_y,
+            dry_friction, contact_radius, (wj - wb) * radius, contact,
+        )
+        x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
+        vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
+        x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, contact_radius)
+    return out, np.array([x, y, vx, vy, 1.0 if contact else 0.0])
+
+
+def _step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
+    record_every = int(round(output_step_deg / step_deg))
+    if record_every < 1 or abs(record_every * step_deg - output_step_deg) > 1e-9 * output_step_deg:
+        raise CaseError(
+            f"solver.step_deg = {step_deg!r}: must divide solver.output_step_deg = "
+            f"{output_step_deg!r} (allowed: output_step_deg / k, k = 1, 2, ...) [deg]"
+        )
+    n_out = len(problem.output_angles(output_step_deg))
+    n_steps = n_out * record_every
+    phi = np.linspace(0.0, problem.loads.cycle, n_steps + 1)
+    return phi, record_every, n_out
+
+
+def rk2_cycle(
+    problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float
+) -> CycleTrajectory:
+    """One cycle of fixed-step Heun integration from ``state`` at φ = 0."""
+    phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
+    load_x, load_y = problem.loads.load(phi)
+    wj, wb = problem.loads.speeds(phi)
+    dt = (phi[1] - phi[0]) / problem.crank_speed
+    start = np.array([state.x, state.y, state.vx, state.vy, float(state.in_contact)])
+    if problem.is_short_bearing:
+        g = problem.film.geometry
+        table, end = rk2_short_bearing_cycle(
+            start, dt, load_x, load_y, wj, wb, record_every, problem.viscosity,
+            g.radius, g.width, g.radial_clearance, problem.mass_x, problem.mass_y,
+            problem.dry_friction, problem.contact_radius,
+        )
+    else:
+        table, end = _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every)
+    if not np.all(np.isfinite(table)):
+        raise ConvergenceError(
+            "rk2 orbit diverged (film too stiff for the step; reduce solver.step_deg)",
+            where=f"step {step_deg} deg",
+        )
+    end_state = OrbitState(end[0], end[1], end[2], end[3], bool(end[4] > 0.5))
+    return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state, len(phi) - 1)
+
+
+def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every):
+    """The same Heun scheme for any film model (Python loop; slow for grid models)."""
+    force = problem.force_function()
+    radius = problem.film.geometry.radius
+    x, y, vx, vy, contact = start[0], start[1], start[2], start[3], bool(start[4] > 0.5)
+    n_steps = load_x.size - 1
+    out = np.empty((n_steps // record_every, 7))
+
+    def acceleration(k, x, y, vx, vy):
+        fx, fy = force(x, y, vx, vy, wj[k], wb[k])
+        return contact_acceleration(
+            x, y, vx, vy, load_x[k] + fx, load_y[k] + fy, problem.mass_x, problem.mass_y,
+            problem.dry_friction, problem.contact_radius, (wj[k] - wb[k]) * radius, contact,
+        )
+
+    for k in range(n_steps):
+        ax, ay, pc, pf = acceleration(k, x, y, vx, vy)
+        if k % record_every == 0:
+            out[k // record_every] = (x, y, vx, vy, pc, pf, float(contact))
+        xp, yp, vxp, vyp = x + dt * vx, y + dt * vy, vx + dt * ax, vy + dt * ay
+        ax2, ay2, _, _ = acceleration(k + 1, xp, yp, vxp, vyp)
+        x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
+        vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
+        x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius)
+    return out, np.array([x, y, vx, vy, float(contact)])

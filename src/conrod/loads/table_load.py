@@ -1,0 +1,77 @@
+"""Bearing load from a table: ``[load] table = "load.csv"`` (issue 4).
+
+The CSV has the columns ``crank_angle_deg, load_x_N, load_y_N`` (bearing/film frame, load
+pressing the journal on the shell). Lines starting with ``#`` are comments (provenance).
+One cycle of ``cycle_deg``; a closing row at ``first + cycle_deg`` is dropped (periodic).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from conrod.cases.load import LoadTableSection
+from conrod.errors import CaseError
+from conrod.loads.cycle import LoadCycle
+from conrod.units import rpm_to_rad_s
+
+REQUIRED_COLUMNS = ("crank_angle_deg", "load_x_N", "load_y_N")
+
+
+def read_load_columns(path: Path) -> dict[str, np.ndarray]:
+    """Read the table as column name → float array; :class:`CaseError` on any problem."""
+    try:
+        lines = path.read_text(encoding="utf-8").splitlines()
+    except OSError as error:
+        raise CaseError(f"load.table {str(path)!r}: cannot be read ({error.strerror})") from None
+    rows = [line for line in lines if line.strip() and not line.lstrip().startswith("#")]
+    if len(rows) < 5:
+        raise CaseError(f"load.table {str(path)!r}: needs a header and at least 4 rows")
+    header = [name.strip() for name in rows[0].split(",")]
+    missing = [name for name in REQUIRED_COLUMNS if name not in header]
+    if missing:
+        raise CaseError(
+            f"load.table {str(path)!r}: missing column(s) {', '.join(missing)} "
+            f"(found: {', '.join(header)}; required: {', '.join(REQUIRED_COLUMNS)})"
+        )
+    try:
+        data = np.array([[float(v) for v in row.split(",")] for row in rows[1:]], dtype=float)
+    except ValueError as error:
+        raise CaseError(f"load.table {str(path)!r}: non-numeric value ({error})") from None
+    if data.ndim != 2 or data.shape[1] != len(header):
+        raise CaseError(f"load.table {str(path)!r}: every row needs {len(header)} values")
+    if not np.all(np.isfinite(data)):
+        raise CaseError(f"load.table {str(path)!r}: contains NaN or infinite values")
+    return {name: data[:, header.index(name)] for name in REQUIRED_COLUMNS}
+
+
+def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
+    """Build the :class:`LoadCycle` of a ``[load]`` section whose table is at ``path``."""
+    columns = read_load_columns(path)
+    angle_deg = columns["crank_angle_deg"]
+    if np.any(np.diff(angle_deg) <= 0.0):
+        raise CaseError(f"load.table {str(path)!r}: crank_angle_deg must be strictly increasing")
+    keep = angle_deg - angle_deg[0] < section.cycle_deg - 1e-9
+    if np.count_nonzero(~keep) > 1 or (np.any(~keep) and not _closes_cycle(angle_deg, section)):
+        raise CaseError(
+            f"load.table {str(path)!r}: crank angles span "
+            f"{angle_deg[-1] - angle_deg[0]:g} deg, more than load.cycle_deg = {section.cycle_deg}"
+        )
+    crank_speed = rpm_to_rad_s(section.speed)
+    journal = crank_speed if section.journal_speed is None else section.journal_speed
+    n = int(np.count_nonzero(keep))
+    return LoadCycle(
+        crank_angle=np.radians(angle_deg[keep]),
+        load_x=section.scale * columns["load_x_N"][keep],
+        load_y=section.scale * columns["load_y_N"][keep],
+        journal_speed=np.full(n, float(journal)),
+        shell_speed=np.full(n, float(section.shell_speed)),
+        crank_speed=crank_speed,
+        cycle=math.radians(section.cycle_deg),
+    )
+
+
+def _closes_cycle(angle_deg: np.ndarray, section: LoadTableSection) -> bool:
+    return abs(angle_deg[-1] - angle_deg[0] - section.cycle_deg) < 1e-6
