@@ -1,8 +1,14 @@
-"""``[clearance.big_end]`` and ``[clearance.small_end]`` sections (issue 6, seed 003)."""
+"""``[clearance]``, ``[clearance.big_end]`` and ``[clearance.small_end]`` (issue 6, seed 003).
+
+The joint keys are fixed by issue 6; the seed-003 symbol of each is in its description.
+``[clearance]`` itself holds the numerics of the mechanism run (all optional).
+"""
 
 from __future__ import annotations
 
-from pydantic import Field
+from typing import Literal
+
+from pydantic import Field, model_validator
 
 from conrod.cases.base import Section
 
@@ -17,10 +23,69 @@ class JointClearanceSection(Section):
     clearance_min: float = Field(
         gt=0.0, le=1.0e-2, description="Diametral clearance along the minor axis Δmin [m]"
     )
+    ellipse_angle_deg: float = Field(
+        default=0.0, ge=-180.0, le=180.0,
+        description="Angle γ between the ellipse major axis and the rod axis [deg]",
+    )
+    contact_stiffness: float = Field(
+        default=1.0e13, gt=0.0, le=1.0e20, description="Contact stiffness c [N/m^exponent]"
+    )
+    contact_exponent: float = Field(
+        default=1.5, ge=1.0, le=3.0, description="Contact force exponent α [-]"
+    )
+    damping_factor: float = Field(
+        default=0.1, ge=0.0, le=2.0, description="Damping factor μ in β = 2μ√(c·m_eff) [-]"
+    )
+    friction_coefficient: float = Field(
+        default=0.0, ge=0.0, le=1.0, description="Coulomb friction coefficient f₁₂ [-]"
+    )
+    damping_scale: float = Field(
+        default=1.0, ge=0.0, le=10.0,
+        description="Extra factor on β; seed 003 uses 0.3 at the small end [-]",
+    )
+
+    @model_validator(mode="after")
+    def _check_clearances(self) -> JointClearanceSection:
+        if self.clearance_min > self.clearance_max:
+            raise ValueError(
+                f"clearance_min = {self.clearance_min!r} m exceeds clearance_max = "
+                f"{self.clearance_max!r} m (allowed: clearance_min <= clearance_max m)"
+            )
+        return self
 
 
 class ClearanceSection(Section):
-    """The two rod joints."""
+    """The two rod joints and the numerics of ``conrod mechanism``."""
 
     big_end: JointClearanceSection
     small_end: JointClearanceSection
+    cycles: int = Field(
+        default=2, ge=1, le=50,
+        description="Engine cycles integrated; results from the last one [-]",
+    )
+    tolerance: float = Field(
+        default=1.0e-4, gt=0.0, le=1.0e-1,
+        description="Local error per step relative to the smallest radial clearance [-]",
+    )
+    output_step_deg: float = Field(
+        default=0.5, gt=0.0, le=10.0, description="Crank-angle spacing of the results [deg]"
+    )
+    max_step_deg: float = Field(
+        default=0.25, gt=0.0, le=5.0, description="Largest integrator step [deg]"
+    )
+    impact_separation: float = Field(
+        default=0.01, gt=0.0, le=1.0,
+        description="Separation (fraction of the joint's smallest radial clearance) "
+        "before a new contact entry counts as an impact [-]",
+    )
+    friction_velocity: float = Field(
+        default=1.0e-3, gt=0.0, le=1.0,
+        description="Sliding speed below which friction is smoothed v₀ [m/s]",
+    )
+    load_scale: float = Field(
+        default=1.0, ge=0.0, le=5.0, description="Factor on the gas pressure (load) [-]"
+    )
+    worn_joint: Literal["auto", "big_end", "small_end"] = Field(
+        default="auto",
+        description="Joint diagnosed in the sweep; auto = the larger clearance_max/diameter [-]",
+    )

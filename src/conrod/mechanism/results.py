@@ -40,7 +40,8 @@ class MechanismResults:
     crank_angle : ndarray  From firing TDC, continuing over the cycles [rad].
     piston_position : ndarray  Pin centre from the crank centre along the cylinder axis [m].
     piston_position_rigid : ndarray  Same for the rigid slider-crank [m].
-    rod_angle : ndarray  Rod axis angle from the cylinder axis, seed φ₂ − π [rad].
+    rod_obliquity : ndarray  Rod obliquity β = π − φ₂ (as in ``conrod loads``: the rod
+        axis from big end to small end is (cos β, −sin β)) [rad].
     gap : ndarray  (2, n) Minimum gap −δ of big and small end, < 0 in contact [m].
     journal_offset : ndarray  (2, 2, n) Journal centre relative to shell centre in the
         rod frame (along the rod towards the small end, across) [m].
@@ -57,7 +58,7 @@ class MechanismResults:
     crank_angle: np.ndarray
     piston_position: np.ndarray
     piston_position_rigid: np.ndarray
-    rod_angle: np.ndarray
+    rod_obliquity: np.ndarray
     gap: np.ndarray
     journal_offset: np.ndarray
     contact_force: np.ndarray

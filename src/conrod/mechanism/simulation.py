@@ -115,7 +115,7 @@ def _assemble(mechanism, p, table, alpha, states, impacts, settings, steps, reje
     return MechanismResults(
         crank_angle=alpha, piston_position=states[:, 6],
         piston_position_rigid=rigid_piston_position(alpha, c.crank_radius, c.rod_length),
-        rod_angle=states[:, 4] - math.pi, gap=-columns[0:2], journal_offset=np.stack(
+        rod_obliquity=math.pi - states[:, 4], gap=-columns[0:2], journal_offset=np.stack(
             [columns[5:7], columns[7:9]]), contact_force=columns[2:4],
         friction_force=columns[11:13], gas_force=columns[4], energy_residual=residual,
         impacts=impacts, cycles=settings.cycles, steps=steps, rejected_steps=rejected,
