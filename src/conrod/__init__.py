@@ -6,6 +6,7 @@ results → plots/report. See ``docs/conventions.md`` for frames and signs.
 
 from conrod.cases import Case
 from conrod.errors import CaseError, ConrodError, ConvergenceError
+from conrod.simulation import Simulation
 
-__all__ = ["Case", "CaseError", "ConrodError", "ConvergenceError"]
+__all__ = ["Case", "CaseError", "ConrodError", "ConvergenceError", "Simulation"]
 __version__ = "0.1.0"

@@ -36,7 +36,7 @@ class CycleResults:
     h_min_angle_shell: np.ndarray
     """Shell angle θ of h_min, film frame [rad]."""
     h_min_angle_journal: np.ndarray
-    """Angle of h_min on the journal, from a journal-fixed mark (θ_shell − journal rotation) [rad]."""
+    """Angle of h_min on the journal from a journal-fixed mark, θ_shell − rotation [rad]."""
     p_max: np.ndarray
     """Maximum gauge film pressure [Pa]."""
     p_max_angle_shell: np.ndarray

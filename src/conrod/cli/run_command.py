@@ -1,0 +1,100 @@
+"""``conrod run CASE.toml --out DIR``: periodic orbit, characteristics, figures (issue 4)."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from conrod.cli.app import exits_cleanly
+
+PROGRESS_AFTER_S = 1.0
+"""A progress bar appears on runs longer than this [s]."""
+
+
+class _Progress:
+    """rich progress on stderr, shown once the run has taken more than a second."""
+
+    def __init__(self, max_cycles: int):
+        self.max_cycles = max_cycles
+        self.start = time.perf_counter()
+        self.bar = None
+        self.task = None
+
+    def __call__(self, stage: str, cycle: int, error: float) -> None:
+        if self.bar is None and time.perf_counter() - self.start > PROGRESS_AFTER_S:
+            from rich.console import Console
+            from rich.progress import Progress
+
+            self.bar = Progress(console=Console(stderr=True), transient=True)
+            self.bar.start()
+            self.task = self.bar.add_task("orbit", total=self.max_cycles)
+        if self.bar is not None:
+            self.bar.update(self.task, completed=min(cycle, self.max_cycles),
+                            description=f"{stage}: cycle {cycle}, Δe/c = {error:.2g}")
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.stop()
+
+
+def register(app: typer.Typer) -> None:
+    """Add the ``run`` command to ``app``."""
+
+    @app.command("run")
+    @exits_cleanly
+    def run(
+        case_file: Annotated[Path, typer.Argument(help="Case file (TOML).")],
+        out: Annotated[Path, typer.Option("--out", help="Results folder.")] = Path("results"),
+        film: Annotated[str | None, typer.Option(
+            help="Film model: short|mobility|reynolds|mass_conserving|table.")] = None,
+        integrator: Annotated[str | None, typer.Option(
+            help="adaptive|rk2|quasi_static.")] = None,
+        max_cycles: Annotated[int | None, typer.Option(help="Most cycles.")] = None,
+        step_deg: Annotated[float | None, typer.Option(help="Fixed step of rk2 [deg].")] = None,
+        grid: Annotated[str | None, typer.Option(help="Film grid NTHETAxNZ, e.g. 72x16.")] = None,
+        figures: Annotated[bool, typer.Option(help="Write the figures.")] = True,
+    ) -> None:
+        """Periodic journal-centre orbit and bearing characteristics over the cycle."""
+        from conrod.cases.case import Case
+        from conrod.results.writers import write_run
+        from conrod.simulation import Simulation
+
+        case = Case.from_toml(case_file)
+        overrides = dict(film=film, integrator=integrator, max_cycles=max_cycles,
+                         step_deg=step_deg, **_grid(grid))
+        simulation = Simulation(case, **overrides)
+        progress = _Progress(simulation.solver.max_cycles)
+        try:
+            results = simulation.run(progress=progress)
+        finally:
+            progress.close()
+        write_run(results, out, figures=figures)
+        s = results.summary
+        typer.echo(
+            f"h_min {s.h_min * 1e6:.3f} µm at {_deg(s.h_min_crank_angle)}°, "
+            f"p_max {s.p_max / 1e6:.2f} MPa at {_deg(s.p_max_crank_angle)}°, "
+            f"{s.cycles} cycles, {s.wall_time:.2f} s → {out}"
+        )
+        for warning in s.warnings:
+            typer.echo(f"warning: {warning}", err=True)
+
+
+def _deg(angle: float) -> str:
+    import math
+
+    return f"{math.degrees(angle):.0f}"
+
+
+def _grid(grid: str | None) -> dict[str, int]:
+    from conrod.errors import CaseError
+
+    if grid is None:
+        return {}
+    try:
+        n_theta, n_z = (int(v) for v in grid.lower().split("x"))
+    except ValueError:
+        raise CaseError(f"--grid = {grid!r}: expected NTHETAxNZ, e.g. 72x16") from None
+    return {"n_theta": n_theta, "n_z": n_z}
