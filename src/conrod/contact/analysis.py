@@ -1,0 +1,205 @@
+"""Contact post-processing of a periodic orbit: contact intervals, Hertz stress, friction
+work, wear on journal and shell (issue 5, seed 004 §4.3–4.5).
+
+``Simulation.run()`` calls :func:`analyse_contact` after the orbit (``docs/orbit.md``).
+With ``[contact] model = "hard"`` the contact force is the orbit's hard-contact force
+P_c (seed 004 eq. 4.2.5); with ``"greenwood_tripp"`` it is the asperity force recomputed
+from the orbit (the same compiled kernel the orbit used) and the boundary friction is
+μ_dry × that force.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from conrod.contact.asperity import AsperityParameters, asperity_force
+from conrod.contact.friction_work import FrictionWork, cycle_length, friction_work_distribution
+from conrod.contact.hertz import (
+    contact_modulus,
+    hertz_half_width,
+    hertz_line_contact_pressure,
+    nominal_specific_load,
+)
+from conrod.contact.wear import WearDistribution, wear_distribution
+from conrod.errors import CaseError
+
+
+def contact_intervals(
+    crank_angle: np.ndarray, contact_force: np.ndarray, threshold: float, cycle: float
+) -> list[tuple[float, float]]:
+    """Crank-angle intervals [rad] where ``contact_force`` [N] exceeds ``threshold`` [N].
+
+    Edges are interpolated linearly between output angles; an interval running over the
+    end of the cycle is joined to the one at its start and reported with end > cycle.
+    """
+    phi = np.append(crank_angle, crank_angle[0] + cycle)
+    excess = np.append(contact_force, contact_force[0]) - threshold
+    above = excess > 0.0
+    if not np.any(above):
+        return []
+    if np.all(above):
+        return [(float(phi[0]), float(phi[-1]))]
+    edges = []
+    for i in np.flatnonzero(above[:-1] != above[1:]):
+        fraction = excess[i] / (excess[i] - excess[i + 1])
+        edges.append((float(phi[i] + fraction * (phi[i + 1] - phi[i])), bool(above[i + 1])))
+    if not edges[0][1]:  # first edge is an exit: the interval started in the previous cycle
+        edges.append((edges[0][0] + cycle, False))
+        edges = edges[1:]
+    return [(edges[k][0], edges[k + 1][0]) for k in range(0, len(edges) - 1, 2)]
+
+
+@dataclass
+class ContactResults:
+    """Contact characteristics of one periodic cycle (units in brackets)."""
+
+    crank_angle: np.ndarray
+    """Output crank angles φ [rad]."""
+    contact_force: np.ndarray
+    """Contact force P_c ≥ 0 (hard contact or asperity) [N]."""
+    friction_force: np.ndarray
+    """Dry / boundary friction force [N]."""
+    hertz_stress: np.ndarray
+    """Peak Hertz pressure of the line contact at each angle [Pa]."""
+    hertz_half_width: np.ndarray
+    """Hertz contact half-width at each angle [m]."""
+    intervals: list[tuple[float, float]]
+    """Contact intervals [rad] (end may exceed the cycle when wrapping)."""
+    work: FrictionWork
+    """Friction work per step and per element [J]."""
+    wear: WearDistribution
+    """Friction work and wear per element of journal and shell [J, m]."""
+    nominal_specific_load: float
+    """P_c,max/(B·D) [Pa] (seed 004 eq. 4.4.1)."""
+    h_min: np.ndarray
+    """Minimum film thickness from the orbit [m]."""
+    p_max: np.ndarray
+    """Maximum film pressure from the orbit [Pa]."""
+    model: str
+    """Contact model ('hard' or 'greenwood_tripp') [-]."""
+
+    @property
+    def max_contact_force(self) -> float:
+        """Largest contact force [N]."""
+        return float(np.max(self.contact_force)) if self.contact_force.size else 0.0
+
+    @property
+    def max_hertz_stress(self) -> float:
+        """Largest Hertz pressure over the cycle [Pa]."""
+        return float(np.max(self.hertz_stress)) if self.hertz_stress.size else 0.0
+
+    @property
+    def hertz_to_nominal_ratio(self) -> float | None:
+        """Hertz stress / nominal specific load at the largest contact force [-] (seed 2.37);
+        None without contact."""
+        if self.nominal_specific_load <= 0.0:
+            return None
+        return self.max_hertz_stress / self.nominal_specific_load
+
+    def summary_items(self) -> dict[str, Any]:
+        """Items merged into summary.json (issue 5 CLI contract)."""
+        return {
+            "contact_model": self.model,
+            "contact_intervals_deg": [
+                [math.degrees(start), math.degrees(end)] for start, end in self.intervals
+            ],
+            "max_contact_force_N": self.max_contact_force,
+            "max_hertz_stress_Pa": self.max_hertz_stress,
+            "max_hertz_half_width_m": float(np.max(self.hertz_half_width, initial=0.0)),
+            "nominal_specific_load_Pa": self.nominal_specific_load,
+            "hertz_to_nominal_ratio": self.hertz_to_nominal_ratio,
+            "friction_work_J": self.work.total,
+            "max_wear_journal_m": float(np.max(self.wear.journal_wear)),
+            "max_wear_shell_m": float(np.max(self.wear.shell_wear)),
+        }
+
+    def cycle_columns(self) -> dict[str, np.ndarray]:
+        """Extra per-angle columns for cycle.csv [units in the names]."""
+        return {
+            "contact_force_N": self.contact_force,
+            "friction_force_N": self.friction_force,
+            "hertz_stress_Pa": self.hertz_stress,
+            "friction_work_cumulative_J": self.work.cumulative,
+        }
+
+    def write_files(self, out_dir: str | Path) -> list[Path]:
+        """Write ``wear_journal.csv``, ``wear_shell.csv`` and the contact figures."""
+        from conrod.contact.output import write_contact_files
+
+        return write_contact_files(self, Path(out_dir))
+
+
+def _contact_from_asperity(case, cycle) -> tuple[np.ndarray, np.ndarray]:
+    bearing = case.bearing
+    params = AsperityParameters.from_case(case).kernel_parameters(
+        0.5 * bearing.diameter, bearing.width
+    )
+    forces = np.array([
+        asperity_force(float(x), float(y), bearing.radial_clearance, params)
+        for x, y in zip(cycle.eccentricity_x, cycle.eccentricity_y, strict=True)
+    ])
+    angle = np.arctan2(cycle.eccentricity_y, cycle.eccentricity_x)
+    return np.hypot(forces[:, 0], forces[:, 1]), angle
+
+
+def _contact_force_and_angle(case, cycle) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(P_c [N], friction force [N], contact angle [rad]) per output angle."""
+    mu = case.contact.dry_friction_coefficient
+    if case.contact.model == "greenwood_tripp":
+        force, angle = _contact_from_asperity(case, cycle)
+        return force, mu * force, angle
+    force = np.maximum(np.asarray(cycle.contact_force, dtype=float), 0.0)
+    return force, np.asarray(cycle.friction_force, dtype=float), np.asarray(cycle.contact_angle)
+
+
+def analyse_contact(case, cycle) -> ContactResults:
+    """Contact, Hertz stress, friction work and wear for the periodic cycle of an orbit.
+
+    case : :class:`conrod.cases.case.Case` with ``[bearing]`` (radial clearance set) and
+        ``[contact]``.
+    cycle : per-angle results with the fields of :class:`conrod.results.CycleResults`
+        (crank_angle, contact_force, friction_force, contact_angle, journal_rotation,
+        eccentricity_x/_y, load_x/_y, h_min, p_max).
+    """
+    bearing, section = case.bearing, case.contact
+    if bearing is None or bearing.radial_clearance is None:
+        raise CaseError("contact analysis needs [bearing] with radial_clearance [m]")
+    radius, width = 0.5 * bearing.diameter, bearing.width
+    crank_angle = np.asarray(cycle.crank_angle, dtype=float)
+    cycle_rad = cycle_length(crank_angle)
+    force, friction, angle = _contact_force_and_angle(case, cycle)
+    modulus = contact_modulus(
+        section.journal_elastic_modulus, section.journal_poisson_ratio,
+        section.shell_elastic_modulus, section.shell_poisson_ratio,
+    )
+    shell_radius = radius + bearing.radial_clearance
+    work = friction_work_distribution(
+        crank_angle, friction, angle, np.asarray(cycle.journal_rotation, dtype=float),
+        radius, section.surface_elements, cycle_rad,
+    )
+    peak_load = float(np.max(np.hypot(cycle.load_x, cycle.load_y)))
+    return ContactResults(
+        crank_angle=crank_angle,
+        contact_force=force,
+        friction_force=friction,
+        hertz_stress=hertz_line_contact_pressure(force, width, radius, shell_radius, modulus),
+        hertz_half_width=hertz_half_width(force, width, radius, shell_radius, modulus),
+        intervals=contact_intervals(
+            crank_angle, force, section.contact_threshold_ratio * peak_load, cycle_rad
+        ),
+        work=work,
+        wear=wear_distribution(
+            work, radius, width, section.wear_coefficient_journal, section.wear_coefficient_shell
+        ),
+        nominal_specific_load=float(
+            nominal_specific_load(np.max(force), width, bearing.diameter)
+        ),
+        h_min=np.asarray(cycle.h_min, dtype=float),
+        p_max=np.asarray(cycle.p_max, dtype=float),
+        model=section.model,
+    )

@@ -1,0 +1,145 @@
+"""analyse_contact on a stand-in cycle: intervals, summary keys, files, Greenwood–Tripp mode."""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pytest
+
+from conrod.cases.case import Case
+from conrod.contact.analysis import analyse_contact, contact_intervals
+from conrod.contact.asperity import asperity_force, kernel_parameters
+from conrod.errors import CaseError
+from conrod.io.atomic import write_json
+
+CYCLE = 4.0 * math.pi
+PHI = np.arange(720) * CYCLE / 720
+CLEARANCE = 30e-6
+
+
+@dataclass
+class StandInCycle:
+    """The CycleResults fields analyse_contact reads (docs/orbit.md), SI units."""
+
+    crank_angle: np.ndarray
+    contact_force: np.ndarray
+    friction_force: np.ndarray
+    contact_angle: np.ndarray
+    journal_rotation: np.ndarray
+    eccentricity_x: np.ndarray
+    eccentricity_y: np.ndarray
+    load_x: np.ndarray
+    load_y: np.ndarray
+    h_min: np.ndarray
+    p_max: np.ndarray
+
+
+def _case(**contact) -> Case:
+    return Case.from_dict({
+        "bearing": {"diameter": 0.06, "width": 0.025, "radial_clearance": CLEARANCE},
+        "contact": contact,
+    })
+
+
+def _combustion_cycle(gap_in_contact: float = 0.0) -> StandInCycle:
+    deg = np.degrees(PHI)
+    force = np.where((deg > 370) & (deg < 452), 2.0e4 * np.sin(np.pi * (deg - 370) / 82), 0.0)
+    angle = np.full(PHI.size, math.pi / 2)
+    e = np.where(force > 0, CLEARANCE - gap_in_contact, 0.5 * CLEARANCE)
+    return StandInCycle(
+        crank_angle=PHI, contact_force=force, friction_force=0.1 * force, contact_angle=angle,
+        journal_rotation=PHI - 0.3 * np.sin(PHI), eccentricity_x=e * np.cos(angle),
+        eccentricity_y=e * np.sin(angle), load_x=np.zeros(PHI.size), load_y=force + 5.0e3,
+        h_min=CLEARANCE - e, p_max=np.full(PHI.size, 5.0e7),
+    )
+
+
+def test_contact_intervals_edges_and_wrap():
+    force = np.where(np.degrees(PHI) > 700.5, 1.0, 0.0) + np.where(np.degrees(PHI) < 29.5, 1.0, 0.0)
+    (start, end), = contact_intervals(PHI, force, 0.5, CYCLE)
+    assert math.degrees(start) == pytest.approx(700.5)
+    assert math.degrees(end) == pytest.approx(720.0 + 29.5)
+    assert contact_intervals(PHI, np.zeros(PHI.size), 0.0, CYCLE) == []
+    ramp = np.interp(np.degrees(PHI), [0, 100, 200, 720], [0, 10, 0, 0])
+    (start, end), = contact_intervals(PHI, ramp, 5.0, CYCLE)
+    assert (math.degrees(start), math.degrees(end)) == pytest.approx((50.0, 150.0))
+
+
+def test_hard_contact_summary_matches_seed_definitions(tmp_path):
+    case = _case(dry_friction_coefficient=0.1)
+    result = analyse_contact(case, _combustion_cycle())
+    items = result.summary_items()
+    for key in ("contact_intervals_deg", "max_contact_force_N", "max_hertz_stress_Pa",
+                "nominal_specific_load_Pa", "hertz_to_nominal_ratio", "friction_work_J",
+                "max_wear_journal_m", "max_wear_shell_m"):
+        assert key in items
+    (start, end), = items["contact_intervals_deg"]
+    assert 370.0 < start < 372.0 and 450.0 < end < 452.0
+    assert items["max_contact_force_N"] == pytest.approx(2.0e4, rel=1e-3)
+    assert items["nominal_specific_load_Pa"] == pytest.approx(
+        items["max_contact_force_N"] / (0.06 * 0.025))
+    assert items["hertz_to_nominal_ratio"] == pytest.approx(
+        items["max_hertz_stress_Pa"] / items["nominal_specific_load_Pa"])
+    assert np.sum(result.wear.journal_work) == pytest.approx(items["friction_work_J"])
+    assert np.sum(result.wear.shell_work) == pytest.approx(items["friction_work_J"])
+    write_json(tmp_path / "summary.json", items)  # JSON-clean: no NaN, plain types
+    assert json.loads((tmp_path / "summary.json").read_text())["friction_work_J"] > 0.0
+    assert set(result.cycle_columns()) >= {"contact_force_N", "friction_force_N"}
+
+
+def test_write_files_tables_and_figures(tmp_path):
+    result = analyse_contact(_case(surface_elements=90), _combustion_cycle())
+    paths = result.write_files(tmp_path)
+    assert {p.name for p in paths} >= {"wear_journal.csv", "wear_shell.csv", "contact_cycle.png"}
+    for name in ("wear_journal.csv", "wear_shell.csv"):
+        with open(tmp_path / name, encoding="utf-8") as handle:
+            rows = list(csv.DictReader(handle))
+        assert list(rows[0]) == ["angle_deg", "friction_work_J", "wear_m"]
+        assert len(rows) == 90
+        total = sum(float(r["friction_work_J"]) for r in rows)
+        assert total == pytest.approx(result.work.total, rel=1e-6)
+    assert all(p.stat().st_size > 0 for p in paths)
+
+
+def test_no_contact_gives_zeros_and_null_ratio():
+    cycle = _combustion_cycle()
+    cycle.contact_force[:] = 0.0
+    cycle.friction_force[:] = 0.0
+    items = analyse_contact(_case(), cycle).summary_items()
+    assert items["contact_intervals_deg"] == []
+    assert items["friction_work_J"] == 0.0 and items["max_wear_shell_m"] == 0.0
+    assert items["hertz_to_nominal_ratio"] is None
+
+
+def test_greenwood_tripp_mode_recomputes_the_asperity_force():
+    """Under GT the contact force comes from the orbit's eccentricity (same kernel as the RHS)."""
+    case = _case(model="greenwood_tripp", roughness=0.4e-6)
+    cycle = _combustion_cycle(gap_in_contact=0.2e-6)
+    cycle.contact_force[:] = 0.0  # the hard-contact force of the orbit is not used
+    result = analyse_contact(case, cycle)
+    index = 400
+    expected = math.hypot(*asperity_force(
+        cycle.eccentricity_x[index], cycle.eccentricity_y[index], CLEARANCE,
+        kernel_parameters(case),
+    ))
+    assert expected > 0.0
+    assert result.contact_force[index] == pytest.approx(expected)
+    assert result.friction_force[index] == pytest.approx(0.1 * expected)
+    assert result.contact_force[0] == 0.0  # ε = 0.5: no asperity contact
+
+
+def test_missing_clearance_is_a_case_error():
+    case = Case.from_dict({"bearing": {"diameter": 0.06, "width": 0.025}})
+    with pytest.raises(CaseError, match="radial_clearance"):
+        analyse_contact(case, _combustion_cycle())
+
+
+def test_contact_section_errors_name_field_and_unit():
+    with pytest.raises(CaseError, match=r"contact.roughness.*m"):
+        _case(roughness=-1.0)
+    with pytest.raises(CaseError, match="did you mean 'wear_coefficient_shell'"):
+        _case(wear_coeficient_shell=1e-16)
