@@ -1,0 +1,295 @@
+"""Tabulated quasi-static film (seed 000 §3.3): precomputed squeeze-force maps, cached on disk.
+
+Any :class:`~conrod.film.base.FilmModel` (``base``) is solved once per table node for a pure
+squeeze state (ω_j = ω_b = 0) at eccentricity ε_j along +x and unit-direction velocity
+β_k; Booker's reduction (:mod:`conrod.film.table_kernel`) turns every later state, with any
+journal and shell speeds, into such a squeeze state, so one table serves all speeds and
+viscosities. Forces are interpolated quadratically in the (stretched) eccentricity and
+linearly in the velocities; side/supply flow and p_max the same way.
+
+Valid for bearings whose film does not depend on the line-of-centres angle and scales with
+speed: no feed holes, only full circumferential grooves at ambient pressure, cavitation at
+ambient pressure (others raise :class:`~conrod.errors.CaseError`). Friction moments are
+the exact rigid-bearing values in Raimondi & Boyd's full-film convention,
+M_j = −2πμR³L(ω_j − ω_b)/(c√(1−ε²)) − e F_t/2, M_b = +2πμR³L(ω_j − ω_b)/(c√(1−ε²)) − e F_t/2.
+
+Tables are stored as ``<sha256>.npz`` in ``cache_dir`` (default ``~/.cache/conrod/tables``),
+the key hashing the geometry, the base model and its grid, and the table grid.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import math
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from conrod.errors import CaseError
+from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
+from conrod.film.table_kernel import (
+    WEIGHT_POWER,
+    interpolate,
+    squeeze_velocity,
+    stretched,
+    table_force,
+    unit_force,
+)
+from conrod.io.atomic import atomic_path
+
+TABLE_FORMAT = 2
+"""Bumped whenever the stored content changes meaning (part of the cache key) [-]."""
+DEFAULT_CACHE_DIR = Path.home() / ".cache" / "conrod" / "tables"
+QUANTITIES = ("log_magnitude", "turning", "side_flow", "supply_flow", "max_pressure",
+              "peak_cos", "peak_sin", "cavitated")
+PER_SPEED = ("side_flow", "supply_flow", "max_pressure")
+"""Tabulated per unit squeeze speed (scale with |v_s|); the rest are direction-only."""
+REFERENCE_VISCOSITY = 0.01
+"""Viscosity of the table solves [Pa s] (results are scaled out)."""
+REFERENCE_RATE = 100.0
+"""Squeeze speed of the table solves per clearance, |v| = c · rate [1/s]."""
+
+
+def check_tabulable(geometry: BearingGeometry) -> None:
+    """CaseError unless the film is rotation-invariant and homogeneous in speed."""
+    if geometry.feed_holes:
+        raise CaseError("film = 'table'/'mobility': feed holes break rotational symmetry "
+                        "(allowed: none; use 'reynolds' or 'mass_conserving')")
+    if any(g.extent < 2.0 * math.pi - 1e-9 for g in geometry.grooves):
+        raise CaseError("film = 'table'/'mobility': partial grooves are not allowed "
+                        "(allowed: full circumferential grooves only)")
+    if geometry.grooves and geometry.supply_pressure != 0.0:
+        raise CaseError(f"supply_pressure = {geometry.supply_pressure} Pa with film 'table': "
+                        "allowed 0 Pa (tables scale with speed)")
+    if geometry.cavitation_pressure != 0.0:
+        raise CaseError(f"cavitation_pressure = {geometry.cavitation_pressure} Pa with film "
+                        "'table': allowed 0 Pa (ambient)")
+
+
+def base_description(base: FilmModel) -> dict:
+    """What identifies the base model in the cache key."""
+    keys = ("n_theta", "n_z", "tolerance", "friction")
+    params = {k: getattr(base, k) for k in keys if hasattr(base, k)}
+    return {"class": type(base).__name__, "name": base.name, **params}
+
+
+@dataclass
+class TabulatedFilm:
+    """Quasi-static film from a precomputed, disk-cached squeeze-force map.
+
+    base : FilmModel  Model solved at the table nodes (any film model).
+    n_eps : int  Eccentricity nodes, uniform in s = −ln(1 − ε) from 0 to eccentricity_max [-].
+    n_direction : int  Squeeze-velocity directions over 360° (even) [-].
+    eccentricity_max : float  Last eccentricity node; beyond it values are extrapolated [-].
+    cache_dir : path or None  Table folder (None: ``~/.cache/conrod/tables``).
+    use_cache : bool  Read/write the disk cache.
+    """
+
+    base: FilmModel
+    n_eps: int = 24
+    n_direction: int = 48
+    eccentricity_max: float = 0.98
+    cache_dir: str | Path | None = None
+    use_cache: bool = True
+    name: str = "table"
+    build_seconds: float = field(default=0.0, init=False)
+    loaded_from_cache: bool = field(default=False, init=False)
+
+    def __post_init__(self) -> None:
+        self.geometry = self.base.geometry
+        check_tabulable(self.geometry)
+        if self.n_eps < 3 or self.n_direction < 8 or self.n_direction % 2:
+            raise CaseError(f"table grid n_eps = {self.n_eps}, n_direction = {self.n_direction}: "
+                            "allowed n_eps >= 3, n_direction even >= 8")
+        if not 0.0 < self.eccentricity_max < 1.0:
+            raise CaseError(f"eccentricity_max = {self.eccentricity_max}: allowed (0, 1) [-]")
+        g = self.geometry
+        self.s_step = stretched(self.eccentricity_max) / (self.n_eps - 1)
+        self.force_scale = g.radius**3 * g.width / g.radial_clearance**3
+        self.tables = self._load_or_build()
+
+    # ------------------------------------------------------------------ cache
+    def cache_key(self) -> str:
+        """SHA-256 of geometry, base model and table grid."""
+        payload = {
+            "format": TABLE_FORMAT, "geometry": dataclasses.asdict(self.geometry),
+            "base": base_description(self.base),
+            "grid": [self.n_eps, self.n_direction, self.eccentricity_max],
+        }
+        text = json.dumps(payload, sort_keys=True, default=str)
+        return hashlib.sha256(text.encode()).hexdigest()
+
+    def cache_path(self) -> Path:
+        """Where this table is stored."""
+        folder = Path(self.cache_dir) if self.cache_dir is not None else DEFAULT_CACHE_DIR
+        return folder.expanduser() / f"{self.cache_key()}.npz"
+
+    def _load_or_build(self) -> dict[str, np.ndarray]:
+        path = self.cache_path()
+        if self.use_cache and path.exists():
+            with np.load(path) as stored:
+                self.loaded_from_cache = True
+                return {q: stored[q].copy() for q in QUANTITIES}
+        start = time.perf_counter()
+        tables = build_squeeze_tables(self.base, self.eccentricities(), self.directions())
+        self.build_seconds = time.perf_counter() - start
+        if self.use_cache:
+            with atomic_path(path) as tmp:
+                np.savez(tmp, **tables)
+        return tables
+
+    def directions(self) -> np.ndarray:
+        """Squeeze-velocity directions β_k = −π + 2πk/n [rad]."""
+        return -math.pi + 2.0 * math.pi * np.arange(self.n_direction) / self.n_direction
+
+    def eccentricities(self) -> np.ndarray:
+        """Eccentricity nodes ε_j = 1 − exp(−j Δs) [-]."""
+        return 1.0 - np.exp(-self.s_step * np.arange(self.n_eps))
+
+    # ------------------------------------------------------------- interface
+    def grid(self) -> tuple[np.ndarray, np.ndarray]:
+        """Grid of the base model (no pressure field is tabulated)."""
+        return self.base.grid()
+
+    def initial_history(self) -> None:
+        """Tables are memoryless."""
+        return None
+
+    def force(self, state: FilmState) -> tuple[float, float]:
+        """Film force on the journal (F_x, F_y) [N]."""
+        self._reject_deformation(state)
+        return table_force(
+            state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
+            state.journal_speed + state.shell_speed, state.viscosity, self.force_scale,
+            self.geometry.radial_clearance, self.s_step,
+            self.tables["log_magnitude"], self.tables["turning"],
+        )
+
+    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+        """Interpolated characteristics (no pressure field: ``with_pressure`` is ignored)."""
+        self._reject_deformation(state)
+        g = self.geometry
+        c = g.radial_clearance
+        eps, cos_psi, sin_psi, v_r, v_t = squeeze_velocity(
+            state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
+            state.journal_speed + state.shell_speed, c)
+        values = self._interpolate(eps, v_r, v_t)
+        mu = state.viscosity
+        f_r, f_t = (mu * self.force_scale * values[k] for k in ("radial", "tangential"))
+        eps_c = min(eps, 1.0 - 1e-9)
+        couette = (2.0 * math.pi * mu * g.radius**3 * g.width
+                   * (state.journal_speed - state.shell_speed) / (c * math.sqrt(1 - eps_c**2)))
+        wedge = -0.5 * eps * c * f_t
+        psi = math.atan2(sin_psi, cos_psi)
+        peak_angle = psi + math.atan2(values["peak_sin"], values["peak_cos"])
+        sliding = state.journal_speed - state.shell_speed
+        return FilmResult(
+            force_x=f_r * cos_psi - f_t * sin_psi, force_y=f_r * sin_psi + f_t * cos_psi,
+            friction_torque_journal=wedge - couette, friction_torque_shell=wedge + couette,
+            side_flow=values["side_flow"], supply_flow=values["supply_flow"],
+            min_film_thickness=c * (1.0 - eps), min_film_angle=psi % (2.0 * math.pi),
+            max_pressure=mu * values["max_pressure"],
+            max_pressure_angle=peak_angle % (2.0 * math.pi),
+            cavitated_fraction=min(max(values["cavitated"], 0.0), 1.0),
+            friction_power=abs((wedge - couette) * sliding),
+            extra={"eccentricity_ratio": eps},
+        )
+
+    def _interpolate(self, eps: float, v_r: float, v_t: float) -> dict[str, float]:
+        """Dimensionless force (radial, tangential) × |v_s| and the other quantities."""
+        speed = math.hypot(v_r, v_t)
+        names = ("radial", "tangential", *QUANTITIES[2:])
+        if speed == 0.0:
+            return dict.fromkeys(names, 0.0) | {"peak_cos": 1.0}
+        beta = math.atan2(v_t, v_r)
+        t = self.tables
+        f_r, f_t = unit_force(eps, beta, self.s_step, t["log_magnitude"], t["turning"])
+        values = {q: interpolate(t[q], eps, beta, self.s_step) for q in QUANTITIES[2:]}
+        for q in PER_SPEED:
+            values[q] *= speed
+        return values | {"radial": f_r * speed, "tangential": f_t * speed}
+
+    def _reject_deformation(self, state: FilmState) -> None:
+        if state.deformation is not None:
+            raise CaseError("film = 'table' cannot take a deformation field (use 'reynolds')")
+
+    # ------------------------------------------------------------- accuracy
+    def interpolation_error(
+        self, n_points: int = 24, *, eccentricity_max: float | None = None, seed: int = 0
+    ) -> dict[str, float]:
+        """Max and RMS of |F_table − F_base|/|F_base| at random off-grid states [-].
+
+        States have random ε ∈ [0.02, eccentricity_max], squeeze direction, journal and
+        shell speeds (so Booker's reduction is checked too); seeded, deterministic.
+        """
+        rng = np.random.default_rng(seed)
+        c = self.geometry.radial_clearance
+        top = self.eccentricity_max if eccentricity_max is None else eccentricity_max
+        errors = []
+        for _ in range(n_points):
+            state = random_state(rng, c, top)
+            fx, fy = self.force(state)
+            bx, by = self.base.force(state)
+            errors.append(math.hypot(fx - bx, fy - by) / math.hypot(bx, by))
+        errors_arr = np.asarray(errors)
+        return {"max_relative": float(errors_arr.max()),
+                "rms_relative": float(np.sqrt(np.mean(errors_arr**2))), "n_points": n_points}
+
+
+def random_state(rng: np.random.Generator, clearance: float, eps_max: float) -> FilmState:
+    """Random off-grid state: ε, line-of-centres angle, squeeze velocity, speeds."""
+    eps = rng.uniform(0.02, eps_max)
+    psi, beta = rng.uniform(-math.pi, math.pi, size=2)
+    omega_j, omega_b = rng.uniform(-200.0, 200.0, size=2)
+    speed = clearance * rng.uniform(10.0, 200.0)
+    ex, ey = eps * clearance * math.cos(psi), eps * clearance * math.sin(psi)
+    mean = 0.5 * (omega_j + omega_b)
+    vx = speed * math.cos(psi + beta) - mean * ey
+    vy = speed * math.sin(psi + beta) + mean * ex
+    return FilmState(ex, ey, vx, vy, journal_speed=omega_j, shell_speed=omega_b, viscosity=0.02)
+
+
+def build_squeeze_tables(
+    base: FilmModel, eccentricities: np.ndarray, directions: np.ndarray
+) -> dict[str, np.ndarray]:
+    """Solve ``base`` at every (ε_j, β_k) squeeze node; tables of shape (n_eps, n_direction).
+
+    ``directions`` are uniform from −π. Only β ∈ [0, π] is solved: the mirror image about
+    the line of centres gives |f̄|(−β) = |f̄|(β), A(−β) = −A(β).
+    """
+    c = base.geometry.radial_clearance
+    speed = c * REFERENCE_RATE
+    scale = REFERENCE_VISCOSITY * speed
+    force_scale = base.geometry.radius**3 * base.geometry.width / c**3
+    n_direction = directions.size
+    tables = {q: np.zeros((eccentricities.size, n_direction)) for q in QUANTITIES}
+    mirror = {"turning", "peak_sin"}
+    for j, eps in enumerate(eccentricities):
+        for k in range(n_direction // 2, n_direction + 1):
+            beta = -math.pi + k * 2.0 * math.pi / n_direction
+            state = FilmState(eps * c, 0.0, speed * math.cos(beta), speed * math.sin(beta),
+                              viscosity=REFERENCE_VISCOSITY)
+            row = _table_row(base.solve(state), beta, eps, scale * force_scale, speed, scale)
+            for q, value in row.items():
+                tables[q][j, k % n_direction] = value
+                tables[q][j, (n_direction - k) % n_direction] = -value if q in mirror else value
+    return tables
+
+
+def _table_row(r: FilmResult, beta: float, eps: float, force_unit: float, speed: float,
+               pressure_unit: float) -> dict[str, float]:
+    """Tabulated quantities of one base solution."""
+    magnitude = math.hypot(r.force_x, r.force_y) / force_unit
+    turning = math.atan2(r.force_y, r.force_x) - beta - math.pi
+    return {
+        "log_magnitude": math.log(magnitude) + WEIGHT_POWER * math.log(1.0 - eps * eps),
+        "turning": (turning + math.pi) % (2.0 * math.pi) - math.pi,
+        "side_flow": r.side_flow / speed, "supply_flow": r.supply_flow / speed,
+        "max_pressure": r.max_pressure / pressure_unit,
+        "peak_cos": math.cos(r.max_pressure_angle), "peak_sin": math.sin(r.max_pressure_angle),
+        "cavitated": r.cavitated_fraction,
+    }
