@@ -61,3 +61,12 @@ def test_polar_diagram_pole_shift_is_the_rotating_force():
     # vector from O' to each point = S + K_R = force of the rod on the pin (outward, T)
     np.testing.assert_allclose(outward - pole[1], -radial)
     np.testing.assert_allclose(t, tangential)
+
+
+def test_conventions_figure_draws_the_three_frames():
+    from conrod.plotting.loads_plots import conventions_figure
+
+    figure = conventions_figure()
+    texts = " ".join(t.get_text() for t in figure.axes[0].texts)
+    for label in ("X (engine)", "x rod", "y rod", "x crank", "θ on the shell"):
+        assert label in texts

@@ -43,7 +43,8 @@ LOADS_CSV_COLUMNS = (
 
 def loads_table(loads: EngineLoads) -> dict[str, np.ndarray]:
     """The ``loads.csv`` columns as a dict name → array."""
-    return {name: np.asarray(get(loads), dtype=float) for name, get in LOADS_CSV_COLUMNS}
+    # "+ 0.0" turns -0.0 into 0.0 so that the table does not show "-0"
+    return {name: np.asarray(get(loads), dtype=float) + 0.0 for name, get in LOADS_CSV_COLUMNS}
 
 
 def write_loads_outputs(loads: EngineLoads, out: Path) -> list[Path]:

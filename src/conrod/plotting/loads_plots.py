@@ -138,8 +138,9 @@ def conventions_figure() -> Figure:
     axes.plot([pin[0], small[0]], [pin[1], small[1]], color="0.4", lw=6, alpha=0.6)
     axes.add_patch(_circle(pin, 0.35, "C0"))
     axes.add_patch(_circle((0.0, 0.0), 1.0, "0.8", fill=False))
-    axes.plot([small[0] - 0.5, small[0] + 0.5], [0.55, 0.55], color="k")
-    axes.plot([small[0] - 0.5, small[0] + 0.5], [-0.55, -0.55], color="k")
+    axes.plot([small[0] - 0.6, small[0] + 0.9], [0.45, 0.45], color="k")
+    axes.plot([small[0] - 0.6, small[0] + 0.9], [-0.45, -0.45], color="k")
+    axes.add_patch(_piston(small))
     _arrow(axes, (0, 0), (4.6, 0), "X (engine), towards TDC", "k")
     _arrow(axes, (0, 0), (0, 1.8), "Y (engine)", "k")
     u = (small - pin) / length
@@ -148,28 +149,22 @@ def conventions_figure() -> Figure:
     _arrow(axes, pin, pin + 1.2 * v, "y rod = z × x", "C0")
     e_r = pin / r
     _arrow(axes, pin, pin + 0.9 * e_r, "x crank (outward)", "C2")
-    _arrow(axes, pin, pin + 0.9 * np.array([-e_r[1], e_r[0]]), "y crank (rotation)", "C2")
-    axes.annotate("φ (from firing TDC, CCW = rotation)", (0.55, 0.2), fontsize=9)
-    axes.annotate(
-        "β: sin β = λ sin φ\nrod orientation −β", (pin[0] + 1.4, pin[1] - 0.2), fontsize=9
-    )
-    axes.annotate(
-        "θ on the shell: from x rod towards y rod",
-        (pin[0] - 0.6, pin[1] + 0.55),
-        fontsize=9,
-        color="C0",
-    )
+    _arrow(axes, pin, pin + 0.9 * np.array([-e_r[1], e_r[0]]), "y crank\n(rotation)", "C2")
+    _crank_angle_arc(axes, phi)
+    axes.annotate("β (sin β = λ sin φ);\nrod orientation is −β", (1.3, -0.85), fontsize=9)
+    axes.annotate("θ on the shell: from x rod towards y rod", (1.0, 1.75), fontsize=9, color="C0")
     _arrow(
         axes,
-        small + np.array([0, 0.9]),
-        small + np.array([0, 0.9]) + np.array([-0.9, 0]),
+        small + np.array([0.3, 0.8]),
+        small + np.array([-0.5, 0.8]),
         "P_g, P_Σ > 0 towards the crank",
         "C3",
     )
     axes.annotate(
-        "S > 0: rod in compression\nR > 0 towards the crank axis\nT > 0 along rotation\n"
-        "W = load on journal = −(force of rod on crankpin)",
-        (-1.4, -1.5),
+        "φ: crank angle from firing TDC, CCW (= rotation) positive\n"
+        "S > 0: rod in compression;  R > 0 towards the crank axis;  T > 0 along rotation\n"
+        "W (load on the journal, film frame) = −(force of the rod on the crankpin)",
+        (-1.5, -1.75),
         fontsize=9,
     )
     axes.set_aspect("equal")
@@ -178,6 +173,18 @@ def conventions_figure() -> Figure:
     axes.axis("off")
     axes.set_title("conrod frames and signs (crank at φ = 50°, λ = 0.3)")
     return figure
+
+
+def _crank_angle_arc(axes, phi: float) -> None:
+    arc = np.linspace(0.0, phi, 30)
+    axes.plot(0.45 * np.cos(arc), 0.45 * np.sin(arc), color="k", lw=0.8)
+    axes.annotate("φ", (0.5 * math.cos(phi / 2), 0.5 * math.sin(phi / 2)), fontsize=11)
+
+
+def _piston(small):
+    from matplotlib.patches import Rectangle
+
+    return Rectangle((small[0] - 0.25, -0.42), 0.7, 0.84, color="0.6", alpha=0.5)
 
 
 def _circle(centre, radius: float, color: str, fill: bool = True):
