@@ -82,3 +82,26 @@ def test_example_loads_are_physically_sensible(example):
     omega = case.engine.speed * math.pi / 30
     assert loads.journal_speed.max() == pytest.approx(omega * (1 + lam), rel=1e-9)
     assert loads.journal_speed.min() == pytest.approx(omega * (1 - lam), rel=1e-9)
+
+
+def test_installed_conrod_command_runs_loads(tmp_path):
+    """The real console entry point (all commands registered) runs ``conrod loads``."""
+    import subprocess
+    import sys
+
+    example = EXAMPLES / "passenger_car_diesel_2000rpm.toml"
+    command = [
+        sys.executable,
+        "-c",
+        "from conrod.cli.app import main; main()",
+        "loads",
+        str(example),
+        "--out",
+        str(tmp_path / "out"),
+        "--step",
+        "2",
+    ]
+    completed = subprocess.run(command, capture_output=True, text=True, timeout=300, check=False)
+    assert completed.returncode == 0, completed.stderr
+    assert "peak load" in completed.stdout
+    assert (tmp_path / "out" / "loads_summary.json").exists()

@@ -147,3 +147,15 @@ def test_load_cycle_hand_over_uses_rod_frame_and_relative_speed(tmp_path):
     # ω_j = ω − Ω_rod = ω(1 ± λ) at TDC/BDC (relative speed of the big end)
     assert journal == pytest.approx([OMEGA * (1 + LAM), OMEGA * (1 - LAM)], rel=1e-12)
     assert shell == pytest.approx([0.0, 0.0])
+
+
+def test_series_kinematics_option_gives_the_textbook_inertia_force(tmp_path):
+    """kinematics = "series": P_j = −m_j r ω²(cos φ + λ cos 2φ) exactly (SPEC S1)."""
+    loads = compute_engine_loads(trace_case(tmp_path, kinematics="series"))
+    phi = loads.crank_angle
+    expected = -M_RECIP * R * OMEGA**2 * (np.cos(phi) + LAM * np.cos(2 * phi))
+    np.testing.assert_allclose(loads.reciprocating_inertia_force, expected, rtol=1e-12, atol=1e-9)
+    exact = compute_engine_loads(trace_case(tmp_path))
+    # the two differ by O(λ³) of the inertia force, i.e. a few per mille here
+    difference = np.max(np.abs(exact.reciprocating_inertia_force - expected))
+    assert 0.0 < difference < LAM**3 * M_RECIP * R * OMEGA**2
