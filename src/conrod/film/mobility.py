@@ -5,7 +5,8 @@ Normalisation (derived from :mod:`conrod.film.table_kernel`)
 In the frame turning at ω̄ = (ω_j + ω_b)/2 the film is a pure squeeze film, so a journal
 carrying the load W (F_film = −W, quasi-static, massless) moves with
 
-.. math:: \\dot{\\mathbf e} = \\frac{c^3 |W|}{μ R^3 L}\\, \\mathbf M(ε, χ) + \\bar ω \\times \\mathbf e,
+.. math:: \\dot{\\mathbf e} = \\frac{c^3 |W|}{μ R^3 L} \\mathbf M(ε, χ)
+          + \\bar ω \\times \\mathbf e,
 
 where **M** is the dimensionless mobility vector, here M = v_s μR³L/(c³|W|): its magnitude
 |M| = 1/|f̄(ε, β)| and its direction β (from the line of centres) solve
