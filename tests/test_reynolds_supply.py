@@ -7,6 +7,9 @@ import math
 import numpy as np
 import pytest
 
+from conrod.cases.base import validate_section
+from conrod.cases.bearing import BearingSection
+from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FeedHole, FilmState, Groove
 from conrod.film.characteristics import FilmGrid
 from conrod.film.reynolds import ReynoldsFilm
@@ -79,3 +82,23 @@ def test_supply_masks_rasterise_features():
     assert tiny.sum() == 1
     both = supply_mask(BearingGeometry(D, D, C, grooves=(partial,)), grid)
     assert not both[:, [0, -1]].any()
+
+
+def test_bearing_section_builds_geometry_with_supply_features():
+    section = validate_section(BearingSection, {
+        "diameter": 0.085, "width": 0.028, "radial_clearance": 4e-5, "supply_pressure": 3e5,
+        "grooves": [{"start_angle": 90.0, "extent": 180.0, "width": 0.004}],
+        "feed_holes": [{"angle": 30.0, "diameter": 0.005}],
+    }, "bearing")
+    geometry = section.geometry()
+    assert geometry.grooves[0].extent == pytest.approx(math.pi)
+    assert geometry.feed_holes[0].angle == pytest.approx(math.radians(30.0))
+    assert geometry.supply_pressure == 3e5
+    with pytest.raises(CaseError, match="did you mean 'extent'"):
+        validate_section(BearingSection, {"diameter": 0.085, "width": 0.028,
+                                          "grooves": [{"width": 0.004, "extnt": 90}]}, "bearing")
+    outside = validate_section(BearingSection, {
+        "diameter": 0.085, "width": 0.028, "radial_clearance": 4e-5,
+        "feed_holes": [{"angle": 0.0, "diameter": 0.005, "axial_position": 0.02}]}, "bearing")
+    with pytest.raises(CaseError, match=r"feed_holes\[0\].axial_position"):
+        outside.geometry()

@@ -1,17 +1,101 @@
-"""``[bearing]`` section: journal-bearing geometry and oil-supply features (SPEC S2)."""
+"""``[bearing]`` section: journal-bearing geometry and oil-supply features (SPEC S2).
+
+Angles of supply features are in degrees, measured on the shell in the film frame
+(θ from +x towards +y, see :mod:`conrod.film.base`); everything else is SI. Example::
+
+    [bearing]
+    diameter = 0.085
+    width = 0.028
+    radial_clearance = 4.0e-5
+    supply_pressure = 3.0e5
+
+    [[bearing.grooves]]          # partial circumferential groove
+    start_angle = 90.0
+    extent = 180.0
+    width = 0.004
+
+    [[bearing.feed_holes]]
+    angle = 0.0
+    diameter = 0.005
+"""
 
 from __future__ import annotations
 
+import math
+
 from pydantic import Field
 
-from conrod.cases.base import Section
+from conrod.cases.base import Section, range_error
+from conrod.film.base import BearingGeometry, FeedHole, Groove
+
+
+class GrooveSection(Section):
+    """Full or partial circumferential oil groove held at the supply pressure."""
+
+    start_angle: float = Field(default=0.0, ge=-360.0, le=360.0,
+                               description="Angle θ where the groove starts [deg]")
+    extent: float = Field(default=360.0, gt=0.0, le=360.0,
+                          description="Angular extent, 360 for a full groove [deg]")
+    width: float = Field(gt=0.0, le=1.0, description="Axial width of the groove [m]")
+    axial_position: float = Field(default=0.0, ge=-2.5, le=2.5,
+                                  description="Axial position of the groove centre, 0 = mid [m]")
+
+    def to_groove(self) -> Groove:
+        """SI :class:`Groove` (angles in rad)."""
+        return Groove(math.radians(self.start_angle), math.radians(self.extent),
+                      self.width, self.axial_position)
+
+
+class FeedHoleSection(Section):
+    """Circular oil-feed hole held at the supply pressure."""
+
+    angle: float = Field(ge=-360.0, le=360.0, description="Angle θ of the hole centre [deg]")
+    diameter: float = Field(gt=0.0, le=1.0, description="Hole diameter [m]")
+    axial_position: float = Field(default=0.0, ge=-2.5, le=2.5,
+                                  description="Axial position of the hole centre, 0 = mid [m]")
+
+    def to_feed_hole(self) -> FeedHole:
+        """SI :class:`FeedHole` (angle in rad)."""
+        return FeedHole(math.radians(self.angle), self.diameter, self.axial_position)
 
 
 class BearingSection(Section):
-    """Geometry of the big-end (or any journal) bearing."""
+    """Geometry of the big-end (or any journal) bearing and its oil supply."""
 
     diameter: float = Field(gt=0.0, le=5.0, description="Journal (crankpin) diameter d [m]")
     width: float = Field(gt=0.0, le=5.0, description="Working shell width l' (axial length) [m]")
     radial_clearance: float | None = Field(
         default=None, gt=0.0, le=1.0e-2, description="Radial clearance c [m]"
     )
+    supply_pressure: float = Field(
+        default=0.0, ge=0.0, le=1.0e7, description="Gauge oil-supply pressure p_s [Pa]"
+    )
+    cavitation_pressure: float = Field(
+        default=0.0, ge=-1.0e5, le=0.0, description="Gauge cavitation pressure p_cav [Pa]"
+    )
+    grooves: list[GrooveSection] = Field(default_factory=list,
+                                         description="Oil grooves in the shell [-]")
+    feed_holes: list[FeedHoleSection] = Field(default_factory=list,
+                                              description="Oil-feed holes in the shell [-]")
+
+    def geometry(self) -> BearingGeometry:
+        """SI :class:`BearingGeometry` with the supply features (needs the clearance)."""
+        if self.radial_clearance is None:
+            raise range_error("bearing.radial_clearance", None, "> 0", "m")
+        self._check_features_inside_width()
+        return BearingGeometry(
+            diameter=self.diameter, width=self.width, radial_clearance=self.radial_clearance,
+            grooves=tuple(g.to_groove() for g in self.grooves),
+            feed_holes=tuple(h.to_feed_hole() for h in self.feed_holes),
+            supply_pressure=self.supply_pressure,
+            cavitation_pressure=self.cavitation_pressure,
+        )
+
+    def _check_features_inside_width(self) -> None:
+        half = 0.5 * self.width
+        allowed = f">= {-half:g} and <= {half:g}"
+        for kind, features in (("grooves", self.grooves), ("feed_holes", self.feed_holes)):
+            for k, feature in enumerate(features):
+                if abs(feature.axial_position) > half:
+                    raise range_error(f"bearing.{kind}[{k}].axial_position",
+                                      feature.axial_position, allowed, "m")
