@@ -36,7 +36,10 @@ MAX_TRACE_GAP_DEG = 20.0
 class CylinderPressure(Protocol):
     """Absolute cylinder pressure as a periodic function of crank angle."""
 
-    ambient: float
+    @property
+    def ambient(self) -> float:
+        """Ambient (crankcase) pressure [Pa]."""
+        ...
 
     def absolute(self, crank_angle: np.ndarray) -> np.ndarray:
         """Absolute pressure [Pa] at crank angles [rad] (any real values; period 4π)."""
@@ -223,7 +226,8 @@ def read_pressure_trace(path: Path) -> tuple[np.ndarray, np.ndarray]:
     """
     numbers, rows, header = _read_rows(path)
     ia, ip = header["crank_angle_deg"], header["pressure_Pa"]
-    angles, pressures = [], []
+    angles: list[float] = []
+    pressures: list[float] = []
     for line, row in zip(numbers, rows, strict=True):
         if len(row) <= max(ia, ip):
             raise _trace_error(path, line, f"expected {len(header)} columns, got {len(row)}")

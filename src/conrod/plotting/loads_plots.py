@@ -6,9 +6,11 @@ figure; each returns a matplotlib Figure (save it with :func:`save_figure`).
 from __future__ import annotations
 
 import math
+from typing import cast
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.projections.polar import PolarAxes
 
 from conrod.loads.diagrams import polar_diagram_points
 from conrod.loads.engine_loads import EngineLoads
@@ -94,7 +96,7 @@ def wear_diagram_figure(loads: EngineLoads) -> Figure:
     angle, wear = loads.wear()
     hole = loads.oil_hole_angle()
     figure = Figure(figsize=(6.5, 6.5))
-    axes = figure.add_subplot(projection="polar")
+    axes = cast(PolarAxes, figure.add_subplot(projection="polar"))
     axes.set_theta_zero_location("N")  # outward crank radius drawn upwards
     axes.set_theta_direction(1)  # counter-clockwise = direction of rotation
     relative = wear / max(float(wear.max()), 1e-300)
