@@ -110,8 +110,8 @@ def parse_sweep_option(text: str) -> tuple[str, np.ndarray]:
     try:
         numbers = [float(part) for part in parts]
     except ValueError:
-        raise ValueError(f"--sweep {text!r}: values must be numbers "
-                         f"(e.g. {name}=1000:3000:9)") from None
+        raise ValueError(f"--sweep {text!r}: values must be numbers, "
+                         f"{name}=START:STOP:COUNT (e.g. {name}=1000:3000:9)") from None
     if len(numbers) == 1:
         return name, np.array(numbers)
     if len(numbers) != 3 or numbers[2] != int(numbers[2]) or numbers[2] < 1:
