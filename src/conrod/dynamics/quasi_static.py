@@ -91,26 +91,40 @@ def _velocity_solver(problem: OrbitProblem):
 
 
 def _generic_newton(problem: OrbitProblem, scale: float):
+    """Damped Newton (backtracking, step ≤ 10 c ω) with a finite-difference Jacobian."""
     force = problem.force_function()
+
+    def residual(x, y, v, wx, wy, wj, wb):
+        fx, fy = force(x, y, v[0], v[1], wj, wb)
+        return np.array([fx + wx, fy + wy])
 
     def solve(x, y, wx, wy, wj, wb, guess):
         v = np.array(guess, dtype=float)
         load = math.hypot(wx, wy) + 1.0
-        f = np.array(force(x, y, v[0], v[1], wj, wb))
-        residual = f + (wx, wy)
+        r = residual(x, y, v, wx, wy, wj, wb)
+        norm = float(np.hypot(*r))
         for _ in range(NEWTON_ITERATIONS):
-            if np.hypot(*residual) <= 1e-8 * load:
+            if norm <= 1e-8 * load:
                 break
-            delta = 1e-6 * scale
+            delta = 1e-4 * scale
             jac = np.empty((2, 2))
             for i in range(2):
                 dv = v.copy()
                 dv[i] += delta
-                jac[:, i] = (np.array(force(x, y, dv[0], dv[1], wj, wb)) - f) / delta
-            v = v - np.linalg.lstsq(jac, residual, rcond=None)[0]
-            f = np.array(force(x, y, v[0], v[1], wj, wb))
-            residual = f + (wx, wy)
-        return float(v[0]), float(v[1]), float(np.hypot(*residual) / load)
+                jac[:, i] = (residual(x, y, dv, wx, wy, wj, wb) - r) / delta
+            step = -np.linalg.lstsq(jac, r, rcond=None)[0]
+            length = float(np.hypot(*step))
+            if length > 10.0 * scale:
+                step *= 10.0 * scale / length
+            lam = 1.0
+            while True:
+                trial = v + lam * step
+                r_trial = residual(x, y, trial, wx, wy, wj, wb)
+                if np.hypot(*r_trial) < norm or lam < 1e-4:
+                    break
+                lam *= 0.5
+            v, r, norm = trial, r_trial, float(np.hypot(*r_trial))
+        return float(v[0]), float(v[1]), norm / load
 
     return solve
 
