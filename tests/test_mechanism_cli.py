@@ -90,8 +90,9 @@ def test_shipped_example_runs_and_writes_the_contract(tmp_path):
     assert set(summary) >= SUMMARY_KEYS
     assert summary["energy_residual_relative"] < 1e-4
     impacts = read_csv(tmp_path / "impacts.csv")
-    assert list(impacts) == ["crank_angle_deg", "joint", "impact_velocity_m_s"]
-    assert len(impacts["joint"]) == summary["impacts_per_cycle"] > 0
+    assert list(impacts)[:3] == ["crank_angle_deg", "joint", "impact_velocity_m_s"]
+    cycles = summary["cycles_in_statistics"]
+    assert len(impacts["joint"]) == summary["impacts_per_cycle"] * cycles > 0
     assert set(impacts["joint"]) <= {"big_end", "small_end"}
     speeds = np.array(impacts["impact_velocity_m_s"], dtype=float)
     big = speeds[np.array(impacts["joint"]) == "big_end"]

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, ValidationInfo, field_validator
 
 from conrod.cases.base import Section
 
@@ -44,14 +44,14 @@ class JointClearanceSection(Section):
         description="Extra factor on β; seed 003 uses 0.3 at the small end [-]",
     )
 
-    @model_validator(mode="after")
-    def _check_clearances(self) -> JointClearanceSection:
-        if self.clearance_min > self.clearance_max:
-            raise ValueError(
-                f"clearance_min = {self.clearance_min!r} m exceeds clearance_max = "
-                f"{self.clearance_max!r} m (allowed: clearance_min <= clearance_max m)"
-            )
-        return self
+    @field_validator("clearance_min")
+    @classmethod
+    def _not_above_clearance_max(cls, value: float, info: ValidationInfo) -> float:
+        clearance_max = info.data.get("clearance_max")
+        if clearance_max is not None and value > clearance_max:
+            raise ValueError(f"must not exceed clearance_max = {clearance_max!r} m "
+                             "(a worn shell has Δmin <= Δmax)")
+        return value
 
 
 class ClearanceSection(Section):

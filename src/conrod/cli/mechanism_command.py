@@ -1,6 +1,7 @@
 """``conrod mechanism CASE.toml --out DIR [--sweep speed=A:B:N --sweep load=A:B:N]``.
 
-Single run writes ``mechanism.csv`` (last cycle), ``impacts.csv`` (last cycle),
+Single run writes ``mechanism.csv`` (last cycle), ``impacts.csv`` (every cycle but the
+first, which holds the start-up transient),
 ``summary.json`` and the figures ``gaps_and_forces.png``, ``journal_orbits.png``,
 ``impact_velocities.png``. With ``--sweep`` it writes ``sweep.csv``, ``sweep.json``
 (the most informative regime) and ``sweep_map.png``. All files are written atomically
@@ -52,12 +53,14 @@ def mechanism_table(results: MechanismResults) -> dict[str, np.ndarray]:
 
 
 def impacts_table(results: MechanismResults) -> dict[str, np.ndarray]:
-    """Columns of ``impacts.csv`` (last cycle); joint as 0 big end / 1 small end."""
-    impacts = results.last_cycle_impacts()
-    start = (results.cycles - 1) * results.cycle_length
-    return {"crank_angle_deg": np.degrees(impacts.crank_angle - start),
+    """Columns of ``impacts.csv``: every impact of the settled cycles (all but the first),
+    crank angle within its cycle, joint 0 big end / 1 small end, cycle number from 1."""
+    impacts = results.settled_impacts()
+    cycle = np.floor(impacts.crank_angle / results.cycle_length)
+    return {"crank_angle_deg": np.degrees(impacts.crank_angle - cycle * results.cycle_length),
             "joint": np.asarray(impacts.joint, dtype=int),
-            "impact_velocity_m_s": impacts.velocity}
+            "impact_velocity_m_s": impacts.velocity,
+            "cycle": cycle.astype(int) + 1}
 
 
 def write_run_outputs(results: MechanismResults, summary: dict, out: Path) -> None:
@@ -79,10 +82,11 @@ def _write_impacts(path: Path, columns: dict[str, np.ndarray]) -> None:
     """impacts.csv with the joint written by name (big_end / small_end)."""
     from conrod.io.atomic import write_text
 
-    lines = ["crank_angle_deg,joint,impact_velocity_m_s"]
-    for angle, joint, speed in zip(columns["crank_angle_deg"], columns["joint"],
-                                   columns["impact_velocity_m_s"], strict=True):
-        lines.append(f"{angle:.6f},{JOINT_NAMES[int(joint)]},{speed:.9g}")
+    lines = ["crank_angle_deg,joint,impact_velocity_m_s,cycle"]
+    for angle, joint, speed, cycle in zip(columns["crank_angle_deg"], columns["joint"],
+                                          columns["impact_velocity_m_s"], columns["cycle"],
+                                          strict=True):
+        lines.append(f"{angle:.6f},{JOINT_NAMES[int(joint)]},{speed:.9g},{cycle}")
     write_text(path, "\n".join(lines) + "\n")
 
 

@@ -79,19 +79,44 @@ class MechanismResults:
         return self.crank_angle >= start - 1e-12
 
     def last_cycle_impacts(self) -> Impacts:
-        """Impacts of the last cycle (the first one holds the start-up transient)."""
+        """Impacts of the last cycle."""
         return self.impacts.after((self.cycles - 1) * self.cycle_length)
 
+    @property
+    def statistics_cycles(self) -> int:
+        """Cycles whose impacts enter the statistics: all but the first (start-up
+        transient from the seed's approximate initial state) when more than one [-]."""
+        return max(self.cycles - 1, 1)
+
+    def settled_impacts(self) -> Impacts:
+        """Impacts of the last :attr:`statistics_cycles` cycles."""
+        return self.impacts.after((self.cycles - self.statistics_cycles) * self.cycle_length)
+
+    def cycle_to_cycle_change(self) -> float | None:
+        """Largest change of either joint's gap between the last two cycles [m] (periodicity
+        indicator; None for a single cycle)."""
+        if self.cycles < 2:
+            return None
+        last = self.last_cycle()
+        start = (self.cycles - 2) * self.cycle_length
+        previous = (self.crank_angle >= start - 1e-12) & (
+            self.crank_angle <= start + self.cycle_length + 1e-12)
+        if np.count_nonzero(previous) != np.count_nonzero(last):
+            return None
+        return float(np.max(np.abs(self.gap[:, last] - self.gap[:, previous])))
+
     def summary(self) -> dict:
-        """Per-run numbers for ``summary.json`` (last cycle; SI units in the key names)."""
-        impacts = self.last_cycle_impacts()
-        out: dict = {"cycles_integrated": self.cycles,
-                     "impacts_per_cycle": int(impacts.velocity.size)}
+        """Per-run numbers for ``summary.json`` (impacts over :attr:`statistics_cycles`,
+        forces and piston deviation over the last cycle; SI units in the key names)."""
+        impacts = self.settled_impacts()
+        cycles = self.statistics_cycles
+        out: dict = {"cycles_integrated": self.cycles, "cycles_in_statistics": cycles,
+                     "impacts_per_cycle": impacts.velocity.size / cycles}
         for index, name in enumerate(JOINT_NAMES):
             speeds = impacts.of_joint(index)
             out[f"max_impact_velocity_{name}_m_s"] = float(speeds.max()) if speeds.size else 0.0
             out[f"mean_impact_velocity_{name}_m_s"] = float(speeds.mean()) if speeds.size else 0.0
-            out[f"impacts_per_cycle_{name}"] = int(speeds.size)
+            out[f"impacts_per_cycle_{name}"] = speeds.size / cycles
             out[f"max_contact_force_{name}_N"] = float(self.contact_force[index].max())
         residual = float(np.max(np.abs(self.energy_residual)))
         out["energy_residual_max_J"] = residual
@@ -99,6 +124,7 @@ class MechanismResults:
         mask = self.last_cycle()
         deviation = self.piston_position[mask] - self.piston_position_rigid[mask]
         out["piston_deviation_from_rigid_max_m"] = float(np.max(np.abs(deviation)))
+        out["cycle_to_cycle_gap_change_m"] = self.cycle_to_cycle_change()
         out["integrator_steps"] = self.steps
         out["integrator_rejected_steps"] = self.rejected_steps
         return out

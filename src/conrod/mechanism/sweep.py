@@ -31,7 +31,7 @@ class SweepResults:
 
     speed_rpm : ndarray  Crank speed [rpm]; load_scale : ndarray  Gas-force factor [-].
     max_velocity, mean_velocity : ndarray  (2, n) per joint (big, small) [m/s].
-    impacts : ndarray  (2, n) impacts per cycle per joint [-].
+    impacts : ndarray  (2, n) impacts per cycle per joint (mean over the settled cycles) [-].
     worn_joint : int  0 big end, 1 small end.
     """
 
@@ -80,13 +80,14 @@ def run_sweep(
     pairs = [(speed, load) for speed in speeds_rpm for load in load_scales]
     max_v = np.zeros((2, len(pairs)))
     mean_v = np.zeros((2, len(pairs)))
-    counts = np.zeros((2, len(pairs)), dtype=int)
+    counts = np.zeros((2, len(pairs)))
     for index, (speed, load) in enumerate(pairs):
         run = base.with_operating_point(speed, load)
-        impacts = simulate(run.mechanism, run.scaled_gas_table(), run.settings).last_cycle_impacts()
+        results = simulate(run.mechanism, run.scaled_gas_table(), run.settings)
+        impacts = results.settled_impacts()
         for joint in range(2):
             speeds = impacts.of_joint(joint)
-            counts[joint, index] = speeds.size
+            counts[joint, index] = speeds.size / results.statistics_cycles
             max_v[joint, index] = speeds.max() if speeds.size else 0.0
             mean_v[joint, index] = speeds.mean() if speeds.size else 0.0
         if progress is not None:

@@ -13,13 +13,13 @@ UM = 1.0e6
 
 
 def _cycle_degrees(results: MechanismResults, angles: np.ndarray) -> np.ndarray:
-    return np.degrees(angles - (results.cycles - 1) * results.cycle_length)
+    return np.degrees(np.mod(angles, results.cycle_length))
 
 
 def plot_gaps_and_forces(results: MechanismResults) -> Figure:
     """Gap −δ [µm] and contact force [kN] of both joints, piston deviation [µm], last cycle."""
     mask = results.last_cycle()
-    angle = _cycle_degrees(results, results.crank_angle[mask])
+    angle = np.degrees(results.crank_angle[mask] - (results.cycles - 1) * results.cycle_length)
     figure = Figure(figsize=(8.0, 8.0))
     axes = figure.subplots(3, 1, sharex=True)
     for index, name in enumerate(JOINT_NAMES):
@@ -62,8 +62,8 @@ def plot_journal_orbits(results: MechanismResults) -> Figure:
 
 
 def plot_impacts(results: MechanismResults) -> Figure:
-    """Impact velocity at every contact entry vs crank angle, last cycle."""
-    impacts = results.last_cycle_impacts()
+    """Impact velocity at every contact entry vs crank angle in its cycle (settled cycles)."""
+    impacts = results.settled_impacts()
     figure = Figure(figsize=(8.0, 3.8))
     ax = figure.subplots()
     for index, name in enumerate(JOINT_NAMES):
