@@ -19,10 +19,15 @@ KN = 1.0e-3
 
 
 def _label_angles(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, every: float) -> None:
-    """Mark and label the points at multiples of ``every`` degrees of crank angle."""
+    """Mark the points at multiples of ``every`` degrees; label those not crowding others."""
     marks = np.isclose(np.mod(angle_deg + 1e-9, every), 0.0, atol=1e-6)
     axes.plot(x[marks], y[marks], "o", ms=3, color="k")
+    span = max(float(np.ptp(x)), float(np.ptp(y)), 1e-300)
+    placed: list[tuple[float, float]] = [(0.0, 0.0)]  # keep the pole O readable
     for xi, yi, ai in zip(x[marks], y[marks], angle_deg[marks], strict=True):
+        if min(math.hypot(xi - px, yi - py) for px, py in placed) < 0.05 * span:
+            continue
+        placed.append((float(xi), float(yi)))
         axes.annotate(f"{ai:.0f}°", (xi, yi), textcoords="offset points", xytext=(4, 3), fontsize=7)
 
 
@@ -31,8 +36,8 @@ def polar_load_diagram(loads: EngineLoads) -> Figure:
     tangential, outward, pole_shift = polar_diagram_points(
         loads.radial_force, loads.tangential_force, loads.rotating_inertia_force
     )
-    figure = Figure(figsize=(7.0, 7.0))
-    axes = figure.add_subplot()
+    figure = Figure(figsize=(13.0, 6.5))
+    axes, zoom = figure.subplots(1, 2, gridspec_kw={"width_ratios": [1.0, 0.8]})
     axes.plot(
         np.append(tangential, tangential[0]) * KN,
         np.append(outward, outward[0]) * KN,
@@ -62,9 +67,36 @@ def polar_load_diagram(loads: EngineLoads) -> Figure:
         f"K_R = {-loads.rotating_inertia_force * KN:.2f} kN outward",
         fontsize=10,
     )
-    axes.legend(loc="best", fontsize=8)
+    axes.legend(loc="upper right", fontsize=8)
     axes.grid(True, lw=0.3)
+    _zoom_on_low_loads(zoom, tangential * KN, outward * KN, loads.crank_angle_deg, pole_shift)
     return figure
+
+
+def _zoom_on_low_loads(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, pole) -> None:
+    """Zoom on the gas-exchange part of the diagram (within the 75th percentile of |S|)."""
+    radius = np.hypot(x, y)
+    extent = 1.3 * float(np.percentile(radius, 75.0))
+    near = radius <= extent
+    axes.plot(np.append(x, x[0]), np.append(y, y[0]), lw=1.0, color="C0")
+    _label_angles(axes, np.where(near, x, np.nan), np.where(near, y, np.nan), angle_deg, 30.0)
+    axes.plot(0.0, 0.0, "s", color="C3")
+    axes.annotate("O", (0.0, 0.0), xytext=(-12, -4), textcoords="offset points", color="C3")
+    axes.plot(pole[0] * KN, pole[1] * KN, "D", color="C2")
+    axes.annotate(
+        "O'",
+        (pole[0] * KN, pole[1] * KN),
+        xytext=(-14, -10),
+        textcoords="offset points",
+        color="C2",
+    )
+    axes.set_xlim(-extent, extent)
+    axes.set_ylim(-extent, extent)
+    axes.set_aspect("equal")
+    axes.set_title("zoom on the low loads", fontsize=10)
+    axes.set_xlabel("T [kN]")
+    axes.set_ylabel("radial force of S, outward + [kN]")
+    axes.grid(True, lw=0.3)
 
 
 def load_vs_crank_angle(loads: EngineLoads) -> Figure:
