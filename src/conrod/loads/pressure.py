@@ -290,7 +290,7 @@ def pressure_from_trace(path: Path, ambient: float = DEFAULT_AMBIENT) -> TracePr
 
 def build_pressure(case: Case) -> CylinderPressure:
     """Cylinder pressure of ``case``: ``[engine] pressure_trace`` or ``[engine.pressure_model]``."""
-    case.require("loads", "engine")
+    case.require("cylinder pressure", "engine")
     engine = case.engine
     assert engine is not None
     if engine.pressure_trace is not None:
