@@ -43,7 +43,7 @@ def plot_gaps_and_forces(results: MechanismResults) -> Figure:
 def plot_journal_orbits(results: MechanismResults) -> Figure:
     """Journal centre relative to the shell centre in the rod frame, with the worn outline."""
     mask = results.last_cycle()
-    figure = Figure(figsize=(9.0, 4.5))
+    figure = Figure(figsize=(9.0, 4.8), layout="constrained")
     axes = figure.subplots(1, 2)
     for index, name in enumerate(JOINT_NAMES):
         ax = axes[index]
@@ -83,7 +83,7 @@ def plot_impacts(results: MechanismResults) -> Figure:
 
 def plot_sweep_map(sweep: SweepResults) -> Figure:
     """Max impact velocity of each joint and the ratio κ over speed × load; best marked."""
-    figure = Figure(figsize=(13.0, 4.2))
+    figure = Figure(figsize=(14.0, 4.4), layout="constrained")
     axes = figure.subplots(1, 3)
     panels = [(sweep.max_velocity[0], "max impact velocity, big end [m/s]"),
               (sweep.max_velocity[1], "max impact velocity, small end [m/s]"),
@@ -98,5 +98,5 @@ def plot_sweep_map(sweep: SweepResults) -> Figure:
         ax.set_xlabel("crank speed [rpm]")
         ax.set_ylabel("load (gas pressure scale) [-]")
         ax.grid(alpha=0.3)
-    axes[2].legend(loc="best", fontsize=8)
+    figure.legend(*axes[2].get_legend_handles_labels(), loc="outside lower center", fontsize=8)
     return figure
