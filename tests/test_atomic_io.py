@@ -35,3 +35,8 @@ def test_json_refuses_nan(tmp_path):
 def test_csv_refuses_ragged_columns(tmp_path):
     with pytest.raises(ValueError, match="equal length"):
         write_csv(tmp_path / "x.csv", {"a": np.zeros(2), "b": np.zeros(3)})
+
+
+def test_result_files_are_world_readable(tmp_path):
+    target = write_json(tmp_path / "s.json", {"a": 1})
+    assert target.stat().st_mode & 0o777 == 0o644

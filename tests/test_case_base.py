@@ -64,3 +64,11 @@ def test_require_reports_the_missing_sections():
     case = Case.from_dict({})
     with pytest.raises(CaseError, match=r"lacks the section\(s\) \[bearing\], \[lubricant\]"):
         case.require("run", "bearing", "lubricant")
+
+
+def test_cross_field_error_is_one_clean_line():
+    with pytest.raises(CaseError) as info:
+        Case.from_dict({"engine": {**ENGINE, "rod_length": 0.04}})
+    message = str(info.value)
+    assert message.startswith("engine.rod_length = 0.04 m must exceed the crank radius")
+    assert "Value error" not in message and "{" not in message

@@ -89,9 +89,12 @@ def _describe(root: type[BaseModel], error: Any, prefix: str) -> str:
     if kind == "missing":
         unit = field_unit(model, name)
         return f"{dotted}: required field is missing" + (f" [{unit}]" if unit else "")
+    text = str(error["msg"]).removeprefix("Value error, ")
+    if isinstance(value, dict):  # a section-level (cross-field) check: its text says it all
+        return text
     unit = field_unit(model, name)
     allowed = field_range(model, name)
-    message = f"{dotted} = {value!r}: {error['msg']}"
+    message = f"{dotted} = {value!r}: {text}"
     if allowed:
         message += f" (allowed: {allowed}" + (f" {unit}" if unit else "") + ")"
     elif unit:

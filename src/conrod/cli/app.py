@@ -29,6 +29,11 @@ COMMAND_MODULES = ("loads", "steady", "run", "mechanism")
 F = TypeVar("F", bound=Callable[..., Any])
 
 
+@app.callback()
+def _root() -> None:
+    """Connecting-rod bearing dynamics (keeps sub-commands a group even if only one exists)."""
+
+
 def exits_cleanly(command: F) -> F:
     """Decorator: turn conrod's own errors into one stderr line and an exit code."""
 
