@@ -71,6 +71,8 @@ def gas_force_table(case: Case, points: int = GAS_TABLE_POINTS) -> np.ndarray:
     from conrod.loads.pressure import build_pressure  # loads layer (issue 2)
 
     angles = np.arange(points) * (CYCLE / points)
+    case.require("mechanism", "engine")
+    assert case.engine is not None
     area = math.pi * case.engine.bore**2 / 4.0
     return area * np.asarray(build_pressure(case).gauge(angles), dtype=float)
 
@@ -79,6 +81,7 @@ def mechanism_case(case: Case) -> MechanismCase:
     """Validate that the case has ``[engine]`` and ``[clearance]`` and build the run."""
     case.require("mechanism", "engine", "clearance")
     engine, clearance = case.engine, case.clearance
+    assert engine is not None and clearance is not None  # checked by require()
     inertia = engine.rod_inertia
     if inertia is None:
         inertia = ROD_INERTIA_FACTOR * engine.rod_mass * engine.rod_length**2

@@ -12,7 +12,7 @@ is compiled, ≈ 0.1–1 s per run).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 import numpy as np
@@ -73,11 +73,12 @@ class SweepResults:
 
 
 def run_sweep(
-    base: MechanismCase, speeds_rpm: Sequence[float], load_scales: Sequence[float],
+    base: MechanismCase, speeds_rpm: Iterable[float], load_scales: Iterable[float],
     progress: Callable[[int, int], None] | None = None,
 ) -> SweepResults:
     """Run every (speed, load) pair, speed varying slowest; ``progress(done, total)``."""
-    pairs = [(speed, load) for speed in speeds_rpm for load in load_scales]
+    loads = [float(load) for load in load_scales]
+    pairs = [(float(speed), load) for speed in speeds_rpm for load in loads]
     max_v = np.zeros((2, len(pairs)))
     mean_v = np.zeros((2, len(pairs)))
     counts = np.zeros((2, len(pairs)))
