@@ -75,15 +75,15 @@ class _Phases:
         tangential = -ax * math.sin(w[0]) + ay * math.cos(w[0])
         return np.array([w[1] * self.c / self.rc, tangential / (self.c * self.omega**2)])
 
-    def normal_force(self, phi: float, w: np.ndarray) -> float:
-        """Unclamped contact force P_c [N] in the contact phase."""
+    def normal_force(self, phi: float, w: np.ndarray, with_sign: bool = False):
+        """Unclamped contact force P_c [N] in the contact phase (and the sliding sign s)."""
         x, y, vx, vy = self.on_circle(w)
         big_x, big_y, surface = self.forces(phi, x, y, vx, vy)
-        p_c, _ = contact_normal_force(
+        p_c, s = contact_normal_force(
             x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
             self.p.dry_friction, self.rc, surface,
         )
-        return p_c
+        return (p_c, s) if with_sign else p_c
 
     def leave(self, phi: float, w: np.ndarray) -> float:
         return self.normal_force(phi, w) / self.force_scale
@@ -172,5 +172,6 @@ def _record(phases: _Phases, sol, phi_out, mask, table, contact: bool) -> None:
             table[i] = (u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, 0.0, 0.0, 0.0)
             continue
         x, y, vx, vy = phases.on_circle(u)
-        p_c = max(phases.normal_force(phi_out[i], u), 0.0)
-        table[i] = (x, y, vx, vy, p_c, phases.p.dry_friction * p_c, 1.0)
+        p_c, s = phases.normal_force(phi_out[i], u, with_sign=True)
+        p_c = max(p_c, 0.0)
+        table[i] = (x, y, vx, vy, p_c, phases.p.dry_friction * p_c * abs(s), 1.0)

@@ -21,6 +21,11 @@ and unequal masses M = diag(m_x, m_y): with the constraint n̂·ë = −V_k²/r_
           \\qquad s = \\operatorname{sign}(V_s),
 
 which is the seed's P_c = P_n for equal masses and slow sliding of the centre.
+
+The sign of the sliding speed is regularised, s = tanh(V_s/v_reg) with
+v_reg = :data:`FRICTION_REGULARISATION_SPEED`, so that a journal pressed without rotation
+sticks (V_s → 0) instead of chattering between ±μ_dry P_c; for sliding speeds of engine
+bearings (ω R ~ m/s) s = ±1 to machine precision.
 """
 
 from __future__ import annotations
@@ -28,6 +33,9 @@ from __future__ import annotations
 import math
 
 import numba as nb
+
+FRICTION_REGULARISATION_SPEED = 1.0e-4
+"""Sliding speed below which dry friction is regularised (tanh) [m/s]."""
 
 
 @nb.njit(cache=True)
@@ -57,14 +65,13 @@ def contact_normal_force(
     mass_x: float, mass_y: float, dry_friction: float, radius: float, surface_speed: float,
 ) -> tuple[float, float]:
     """Unclamped normal force P_c [N] needed to keep the journal on the contact circle, and
-    the sign s of the sliding speed [-] (module docstring; seed eq. 4.2.5 for equal masses).
+    the regularised sign s of the sliding speed [-] (module docstring; seed eq. 4.2.5).
     P_c ≤ 0 means the journal leaves the shell."""
     e = math.hypot(x, y)
     nx = x / e
     ny = y / e
     v_k = vy * nx - vx * ny
-    sliding = v_k + surface_speed
-    s = 1.0 if sliding > 0.0 else (-1.0 if sliding < 0.0 else 0.0)
+    s = math.tanh((v_k + surface_speed) / FRICTION_REGULARISATION_SPEED)
     n_mn = nx * nx / mass_x + ny * ny / mass_y
     n_mt = -nx * ny / mass_x + ny * nx / mass_y
     accel_n = nx * force_x / mass_x + ny * force_y / mass_y
@@ -77,7 +84,7 @@ def contact_acceleration(
     mass_x: float, mass_y: float, dry_friction: float, radius: float,
     surface_speed: float, in_contact: bool,
 ) -> tuple[float, float, float, float]:
-    """Acceleration (a_x, a_y) [m/s²], contact force P_c [N] and friction force [N].
+    """Acceleration (a_x, a_y) [m/s²], contact force P_c [N] and friction force μ P_c |s| [N].
 
     ``force_x, force_y``: X = W + F, every force on the journal but contact [N];
     ``surface_speed``: (ω_j − ω_b) R [m/s]. Free motion (a = M⁻¹X, P_c = 0) unless
@@ -96,7 +103,7 @@ def contact_acceleration(
         return ax, ay, 0.0, 0.0
     nx = x / e
     ny = y / e
-    p_f = dry_friction * p_c
-    fx = force_x - p_c * nx + s * p_f * ny
-    fy = force_y - p_c * ny - s * p_f * nx
+    p_f = dry_friction * p_c * abs(s)
+    fx = force_x - p_c * nx + s * dry_friction * p_c * ny
+    fy = force_y - p_c * ny - s * dry_friction * p_c * nx
     return fx / mass_x, fy / mass_y, p_c, p_f

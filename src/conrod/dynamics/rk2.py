@@ -14,11 +14,7 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import (
-    contact_acceleration,
-    project_onto_circle,
-    remove_normal_velocity,
-)
+from conrod.dynamics.contact import contact_acceleration
 from conrod.dynamics.problem import OrbitProblem, OrbitState
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import CaseError, ConvergenceError
@@ -26,13 +22,20 @@ from conrod.film.short_bearing_kernel import short_bearing_force
 
 
 @nb.njit(cache=True)
-def _settle_contact(x, y, vx, vy, radius):
-    """Projection + normal-velocity removal after a step; returns state and contact flag."""
-    x, y, projected = project_onto_circle(x, y, radius)
-    if projected or math.hypot(x, y) >= radius * (1.0 - 1e-12):
-        e = math.hypot(x, y)
-        if (x * vx + y * vy) / e > 0.0:
-            vx, vy = remove_normal_velocity(x, y, vx, vy)
+def _settle_contact(x, y, vx, vy, radius, pressing):
+    """Contact bookkeeping after a step (seed eqs 4.1.1–4.1.8); returns state and flag.
+
+    Beyond the circle: project and remove the outward normal velocity (plastic impact).
+    While the journal was pressing on the shell (P_c > 0 at the step start) it stays on
+    the circle: project and remove any normal velocity. Otherwise it is free.
+    """
+    e = math.hypot(x, y)
+    if e > radius or (pressing and e > 0.0):
+        nx, ny = x / e, y / e
+        x, y = radius * nx, radius * ny
+        v_n = vx * nx + vy * ny
+        if pressing or v_n > 0.0:
+            vx, vy = vx - v_n * nx, vy - v_n * ny
         return x, y, vx, vy, True
     return x, y, vx, vy, False
 
@@ -72,7 +75,7 @@ def rk2_short_bearing_cycle(
         )
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
-        x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, contact_radius)
+        x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, contact_radius, pc > 0.0)
     return out, np.array([x, y, vx, vy, 1.0 if contact else 0.0])
 
 
@@ -139,5 +142,5 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every)
         ax2, ay2, _, _ = acceleration(k + 1, xp, yp, vxp, vyp)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
-        x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius)
+        x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius, pc > 0.0)
     return out, np.array([x, y, vx, vy, float(contact)])
