@@ -78,7 +78,7 @@ class MassConservingFilm:
         (the grid of :class:`~conrod.film.characteristics.FilmGrid`, as ReynoldsFilm).
     tolerance : float  Relative max pressure change per sweep that stops SOR [-].
     max_iterations : int  Sweep limit; exceeding it raises ConvergenceError [-].
-    omega : float  SOR relaxation factor [-].
+    omega : float or None  SOR factor [-]; None = ReynoldsFilm's ``optimal_relaxation``.
     friction : 'film_fraction' | 'full_film'  Couette shear scaled by ϑ (physical JFO)
         or over the full 360° (Raimondi & Boyd's convention).
     """
@@ -88,7 +88,7 @@ class MassConservingFilm:
     n_z: int = 32
     tolerance: float = 1.0e-7
     max_iterations: int = 20000
-    omega: float = 1.85
+    omega: float | None = None
     friction: Literal["film_fraction", "full_film"] = "film_fraction"
     name: str = "mass_conserving"
     last_iterations: int = field(default=0, init=False)
@@ -101,6 +101,10 @@ class MassConservingFilm:
             )
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
+        if self.omega is None:
+            from conrod.film.reynolds import optimal_relaxation
+
+            self.omega = optimal_relaxation(self.film_grid)
 
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
         """θ nodes [rad] (periodic, no duplicate of 2π) and z nodes [m] (edges included)."""
@@ -126,6 +130,9 @@ class MassConservingFilm:
         mu = state.viscosity
         h = film_thickness(g, state.eccentricity_x, state.eccentricity_y, theta, state.deformation)
         h = np.broadcast_to(h[:, None] if h.ndim == 1 else h, (self.n_theta, self.n_z + 1))
+        if not float(h.min()) > 0.0:
+            raise CaseError(f"film thickness min = {float(h.min()):.3g} m: out of range "
+                            "(allowed: > 0 m); the journal touches the shell")
         h_east = 0.5 * (h + np.roll(h, -1, axis=0))
         h_north = np.empty_like(h)
         h_north[:, :-1] = 0.5 * (h[:, 1:] + h[:, :-1])
