@@ -43,6 +43,11 @@ E1, E3, E4, E5, E6, E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253
                           22.0 / 525.0, -1.0 / 40.0)
 
 OK, TOO_MANY_STEPS, STEP_TOO_SMALL, NOT_FINITE = 0, 1, 2, 3
+ALIGN_BELOW, MIN_ALIGNED_STEP, LAND_PAST = 0.98, 1e-9, 1e-6
+"""A step in which a joint enters or leaves contact before this fraction is redone to end
+just (LAND_PAST relative) past the switch, unless that step would be shorter than
+MIN_ALIGNED_STEP [rad]: the Runge–Kutta stages then never straddle the kink of the
+contact law, which keeps the method's order and saves rejected steps."""
 """Status codes returned by :func:`integrate`."""
 
 
@@ -71,17 +76,29 @@ def hermite(y0, f0, y1, f1, h, s):
 
 
 @njit(cache=True)
-def locate_entry(y0, f0, y1, f1, alpha, h, p, joint):
-    """Fraction s ∈ (0, 1] of the step where δ_joint crosses 0 upwards (bisection)."""
+def locate_switch(y0, f0, y1, f1, alpha, h, p, joint):
+    """Fraction s ∈ (0, 1] of the step where the contact state of ``joint`` (δ > 0 or not)
+    first differs from its state at the step start (bisection on the interpolant)."""
+    start_in_contact = penetrations(y0, alpha, p)[joint] > 0.0
     low, high = 0.0, 1.0
     for _ in range(60):
         middle = 0.5 * (low + high)
         depth = penetrations(hermite(y0, f0, y1, f1, h, middle), alpha + middle * h, p)[joint]
-        if depth > 0.0:
+        if (depth > 0.0) != start_in_contact:
             high = middle
         else:
             low = middle
     return high
+
+
+@njit(cache=True)
+def first_switch(y0, f0, y1, f1, alpha, h, p, depth, new_depth):
+    """Earliest fraction of the step where a joint enters or leaves contact (2 if none)."""
+    first = 2.0
+    for joint in range(2):
+        if (depth[joint] > 0.0) != (new_depth[joint] > 0.0):
+            first = min(first, locate_switch(y0, f0, y1, f1, alpha, h, p, joint))
+    return first
 
 
 @njit(cache=True)
@@ -108,6 +125,7 @@ def integrate(y0, alpha0, alpha_end, p, table, scale, h_first, h_max, adaptive,
     depth = penetrations(y, alpha, p)
     armed = np.array([depth[0] < -separation[0], depth[1] < -separation[1]])
     next_out = 0
+    landing = False
     while next_out < out_alpha.shape[0] and out_alpha[next_out] < alpha0:
         next_out += 1
     while alpha < alpha_end:
@@ -127,15 +145,23 @@ def integrate(y0, alpha0, alpha_end, p, table, scale, h_first, h_max, adaptive,
         if err > 1.0:
             n_rejected += 1
             h *= max(0.2, 0.9 * err ** -0.2)
+            landing = False
             if h < 1e-14:
                 status = STEP_TOO_SMALL
                 break
             continue
-        n_steps += 1
         new_depth = penetrations(y_new, alpha + h, p)
+        if adaptive and not landing:
+            switch = first_switch(y, f, y_new, f_new, alpha, h, p, depth, new_depth)
+            if switch < ALIGN_BELOW and switch * h > MIN_ALIGNED_STEP:
+                h = switch * h * (1.0 + LAND_PAST)  # end the step just past the switch
+                landing = True
+                continue
+        landing = False
+        n_steps += 1
         for joint in range(2):
             if armed[joint] and depth[joint] <= 0.0 < new_depth[joint]:
-                s = locate_entry(y, f, y_new, f_new, alpha, h, p, joint)
+                s = locate_switch(y, f, y_new, f_new, alpha, h, p, joint)
                 y_hit = hermite(y, f, y_new, f_new, h, s)
                 if n_impacts < max_impacts:
                     impacts[n_impacts, 0] = alpha + s * h
