@@ -186,22 +186,30 @@ class MassConservingFilm:
 
     # ---------------------------------------------------------------------- steady
     def solve_steady(
-        self, state: FilmState, *, with_pressure: bool = False, cavitation: str = "jfo"
+        self, state: FilmState, *, with_pressure: bool = False, cavitation: str = "jfo",
+        inlet_line: bool = True,
     ) -> FilmResult:
         """Steady film under Raimondi & Boyd's full-bearing conditions.
 
         A full-film ambient-pressure inlet line sits at the maximum gap θ = ψ + π
         (nearest grid column). ``cavitation='jfo'`` solves the steady Elrod–Adams problem;
         ``'swift_stieber'`` the Reynolds problem with the same inlet (for comparison).
+        ``inlet_line=False`` drops the inlet line: oil then enters only through the
+        geometry's grooves and feed holes (a fed, possibly starved, bearing).
         ``extra['film_end_angle_rad']`` [rad] is where the film first ruptures downstream of
         the peak pressure; the film fraction is kept in ``self.last_film_fraction``.
         """
+        if not (inlet_line or self.geometry.grooves or self.geometry.feed_holes):
+            raise CaseError("steady mass-conserving film without inlet line, grooves or feed "
+                            "holes: oil only leaves through the edges, so no loaded steady "
+                            "state exists (allowed: inlet_line=True or a supply feature)")
         f = self.fields(state)
         theta, _ = self.grid()
         psi = math.atan2(state.eccentricity_y, state.eccentricity_x)
         inlet = nearest_theta_index(psi + math.pi, self.film_grid)
-        f.supply[inlet, 1:-1] = True
-        f.fixed_pressure[inlet, :] = -self.geometry.cavitation_pressure
+        if inlet_line:
+            f.supply[inlet, 1:-1] = True
+            f.fixed_pressure[inlet, :] = -self.geometry.cavitation_pressure
         fraction = np.ones_like(f.h)
         pressure = self._start_pressure(f, fraction)
         if cavitation == "jfo":
