@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from conrod.errors import CaseError, ConvergenceError
-from conrod.film.base import BearingGeometry, FilmModel, FilmState
+from conrod.film.base import BearingGeometry, FeedHole, FilmModel, FilmState
 from conrod.film.long_bearing import (
     gumbel_long_force,
     long_squeeze_force,
@@ -207,3 +207,15 @@ def test_bad_inputs_raise_readable_errors():
     stingy = ReynoldsFilm(geometry(1.0), n_theta=36, n_z=8, max_iterations=3)
     with pytest.raises(ConvergenceError, match="sweeps"):
         stingy.force(FilmState(0.5 * C, 0.0, journal_speed=OMEGA, viscosity=MU))
+
+
+def test_multigrid_and_sor_agree():
+    """Two independent solvers of the same discrete problem (with cavitation)."""
+    state = FilmState(0.7 * C, -0.2 * C, velocity_x=1e-3, journal_speed=OMEGA, viscosity=MU)
+    g = geometry(0.5, feed_holes=(FeedHole(angle=1.0, diameter=0.01),), supply_pressure=1e5)
+    multigrid = ReynoldsFilm(g, n_theta=72, n_z=16, tolerance=1e-10).solve(state)
+    sor = ReynoldsFilm(g, n_theta=72, n_z=16, tolerance=1e-10, method="sor").solve(state)
+    assert multigrid.extra["multigrid"] == 1.0 and sor.extra["multigrid"] == 0.0
+    assert multigrid.force_x == pytest.approx(sor.force_x, rel=1e-7)
+    assert multigrid.force_y == pytest.approx(sor.force_y, rel=1e-7)
+    assert multigrid.side_flow == pytest.approx(sor.side_flow, rel=1e-6)

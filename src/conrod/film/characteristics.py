@@ -83,11 +83,18 @@ class FilmGrid:
         return float(np.sum(field.sum(axis=0) * self.axial_weights) * self.radius * self.d_theta)
 
 
-def pressure_force(pressure: np.ndarray, grid: FilmGrid) -> tuple[float, float]:
-    """Film force on the journal F = −∫∫ p (cos θ, sin θ) R dθ dz [N]."""
-    cos_t = np.cos(grid.theta)[:, None]
-    sin_t = np.sin(grid.theta)[:, None]
-    return -grid.integrate(pressure * cos_t), -grid.integrate(pressure * sin_t)
+def force_weights(grid: FilmGrid) -> tuple[np.ndarray, np.ndarray]:
+    """Quadrature weights (w_x, w_y) with F = −(Σ p w_x, Σ p w_y) [m^2]."""
+    area = grid.area_weights
+    return np.cos(grid.theta)[:, None] * area, np.sin(grid.theta)[:, None] * area
+
+
+def pressure_force(pressure: np.ndarray, grid: FilmGrid,
+                   weights: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[float, float]:
+    """Film force on the journal F = −∫∫ p (cos θ, sin θ) R dθ dz [N]
+    (``weights`` from :func:`force_weights` to save recomputing them)."""
+    w_x, w_y = weights if weights is not None else force_weights(grid)
+    return -float(np.vdot(pressure, w_x)), -float(np.vdot(pressure, w_y))
 
 
 def theta_derivative(field: np.ndarray, grid: FilmGrid) -> np.ndarray:

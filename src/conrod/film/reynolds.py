@@ -26,11 +26,13 @@ import numpy as np
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film import characteristics as chars
 from conrod.film import reynolds_kernel as kernel
+from conrod.film import reynolds_multigrid as multigrid
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.characteristics import FilmGrid
 from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
 
 FrictionConvention = Literal["full_film", "film_fraction"]
+SolverMethod = Literal["multigrid", "sor"]
 
 
 def optimal_relaxation(grid: FilmGrid) -> float:
@@ -70,10 +72,14 @@ class ReynoldsFilm:
     geometry : BearingGeometry  Geometry and oil supply.
     n_theta : int  Circumferential intervals (= nodes, periodic) [-].
     n_z : int  Axial intervals; the grid has n_z + 1 axial nodes including the edges [-].
-    tolerance : float  SOR stops when max|Δp| ≤ tolerance·max|p| in one sweep [-].
-    max_iterations : int  Sweep limit per grid level; beyond it ConvergenceError [-].
+    tolerance : float  Stop when max|Δp| ≤ tolerance·max|p| over one multigrid cycle
+        (one sweep for SOR) [-].
+    max_iterations : int  Cycle (SOR: sweep) limit per grid level; beyond it
+        ConvergenceError [-].
     friction : 'full_film' (Raimondi–Boyd 360° Couette) or 'film_fraction'.
     ambient_line_at_max_gap : bool  Hold p = 0 on the axial line at θ = ψ + π.
+    method : 'multigrid' (projected multigrid, :mod:`reynolds_multigrid`, default) or
+        'sor' (projected SOR, kept for comparison).
     relaxation : float or None  SOR factor ω [-]; None = :func:`optimal_relaxation`.
     warm_start : bool  Start from the last converged field when available.
     """
@@ -83,6 +89,7 @@ class ReynoldsFilm:
     n_z: int = 32
     tolerance: float = 1.0e-7
     max_iterations: int = 20000
+    method: SolverMethod = "multigrid"
     friction: FrictionConvention = "full_film"
     ambient_line_at_max_gap: bool = False
     relaxation: float | None = None
@@ -95,6 +102,8 @@ class ReynoldsFilm:
             raise CaseError(f"n_theta = {self.n_theta}: out of range (allowed: even, >= 8)")
         if self.n_z < 2 or self.n_z % 2:
             raise CaseError(f"n_z = {self.n_z}: out of range (allowed: even, >= 2)")
+        if self.method not in ("multigrid", "sor"):
+            raise CaseError(f"method = {self.method!r}: allowed 'multigrid' or 'sor'")
         if self.friction not in ("full_film", "film_fraction"):
             raise CaseError(
                 f"friction = {self.friction!r}: allowed 'full_film' or 'film_fraction'"
@@ -105,6 +114,7 @@ class ReynoldsFilm:
         self._sin = np.sin(self.film_grid.theta)[:, None]
         self._supply = supply_mask(g, self.film_grid)
         self._edges = edge_mask(self.film_grid)
+        self._force_weights = chars.force_weights(self.film_grid)
 
     # ----------------------------------------------------------------- interface
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
@@ -123,7 +133,7 @@ class ReynoldsFilm:
         """Film force on the journal (F_x, F_y) [N]."""
         problem = self._problem(state)
         pressure, _ = self._solve_pressure(problem, state)
-        return chars.pressure_force(pressure, self.film_grid)
+        return chars.pressure_force(pressure, self.film_grid, self._force_weights)
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """All film characteristics for one state (friction convention in ``extra``)."""
@@ -182,14 +192,22 @@ class ReynoldsFilm:
             state.journal_speed + state.shell_speed, state.viscosity,
         )
         pressure[level.fixed] = level.fixed_values[level.fixed]
-        omega = self.relaxation if self.relaxation is not None else optimal_relaxation(g)
-        sweeps, change = kernel.sor_solve(
-            pressure, a_east, a_north, source, level.fixed,
-            self.geometry.cavitation_pressure, omega, tolerance, self.max_iterations,
-        )
+        if self.method == "multigrid":
+            cycles, change = multigrid.multigrid_solve(
+                pressure, level.h, source, level.fixed, g.radius, g.d_theta, g.d_z,
+                self.geometry.cavitation_pressure, tolerance, self.max_iterations,
+                multigrid.coarse_levels(g.n_theta, g.n_z),
+            )
+            sweeps = cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS)
+        else:
+            omega = self.relaxation if self.relaxation is not None else optimal_relaxation(g)
+            sweeps, change = kernel.sor_solve(
+                pressure, a_east, a_north, source, level.fixed,
+                self.geometry.cavitation_pressure, omega, tolerance, self.max_iterations,
+            )
         if not change <= tolerance:
             raise ConvergenceError(
-                f"Reynolds SOR on {g.n_theta}x{g.n_z} after {sweeps} sweeps",
+                f"Reynolds {self.method} on {g.n_theta}x{g.n_z} after {sweeps} sweeps",
                 where=f"e = ({state.eccentricity_x:.4g}, {state.eccentricity_y:.4g}) m, "
                 f"v = ({state.velocity_x:.4g}, {state.velocity_y:.4g}) m/s",
                 residual=change,
@@ -217,7 +235,7 @@ class ReynoldsFilm:
                 total += sweeps
         self._last_pressure = pressure.copy()
         return pressure, {"sweeps": float(total), "relative_update": change,
-                          "warm_start": float(warm)}
+                          "warm_start": float(warm), "multigrid": float(self.method == "multigrid")}
 
     def _characteristics(self, problem: _Problem, pressure: np.ndarray, state: FilmState,
                          info: dict) -> FilmResult:
@@ -241,7 +259,7 @@ class ReynoldsFilm:
                 pressure, h, problem.fixed, g.cavitation_pressure, direction)
         torque_j, torque_b = chars.friction_torques(
             pressure, h, grid, state.journal_speed, state.shell_speed, state.viscosity, fraction)
-        fx, fy = chars.pressure_force(pressure, grid)
+        fx, fy = chars.pressure_force(pressure, grid, self._force_weights)
         h_min, h_angle = chars.minimum_film(h, grid)
         p_max, p_angle = chars.peak_pressure(pressure, grid)
         info = dict(info)

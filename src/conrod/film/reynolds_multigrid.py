@@ -1,0 +1,246 @@
+"""Projected multigrid for the Reynolds film (compiled; used by :mod:`conrod.film.reynolds`).
+
+One cycle (Brandt & Cryer's projected multigrid in its simplest, correction form [1]):
+
+1. ``PRE_SWEEPS`` projected Gauss–Seidel sweeps p := max(GS(p), p_cav) on the fine grid,
+2. the residual on the nodes that are free *and* in full film (zero on Dirichlet and
+   cavitated nodes) is summed onto coarser grids (restriction = transpose of bilinear
+   prolongation, the finite-volume balance of the union of control volumes),
+3. a linear V-cycle (Gauss–Seidel smoothing, SOR on the coarsest grid) solves the
+   correction with zero correction on masked nodes; coarse conductances come from the
+   film thickness at coinciding nodes (re-discretisation),
+4. the prolonged correction is added on the full-film nodes, projected, and
+   ``POST_SWEEPS`` projected sweeps follow (one and one were fastest for warm starts
+   along an orbit at 144×32).
+
+Cycles stop when the largest change of one cycle is ≤ tolerance·max|p|. Everything
+runs in one compiled call, lexicographic order, deterministic.
+
+[1] A. Brandt, C.W. Cryer, "Multigrid algorithms for the solution of linear
+    complementarity problems arising from free boundary problems", SIAM J. Sci. Stat.
+    Comput. 4 (1983) 655–684.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+PRE_SWEEPS = 1
+POST_SWEEPS = 1
+COARSEST_SWEEPS = 40
+
+
+@nb.njit(cache=True)
+def conductances(h: np.ndarray, radius: float, d_theta: float, d_z: float):
+    """Face conductances a_E, a_N [m^4] of the scheme in :mod:`reynolds_kernel`
+    (a_N padded to the node shape, last column 0)."""
+    n, m = h.shape
+    a_east = np.zeros((n, m))
+    a_north = np.zeros((n, m))
+    arc = radius * d_theta
+    for i in range(n):
+        ip = i + 1 if i + 1 < n else 0
+        for j in range(m):
+            width = d_z if 0 < j < m - 1 else 0.5 * d_z
+            h_e = 0.5 * (h[i, j] + h[ip, j])
+            a_east[i, j] = h_e * h_e * h_e * width / arc
+            if j < m - 1:
+                h_n = 0.5 * (h[i, j] + h[i, j + 1])
+                a_north[i, j] = h_n * h_n * h_n * arc / d_z
+    return a_east, a_north
+
+
+@nb.njit(cache=True)
+def stencil(a_east: np.ndarray, a_north: np.ndarray, mask: np.ndarray):
+    """Normalised weights w_E, w_W, w_N, w_S = a/a_P and a_P; zero weights and a_P = 1
+    on masked nodes and on the edge rows (their value never changes)."""
+    n, m = a_east.shape
+    w_e = np.zeros((n, m))
+    w_w = np.zeros((n, m))
+    w_n = np.zeros((n, m))
+    w_s = np.zeros((n, m))
+    a_p = np.ones((n, m))
+    for i in range(n):
+        im = i - 1 if i > 0 else n - 1
+        for j in range(1, m - 1):
+            if mask[i, j]:
+                continue
+            total = a_east[i, j] + a_east[im, j] + a_north[i, j] + a_north[i, j - 1]
+            a_p[i, j] = total
+            w_e[i, j] = a_east[i, j] / total
+            w_w[i, j] = a_east[im, j] / total
+            w_n[i, j] = a_north[i, j] / total
+            w_s[i, j] = a_north[i, j - 1] / total
+    return w_e, w_w, w_n, w_s, a_p
+
+
+@nb.njit(cache=True)
+def relax(p, w_e, w_w, w_n, w_s, s, omega, floor, sweeps):
+    """``sweeps`` lexicographic (projected) SOR sweeps in place:
+    p := max(p + ω(Σ w p_nb + s − p), floor). Returns the largest update of the last sweep."""
+    n, m = p.shape
+    largest = 0.0
+    for _ in range(sweeps):
+        largest = 0.0
+        for i in range(n):
+            ip = i + 1 if i + 1 < n else 0
+            im = i - 1 if i > 0 else n - 1
+            row, up, down = p[i], p[ip], p[im]
+            we, ww, wn, ws, si = w_e[i], w_w[i], w_n[i], w_s[i], s[i]
+            for j in range(1, m - 1):
+                old = row[j]
+                target = we[j] * up[j] + ww[j] * down[j] + wn[j] * row[j + 1] + ws[j] * row[j - 1]
+                new = old + omega * (target + si[j] - old)
+                if new < floor:
+                    new = floor
+                row[j] = new
+                change = abs(new - old)
+                if change > largest:
+                    largest = change
+    return largest
+
+
+@nb.njit(cache=True)
+def residual(p, w_e, w_w, w_n, w_s, s, a_p, mask):
+    """Flux residual a_P(Σ w p_nb + s − p) [Pa m^4]; zero on masked nodes and edges."""
+    n, m = p.shape
+    out = np.zeros((n, m))
+    for i in range(n):
+        ip = i + 1 if i + 1 < n else 0
+        im = i - 1 if i > 0 else n - 1
+        for j in range(1, m - 1):
+            if mask[i, j]:
+                continue
+            target = (w_e[i, j] * p[ip, j] + w_w[i, j] * p[im, j]
+                      + w_n[i, j] * p[i, j + 1] + w_s[i, j] * p[i, j - 1])
+            out[i, j] = a_p[i, j] * (target + s[i, j] - p[i, j])
+    return out
+
+
+@nb.njit(cache=True)
+def restrict(fine: np.ndarray, coarse_mask: np.ndarray) -> np.ndarray:
+    """Transpose of bilinear prolongation: weighted sums of fine balances (1, ½, ¼)."""
+    n, m = fine.shape
+    nc, mc = n // 2, (m - 1) // 2 + 1
+    out = np.zeros((nc, mc))
+    for ic in range(nc):
+        for jc in range(1, mc - 1):
+            if coarse_mask[ic, jc]:
+                continue
+            total = 0.0
+            for di in range(-1, 2):
+                i = (2 * ic + di) % n
+                for dj in range(-1, 2):
+                    total += (1.0 - 0.5 * abs(di)) * (1.0 - 0.5 * abs(dj)) * fine[i, 2 * jc + dj]
+            out[ic, jc] = total
+    return out
+
+
+@nb.njit(cache=True)
+def add_prolongated(coarse: np.ndarray, fine: np.ndarray, fine_mask: np.ndarray) -> None:
+    """fine += bilinear interpolation of ``coarse`` (θ periodic) on unmasked nodes."""
+    n, m = fine.shape
+    nc = coarse.shape[0]
+    for i in range(n):
+        i0 = i // 2
+        i1 = (i0 + 1) % nc if i % 2 else i0
+        for j in range(1, m - 1):
+            if fine_mask[i, j]:
+                continue
+            j0 = j // 2
+            j1 = j0 + 1 if j % 2 else j0
+            fine[i, j] += 0.25 * (coarse[i0, j0] + coarse[i1, j0] + coarse[i0, j1] + coarse[i1, j1])
+
+
+@nb.njit(cache=True)
+def coarsest_relaxation(a_east: np.ndarray, a_north: np.ndarray) -> float:
+    """SOR factor for the coarsest grid from the mean conductances (Young) [-]."""
+    n, m = a_east.shape
+    east = np.mean(a_east[:, 1:-1])
+    north = np.mean(a_north[:, : m - 1])
+    rho = (east + north * math.cos(math.pi / (m - 1))) / (east + north)
+    return 2.0 / (1.0 + math.sqrt(1.0 - rho * rho))
+
+
+@nb.njit(cache=True)
+def correction(rhs_fine, mask_fine, coarse_east, coarse_north):
+    """Linear V-cycle for A e = rhs on the coarse levels (lists, fine → coarse); returns
+    the correction on the first coarse level."""
+    levels = len(coarse_east)
+    masks = [mask_fine[::2, ::2].copy()]
+    for level in range(1, levels):
+        masks.append(masks[level - 1][::2, ::2].copy())
+    stencils = [stencil(coarse_east[k], coarse_north[k], masks[k]) for k in range(levels)]
+    sources = [restrict(rhs_fine, masks[0])]
+    errors = [np.zeros(masks[0].shape)]
+    for k in range(levels):
+        w_e, w_w, w_n, w_s, a_p = stencils[k]
+        s = sources[k] / a_p
+        if k == levels - 1:
+            omega = coarsest_relaxation(coarse_east[k], coarse_north[k])
+            relax(errors[k], w_e, w_w, w_n, w_s, s, omega, -np.inf, COARSEST_SWEEPS)
+            break
+        relax(errors[k], w_e, w_w, w_n, w_s, s, 1.0, -np.inf, PRE_SWEEPS)
+        r = residual(errors[k], w_e, w_w, w_n, w_s, s, a_p, masks[k])
+        sources.append(restrict(r, masks[k + 1]))
+        errors.append(np.zeros(masks[k + 1].shape))
+    for k in range(levels - 2, -1, -1):
+        add_prolongated(errors[k + 1], errors[k], masks[k])
+        w_e, w_w, w_n, w_s, a_p = stencils[k]
+        relax(errors[k], w_e, w_w, w_n, w_s, sources[k] / a_p, 1.0, -np.inf, POST_SWEEPS)
+    return errors[0]
+
+
+def coarse_levels(n_theta: int, n_z: int, limit: int = 4) -> int:
+    """How many coarser grids halve (n_theta, n_z) intervals evenly, keeping ≥ 8 × 2 [-]."""
+    count = 0
+    while count < limit and n_theta % 2 == 0 and n_z % 2 == 0 and n_theta >= 16 and n_z >= 4:
+        n_theta, n_z = n_theta // 2, n_z // 2
+        count += 1
+    return count
+
+
+@nb.njit(cache=True)
+def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressure,
+                    tolerance, max_cycles, n_coarse):
+    """Projected multigrid cycles in place on ``p`` [Pa] (module docstring).
+
+    h : film thickness [m]; source : b of the flux balance [Pa m^4]; fixed : Dirichlet
+    nodes (edge rows included) holding their current value. Returns (cycles, last
+    relative change [-]).
+    """
+    a_east, a_north = conductances(h, radius, d_theta, d_z)
+    w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, fixed)
+    s = source / a_p
+    n, m = p.shape
+    for i in range(n):
+        for j in range(m):
+            if fixed[i, j]:
+                s[i, j] = p[i, j]
+    coarse_east = []
+    coarse_north = []
+    for k in range(1, n_coarse + 1):
+        step = 2**k
+        a_e, a_n = conductances(h[::step, ::step].copy(), radius, d_theta * step, d_z * step)
+        coarse_east.append(a_e)
+        coarse_north.append(a_n)
+    change = np.inf
+    for cycle in range(1, max_cycles + 1):
+        previous = p.copy()
+        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS)
+        if n_coarse > 0:
+            mask = fixed | (p <= cavitation_pressure)
+            r = residual(p, w_e, w_w, w_n, w_s, s, a_p, mask)
+            add_prolongated(correction(r, mask, coarse_east, coarse_north), p, mask)
+            np.maximum(p, cavitation_pressure, p)
+        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS)
+        scale = np.max(np.abs(p))
+        if scale == 0.0:
+            return cycle, 0.0
+        change = np.max(np.abs(p - previous)) / scale
+        if change <= tolerance:
+            return cycle, change
+    return max_cycles, change
