@@ -81,6 +81,9 @@ class MassConservingFilm:
     omega : float or None  SOR factor [-]; None = ReynoldsFilm's ``optimal_relaxation``.
     friction : 'film_fraction' | 'full_film'  Couette shear scaled by ϑ (physical JFO)
         or over the full 360° (Raimondi & Boyd's convention).
+    method : 'multigrid' | 'sor'  Full-film solver of a transient instant: the projected
+        multigrid of :mod:`conrod.film.reynolds_multigrid` (broken-film nodes held at p_cav
+        like Dirichlet nodes) or plain projected SOR.
     """
 
     geometry: BearingGeometry
@@ -90,6 +93,7 @@ class MassConservingFilm:
     max_iterations: int = 20000
     omega: float | None = None
     friction: Literal["film_fraction", "full_film"] = "film_fraction"
+    method: Literal["multigrid", "sor"] = "multigrid"
     name: str = "mass_conserving"
     last_iterations: int = field(default=0, init=False)
     _warm: np.ndarray | None = field(default=None, init=False, repr=False)
@@ -101,6 +105,8 @@ class MassConservingFilm:
             )
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
+        if self.method not in ("multigrid", "sor"):
+            raise CaseError(f"method = {self.method!r}: allowed 'multigrid' or 'sor'")
         if self.omega is None:
             from conrod.film.reynolds import optimal_relaxation
 
@@ -158,10 +164,7 @@ class MassConservingFilm:
         pressure = self._start_pressure(f, fraction)
         source = convection(f.couette_east, fraction) + f.squeeze * fraction
         active = f.free & (fraction >= FULL)
-        sweeps, change = projected_sor(
-            pressure, active, f.a_east, f.a_north, source, -self.geometry.cavitation_pressure,
-            self.omega, self.tolerance, self.max_iterations,
-        )
+        sweeps, change = self._solve_full_film(pressure, active, f, source)
         self._check(sweeps, change, state)
         self._warm = pressure.copy()
         imbalance = cell_imbalance(f, pressure, fraction)
@@ -183,6 +186,25 @@ class MassConservingFilm:
         """Film force on the journal (F_x, F_y) [N]."""
         result = self.solve(state)
         return result.force_x, result.force_y
+
+    def _solve_full_film(
+        self, pressure: np.ndarray, active: np.ndarray, f: FilmFields, source: np.ndarray
+    ) -> tuple[int, float]:
+        """Pressure on the full-film nodes (in place on p̃); returns (sweeps, change)."""
+        p_cav = self.geometry.cavitation_pressure
+        if self.method == "sor":
+            return projected_sor(pressure, active, f.a_east, f.a_north, source, -p_cav,
+                                 self.omega, self.tolerance, self.max_iterations)
+        from conrod.film import reynolds_multigrid as multigrid
+
+        gauge = pressure + p_cav
+        grid = self.film_grid
+        cycles, change = multigrid.multigrid_solve(
+            gauge, f.h, -source, ~active, grid.radius, grid.d_theta, grid.d_z, p_cav,
+            self.tolerance, self.max_iterations, multigrid.coarse_levels(grid.n_theta, grid.n_z),
+        )
+        pressure[:] = np.maximum(gauge - p_cav, 0.0)
+        return cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS), change
 
     # ---------------------------------------------------------------------- steady
     def solve_steady(
