@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
+from conrod.errors import ConvergenceError
 from conrod.mechanism import integrator as rk
 from conrod.mechanism.kernel import mechanism_rhs, penetration_rates, penetrations
 from conrod.mechanism.model import ClearanceJoint, CrankTrain, Mechanism, seed_initial_state
@@ -199,3 +200,8 @@ def test_impact_angle_and_velocity_match_scipy_event_location():
         assert mine.shape[0] == angles.size >= 1
         np.testing.assert_allclose(mine[:, 0], angles, atol=1e-6)
         np.testing.assert_allclose(mine[:, 2], speeds, rtol=1e-3)
+
+
+def test_exhausted_step_budget_is_a_convergence_error_naming_the_crank_angle():
+    with pytest.raises(ConvergenceError, match=r"step budget exhausted.*crank angle \d"):
+        simulate(worn_mechanism(), gas_table(), RunSettings(cycles=1, max_steps=50))
