@@ -35,9 +35,9 @@ from typing import Literal
 import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
-from conrod.film.base import BearingGeometry, FilmResult, FilmState, film_thickness
+from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.characteristics import FilmGrid
-from conrod.film.mass_conserving_kernel import elrod_adams_steady, projected_sor
+from conrod.film.mass_conserving_kernel import cell_balance, elrod_adams_steady, projected_sor
 from conrod.film.supply import nearest_theta_index, supply_mask
 
 FULL = 1.0 - 1.0e-9
@@ -105,6 +105,12 @@ class MassConservingFilm:
             )
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
+        theta = self.film_grid.theta
+        self._cos, self._sin = np.cos(theta)[:, None], np.sin(theta)[:, None]
+        self._edge = np.zeros((self.n_theta, self.n_z + 1), dtype=bool)
+        self._edge[:, [0, -1]] = True
+        self._supply = supply_mask(g, self.film_grid)
+        self._fixed = np.where(self._supply, g.supply_pressure, 0.0) - g.cavitation_pressure
         if self.method not in ("multigrid", "sor"):
             raise CaseError(f"method = {self.method!r}: allowed 'multigrid' or 'sor'")
         if self.omega is None:
@@ -131,11 +137,13 @@ class MassConservingFilm:
     def fields(self, state: FilmState) -> FilmFields:
         """Assemble the cell-balance coefficients for one state."""
         g = self.geometry
-        theta, _ = self.grid()
         dx, dz = self.spacing()
         mu = state.viscosity
-        h = film_thickness(g, state.eccentricity_x, state.eccentricity_y, theta, state.deformation)
-        h = np.broadcast_to(h[:, None] if h.ndim == 1 else h, (self.n_theta, self.n_z + 1))
+        rigid = (g.radial_clearance - state.eccentricity_x * self._cos
+                 - state.eccentricity_y * self._sin)
+        h = np.repeat(rigid, self.n_z + 1, axis=1)
+        if state.deformation is not None:
+            h = h + state.deformation
         if not float(h.min()) > 0.0:
             raise CaseError(f"film thickness min = {float(h.min()):.3g} m: out of range "
                             "(allowed: > 0 m); the journal touches the shell")
@@ -144,16 +152,12 @@ class MassConservingFilm:
         h_north[:, :-1] = 0.5 * (h[:, 1:] + h[:, :-1])
         h_north[:, -1] = h[:, -1]
         speed = g.radius * (state.journal_speed + state.shell_speed)
-        dh_dt = -state.velocity_x * np.cos(theta) - state.velocity_y * np.sin(theta)
-        edge = np.zeros(h.shape, dtype=bool)
-        edge[:, 0] = edge[:, -1] = True
-        supply = supply_mask(g, self.film_grid)
-        fixed = np.where(supply, g.supply_pressure, 0.0) - g.cavitation_pressure
+        dh_dt = -state.velocity_x * self._cos - state.velocity_y * self._sin
         return FilmFields(
-            h=np.ascontiguousarray(h), a_east=h_east**3 * (dz / dx), a_north=h_north**3 * (dx / dz),
-            couette_east=6.0 * mu * speed * h_east * dz,
-            squeeze=np.broadcast_to((12.0 * mu * dx * dz * dh_dt)[:, None], h.shape).copy(),
-            edge=edge, supply=supply, fixed_pressure=fixed,
+            h=h, a_east=h_east**3 * (dz / dx), a_north=h_north**3 * (dx / dz),
+            couette_east=(6.0 * mu * speed * dz) * h_east,
+            squeeze=np.repeat(12.0 * mu * dx * dz * dh_dt, self.n_z + 1, axis=1),
+            edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed.copy(),
         )
 
     # ------------------------------------------------------------------ transient
@@ -167,12 +171,13 @@ class MassConservingFilm:
         sweeps, change = self._solve_full_film(pressure, active, f, source)
         self._check(sweeps, change, state)
         self._warm = pressure.copy()
-        imbalance = cell_imbalance(f, pressure, fraction)
+        imbalance, from_edges, from_supply = cell_balance(
+            pressure, fraction, f.free, f.edge, f.a_east, f.a_north, f.couette_east, f.squeeze)
         dx, dz = self.spacing()
         cell_mass = 12.0 * state.viscosity * dx * dz * f.h
         rate = np.where(f.free & (pressure <= 0.0), -imbalance / cell_mass, 0.0)
         rate = np.where(fraction >= FULL, np.minimum(rate, 0.0), rate)
-        result = self.characteristics(state, f, pressure, fraction)
+        result = self.characteristics(state, f, pressure, fraction, (from_edges, from_supply))
         result.history_rate = rate
         content_rate = float(np.sum((fraction * f.squeeze / (12.0 * state.viscosity)
                                      + f.h * rate * dx * dz)[f.free]))
@@ -277,12 +282,16 @@ class MassConservingFilm:
             )
 
     def characteristics(
-        self, state: FilmState, f: FilmFields, pressure: np.ndarray, fraction: np.ndarray
+        self, state: FilmState, f: FilmFields, pressure: np.ndarray, fraction: np.ndarray,
+        inflows: tuple[float, float] | None = None,
     ) -> FilmResult:
         """Forces, torques, flows, extremes from the shifted pressure p̃ and ϑ."""
         from conrod.film.mass_conserving_results import film_characteristics
 
-        return film_characteristics(self, state, f, pressure, fraction)
+        if inflows is None:
+            _, *inflows = cell_balance(pressure, fraction, f.free, f.edge, f.a_east,
+                                       f.a_north, f.couette_east, f.squeeze)
+        return film_characteristics(self, state, f, pressure, fraction, tuple(inflows))
 
 
 def convection(couette_east: np.ndarray, fraction: np.ndarray) -> np.ndarray:
@@ -290,15 +299,6 @@ def convection(couette_east: np.ndarray, fraction: np.ndarray) -> np.ndarray:
     forward = couette_east[0, couette_east.shape[1] // 2] >= 0.0
     east = couette_east * (fraction if forward else np.roll(fraction, -1, axis=0))
     return east - np.roll(east, 1, axis=0)
-
-
-def cell_imbalance(f: FilmFields, pressure: np.ndarray, fraction: np.ndarray) -> np.ndarray:
-    """a_P p̃_P − Σ a_nb p̃_nb + C_e ϑ_e − C_w ϑ_w + 12μΔxΔz ϑ ∂h/∂t per cell [Pa m³]."""
-    east = f.a_east * (np.roll(pressure, -1, axis=0) - pressure)
-    north = np.zeros_like(pressure)
-    north[:, :-1] = f.a_north[:, :-1] * (pressure[:, 1:] - pressure[:, :-1])
-    diffusion = -(east - np.roll(east, 1, axis=0)) - (north - np.roll(north, 1, axis=1))
-    return diffusion + convection(f.couette_east, fraction) + f.squeeze * fraction
 
 
 def film_end_angle(theta: np.ndarray, pressure: np.ndarray, inlet: int) -> float:

@@ -27,31 +27,12 @@ def axial_weights(n_z: int, dz: float) -> np.ndarray:
     return weights
 
 
-def boundary_inflows(
-    f: FilmFields, pressure: np.ndarray, fraction: np.ndarray, viscosity: float
-) -> tuple[float, float]:
-    """Oil entering the solved cells from the edge nodes and from supply nodes [m³/s]."""
-    forward = f.couette_east[0, f.h.shape[1] // 2] >= 0.0
-    upwind = fraction if forward else np.roll(fraction, -1, axis=0)
-    east = -f.a_east * (np.roll(pressure, -1, axis=0) - pressure) + f.couette_east * upwind
-    north = -f.a_north[:, :-1] * (pressure[:, 1:] - pressure[:, :-1])
-    free = f.free
-    totals = {}
-    for name, mask in (("edge", f.edge), ("supply", f.supply)):
-        mask_east = np.roll(mask, -1, axis=0)
-        free_east = np.roll(free, -1, axis=0)
-        flow = np.sum(east[mask & free_east]) - np.sum(east[free & mask_east])
-        flow += np.sum(north[mask[:, :-1] & free[:, 1:]])
-        flow -= np.sum(north[free[:, :-1] & mask[:, 1:]])
-        totals[name] = flow / (12.0 * viscosity)
-    return totals["edge"], totals["supply"]
-
-
 def film_characteristics(
     model: MassConservingFilm, state: FilmState, f: FilmFields,
-    pressure: np.ndarray, fraction: np.ndarray,
+    pressure: np.ndarray, fraction: np.ndarray, inflows: tuple[float, float],
 ) -> FilmResult:
-    """FilmResult from the shifted pressure p̃ [Pa] and film fraction ϑ [-]."""
+    """FilmResult from the shifted pressure p̃ [Pa], film fraction ϑ [-] and the 12μ-scaled
+    inflows from edge and supply nodes of :func:`~.mass_conserving_kernel.cell_balance`."""
     g = model.geometry
     theta, _ = model.grid()
     dx, dz = model.spacing()
@@ -67,7 +48,7 @@ def film_characteristics(
     shear = fraction if model.friction == "film_fraction" else 1.0
     couette = (g.radius**3 * d_theta * state.viscosity * sliding
                * float(np.sum(shear / f.h * weights)))
-    edge_in, supply_in = boundary_inflows(f, pressure, fraction, state.viscosity)
+    edge_in, supply_in = (flow / (12.0 * state.viscosity) for flow in inflows)
     k_h = int(np.argmin(f.h))
     k_p = int(np.argmax(gauge))
     free = f.free
