@@ -94,7 +94,7 @@ def pressure_force(pressure: np.ndarray, grid: FilmGrid,
     """Film force on the journal F = −∫∫ p (cos θ, sin θ) R dθ dz [N]
     (``weights`` from :func:`force_weights` to save recomputing them)."""
     w_x, w_y = weights if weights is not None else force_weights(grid)
-    return -float(np.vdot(pressure, w_x)), -float(np.vdot(pressure, w_y))
+    return -float(np.sum(pressure * w_x)), -float(np.sum(pressure * w_y))
 
 
 def theta_derivative(field: np.ndarray, grid: FilmGrid) -> np.ndarray:

@@ -104,20 +104,38 @@ def relax(p, w_e, w_w, w_n, w_s, s, omega, floor, sweeps):
 
 
 @nb.njit(cache=True)
-def residual(p, w_e, w_w, w_n, w_s, s, a_p, mask):
-    """Flux residual a_P(Σ w p_nb + s − p) [Pa m^4]; zero on masked nodes and edges."""
+def residual(p, w_e, w_w, w_n, w_s, s, a_p, mask, out=None):
+    """Flux residual a_P(Σ w p_nb + s − p) [Pa m^4]; zero on masked nodes and edges
+    (written into ``out`` when given, to avoid allocating in the cycle loop)."""
     n, m = p.shape
-    out = np.zeros((n, m))
+    if out is None:
+        out = np.empty((n, m))
     for i in range(n):
         ip = i + 1 if i + 1 < n else 0
         im = i - 1 if i > 0 else n - 1
+        out[i, 0] = 0.0
+        out[i, m - 1] = 0.0
         for j in range(1, m - 1):
             if mask[i, j]:
+                out[i, j] = 0.0
                 continue
             target = (w_e[i, j] * p[ip, j] + w_w[i, j] * p[im, j]
                       + w_n[i, j] * p[i, j + 1] + w_s[i, j] * p[i, j - 1])
             out[i, j] = a_p[i, j] * (target + s[i, j] - p[i, j])
     return out
+
+
+@nb.njit(cache=True)
+def relative_change(p, previous):
+    """max|p − previous| / max|p| without temporaries [-] (0 when p ≡ 0)."""
+    largest_change = 0.0
+    largest_value = 0.0
+    n, m = p.shape
+    for i in range(n):
+        for j in range(m):
+            largest_change = max(largest_change, abs(p[i, j] - previous[i, j]))
+            largest_value = max(largest_value, abs(p[i, j]))
+    return largest_change / largest_value if largest_value > 0.0 else 0.0
 
 
 @nb.njit(cache=True)
@@ -228,19 +246,18 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
         coarse_east.append(a_e)
         coarse_north.append(a_n)
     change = np.inf
+    previous = np.empty_like(p)
+    flux_residual = np.empty_like(p)
     for cycle in range(1, max_cycles + 1):
-        previous = p.copy()
+        previous[:] = p
         relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS)
         if n_coarse > 0:
             mask = fixed | (p <= cavitation_pressure)
-            r = residual(p, w_e, w_w, w_n, w_s, s, a_p, mask)
-            add_prolongated(correction(r, mask, coarse_east, coarse_north), p, mask)
+            residual(p, w_e, w_w, w_n, w_s, s, a_p, mask, flux_residual)
+            add_prolongated(correction(flux_residual, mask, coarse_east, coarse_north), p, mask)
             np.maximum(p, cavitation_pressure, p)
         relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS)
-        scale = np.max(np.abs(p))
-        if scale == 0.0:
-            return cycle, 0.0
-        change = np.max(np.abs(p - previous)) / scale
+        change = relative_change(p, previous)
         if change <= tolerance:
             return cycle, change
     return max_cycles, change
