@@ -1,1 +1,25 @@
-"""mechanism stage of the conrod pipeline."""
+"""Slider-crank with clearances in both rod bearings: worn shells, impacts (SPEC S6, seed 003).
+
+.. code-block:: python
+
+    from conrod.mechanism import mechanism_case, run_sweep, simulate
+
+    run = mechanism_case(Case.from_toml("examples/seed003_worn_rod_bearings.toml"))
+    results = simulate(run.mechanism, run.scaled_gas_table(), run.settings)
+    results.summary()["max_impact_velocity_big_end_m_s"]     # [m/s]
+
+Layers: :mod:`geometry` (ellipse contact law) and :mod:`kernel` (right-hand side) are
+numba kernels; :mod:`integrator` integrates them; :mod:`model` holds the components;
+:mod:`simulation`, :mod:`setup` and :mod:`sweep` orchestrate; :mod:`results` types them.
+"""
+
+from conrod.mechanism.model import ClearanceJoint, CrankTrain, Mechanism
+from conrod.mechanism.results import Impacts, MechanismResults
+from conrod.mechanism.setup import MechanismCase, mechanism_case
+from conrod.mechanism.simulation import RunSettings, simulate
+from conrod.mechanism.sweep import SweepResults, run_sweep
+
+__all__ = [
+    "ClearanceJoint", "CrankTrain", "Impacts", "Mechanism", "MechanismCase", "MechanismResults",
+    "RunSettings", "SweepResults", "mechanism_case", "run_sweep", "simulate",
+]
