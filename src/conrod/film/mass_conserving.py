@@ -224,7 +224,9 @@ class MassConservingFilm:
         ``inlet_line=False`` drops the inlet line: oil then enters only through the
         geometry's grooves and feed holes (a fed, possibly starved, bearing).
         ``extra['film_end_angle_rad']`` [rad] is where the film first ruptures downstream of
-        the peak pressure; the film fraction is kept in ``self.last_film_fraction``.
+        the peak pressure, ``extra['inlet_flow_m3_per_s']`` the oil entering through the
+        inlet line and supply features (= side flow in a steady JFO film); the film
+        fraction is kept in ``self.last_film_fraction``.
         """
         if not (inlet_line or self.geometry.grooves or self.geometry.feed_holes):
             raise CaseError("steady mass-conserving film without inlet line, grooves or feed "
@@ -254,7 +256,8 @@ class MassConservingFilm:
         self.last_film_fraction = fraction
         result = self.characteristics(state, f, pressure, fraction)
         result.extra.update(iterations=float(sweeps), relative_change=change,
-                            film_end_angle_rad=film_end_angle(theta, pressure, inlet))
+                            film_end_angle_rad=film_end_angle(theta, pressure, inlet),
+                            inlet_flow_m3_per_s=result.supply_flow)
         if with_pressure:
             result.pressure = pressure + self.geometry.cavitation_pressure
         return result
