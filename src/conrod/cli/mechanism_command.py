@@ -126,10 +126,11 @@ def register(app: typer.Typer) -> None:
     @app.command("mechanism")
     @exits_cleanly
     def mechanism_command(
-        case_file: Annotated[Path, typer.Argument(help="Case file with [engine] and [clearance]")],
+        case_file: Annotated[Path, typer.Argument(
+            help="Case file with \\[engine] and \\[clearance]")],
         out: Annotated[Path, typer.Option("--out", help="Output folder (created if absent)")],
         sweep: Annotated[list[str] | None, typer.Option(
-            "--sweep", help="speed=START:STOP:COUNT [rpm] or load=START:STOP:COUNT [-]; "
+            "--sweep", help="speed=START:STOP:COUNT \\[rpm] or load=START:STOP:COUNT \\[-]; "
             "repeatable")] = None,
     ) -> None:
         """Slider-crank with clearances in both rod bearings: gaps, forces, impacts (seed 003)."""
