@@ -113,10 +113,9 @@ class MassConservingFilm:
         self._fixed = np.where(self._supply, g.supply_pressure, 0.0) - g.cavitation_pressure
         if self.method not in ("multigrid", "sor"):
             raise CaseError(f"method = {self.method!r}: allowed 'multigrid' or 'sor'")
-        if self.omega is None:
-            from conrod.film.reynolds import optimal_relaxation
+        from conrod.film.reynolds import optimal_relaxation
 
-            self.omega = optimal_relaxation(self.film_grid)
+        self._omega = self.omega if self.omega is not None else optimal_relaxation(self.film_grid)
 
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
         """θ nodes [rad] (periodic, no duplicate of 2π) and z nodes [m] (edges included)."""
@@ -199,7 +198,7 @@ class MassConservingFilm:
         p_cav = self.geometry.cavitation_pressure
         if self.method == "sor":
             return projected_sor(pressure, active, f.a_east, f.a_north, source, -p_cav,
-                                 self.omega, self.tolerance, self.max_iterations)
+                                 self._omega, self.tolerance, self.max_iterations)
         from conrod.film import reynolds_multigrid as multigrid
 
         gauge = pressure + p_cav
@@ -244,13 +243,14 @@ class MassConservingFilm:
         if cavitation == "jfo":
             sweeps, change = elrod_adams_steady(
                 pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east, f.squeeze,
-                self.omega, self.tolerance, self.max_iterations,
+                self._omega, self.tolerance, self.max_iterations,
             )
         else:
             source = convection(f.couette_east, fraction) + f.squeeze
             sweeps, change = projected_sor(
                 pressure, f.free.copy(), f.a_east, f.a_north, source,
-                -self.geometry.cavitation_pressure, self.omega, self.tolerance, self.max_iterations,
+                -self.geometry.cavitation_pressure, self._omega, self.tolerance,
+                self.max_iterations,
             )
         self._check(sweeps, change, state)
         self.last_film_fraction = fraction
@@ -292,9 +292,11 @@ class MassConservingFilm:
         from conrod.film.mass_conserving_results import film_characteristics
 
         if inflows is None:
-            _, *inflows = cell_balance(pressure, fraction, f.free, f.edge, f.a_east,
-                                       f.a_north, f.couette_east, f.squeeze)
-        return film_characteristics(self, state, f, pressure, fraction, tuple(inflows))
+            _, from_edges, from_supply = cell_balance(pressure, fraction, f.free, f.edge,
+                                                      f.a_east, f.a_north, f.couette_east,
+                                                      f.squeeze)
+            inflows = (from_edges, from_supply)
+        return film_characteristics(self, state, f, pressure, fraction, inflows)
 
 
 def convection(couette_east: np.ndarray, fraction: np.ndarray) -> np.ndarray:

@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -73,7 +74,7 @@ class MobilityFilm:
         )
 
     @classmethod
-    def short_bearing(cls, geometry: BearingGeometry, **kwargs: object) -> MobilityFilm:
+    def short_bearing(cls, geometry: BearingGeometry, **kwargs: Any) -> MobilityFilm:
         """Booker's short-bearing mobility (closed-form squeeze force, densely tabulated)."""
         from conrod.film.short_bearing import ShortBearingFilm
 

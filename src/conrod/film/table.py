@@ -26,6 +26,7 @@ import math
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -138,8 +139,9 @@ class TabulatedFilm:
         tables = build_squeeze_tables(self.base, self.eccentricities(), self.directions())
         self.build_seconds = time.perf_counter() - start
         if self.use_cache:
+            save: Any = np.savez  # numpy's stub types the keyword arrays as allow_pickle
             with atomic_path(path) as tmp:
-                np.savez(tmp, **tables)
+                save(tmp, **tables)
         return tables
 
     def directions(self) -> np.ndarray:
