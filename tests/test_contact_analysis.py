@@ -143,3 +143,33 @@ def test_contact_section_errors_name_field_and_unit():
         _case(roughness=-1.0)
     with pytest.raises(CaseError, match="did you mean 'wear_coefficient_shell'"):
         _case(wear_coeficient_shell=1e-16)
+
+
+def test_running_in_feeds_worn_profile_back_and_accumulates_wear():
+    """Stand-in orbit whose contact force falls as the shell wears at the contact point
+    (δ at θ = 90° opens the gap): the bookkeeping of the lumped stages must hold."""
+    from conrod.contact.running_in import run_in
+
+    case = _case(surface_elements=72, wear_coefficient_shell=1e-16)
+    seen = []
+
+    def simulate(case, profile):
+        theta, z = np.linspace(0, 2 * math.pi, 144, endpoint=False), np.zeros(3)
+        delta = profile(theta, z)
+        assert delta.shape == (144, 3)
+        opened = float(delta[36, 1])  # θ = 90°, the contact point of the stand-in
+        seen.append(opened)
+        cycle = _combustion_cycle()
+        scale = max(0.0, 1.0 - opened / 5e-8)
+        cycle.contact_force *= scale
+        cycle.friction_force *= scale
+        return analyse_contact(case, cycle)
+
+    history = run_in(case, cycles=2000, stages=4, simulate=simulate)
+    assert history.cycles == [0.0, 500.0, 1000.0, 1500.0]
+    assert seen[0] == 0.0 and all(b > a for a, b in zip(seen, seen[1:], strict=False))
+    assert all(b < a for a, b in zip(history.friction_work, history.friction_work[1:],
+                                     strict=False))
+    first_stage = analyse_contact(case, _combustion_cycle()).wear.shell_wear
+    assert history.shell_wear.sum() < 2000 * first_stage.sum()  # wear slows as it runs in
+    np.testing.assert_allclose(history.shell_wear[:18], 0.0)  # nothing worn 0–90° away

@@ -1,0 +1,104 @@
+"""Running-in (optional): evolve the shell profile with its wear over many cycles, feeding
+the worn profile back into the film thickness as the additive field δ(θ, z) of
+:class:`conrod.film.base.FilmState` (SPEC S4, issue 5).
+
+The cycles are lumped into ``stages``: each stage runs the periodic orbit with the current
+worn profile, takes the shell wear per cycle from :func:`analyse_contact`, and advances the
+profile by that wear × the stage's number of cycles (explicit Euler in the number of
+cycles — wear changes slowly compared with one cycle, which is what makes lumping valid).
+Journal wear is not fed back: the journal turns, so its wear is not fixed in the film frame
+and mostly enlarges the clearance uniformly.
+
+The orbit is run by ``simulate(case, profile)``, where ``profile(theta, z)`` returns δ [m]
+on any film grid (θ [rad], z [m]). The default uses
+``Simulation(case, shell_profile=profile)`` — the orbit solver must pass ``profile`` to its
+film states (and to the hard-contact circle); if it does not accept it, a clear
+:class:`CaseError` says so.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from conrod.contact.wear import worn_profile_deformation
+from conrod.errors import CaseError
+
+Profile = Callable[[np.ndarray, np.ndarray], np.ndarray]
+"""Worn-shell film-thickness field δ(θ [rad], z [m]) -> array (len θ, len z) [m]."""
+
+
+@dataclass
+class RunInResults:
+    """History of a running-in computation.
+
+    element_angle : ndarray  Shell element centre angles [rad].
+    cycles : list  Cycles completed at the start of each stage [-].
+    friction_work : list  Friction work per cycle at each stage [J].
+    max_contact_force : list  Largest contact force at each stage [N].
+    shell_wear : ndarray  Accumulated shell wear depth per element at the end [m].
+    stage_summaries : list  ``summary_items()`` of each stage's contact analysis.
+    """
+
+    element_angle: np.ndarray
+    cycles: list[float] = field(default_factory=list)
+    friction_work: list[float] = field(default_factory=list)
+    max_contact_force: list[float] = field(default_factory=list)
+    shell_wear: np.ndarray | None = None
+    stage_summaries: list[dict[str, Any]] = field(default_factory=list)
+
+
+def profile_from_wear(element_angle: np.ndarray, shell_wear: np.ndarray) -> Profile:
+    """δ(θ, z) of a shell worn by ``shell_wear`` [m] per element (centres ``element_angle``)."""
+    angles, depth = np.array(element_angle, dtype=float), np.array(shell_wear, dtype=float)
+
+    def profile(theta: np.ndarray, z: np.ndarray) -> np.ndarray:
+        return worn_profile_deformation(theta, z, angles, depth)
+
+    return profile
+
+
+def _default_simulate(case, profile: Profile):
+    from conrod.simulation import Simulation
+
+    try:
+        simulation = Simulation(case, shell_profile=profile)
+    except (TypeError, CaseError) as error:
+        raise CaseError(
+            "running-in needs an orbit solver that accepts a worn shell profile "
+            f"(Simulation(case, shell_profile=...)); this one does not ({error})"
+        ) from None
+    return simulation.run().contact
+
+
+def run_in(
+    case, cycles: float, stages: int = 5,
+    simulate: Callable[[Any, Profile], Any] | None = None,
+) -> RunInResults:
+    """Wear the shell in over ``cycles`` engine cycles in ``stages`` orbit runs.
+
+    case : Case with ``[contact]``; cycles : total number of cycles [-] (> 0);
+    stages : number of orbit runs (≥ 1); simulate : ``(case, profile) -> ContactResults``.
+    """
+    if not cycles > 0.0:
+        raise CaseError(f"run_in cycles = {cycles!r}: out of range (allowed: > 0)")
+    if stages < 1:
+        raise CaseError(f"run_in stages = {stages!r}: out of range (allowed: >= 1)")
+    simulate = simulate or _default_simulate
+    elements = case.contact.surface_elements
+    angles = (np.arange(elements) + 0.5) * 2.0 * np.pi / elements
+    wear = np.zeros(elements)
+    history = RunInResults(element_angle=angles)
+    per_stage = cycles / stages
+    for stage in range(stages):
+        contact = simulate(case, profile_from_wear(angles, wear))
+        history.cycles.append(stage * per_stage)
+        history.friction_work.append(contact.work.total)
+        history.max_contact_force.append(contact.max_contact_force)
+        history.stage_summaries.append(contact.summary_items())
+        wear = wear + per_stage * contact.wear.shell_wear
+    history.shell_wear = wear
+    return history
