@@ -8,6 +8,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
+from scipy.optimize import brentq
 
 from conrod.errors import ConvergenceError
 from conrod.mechanism import integrator as rk
@@ -207,31 +208,67 @@ def test_exhausted_step_budget_is_a_convergence_error_naming_the_crank_angle():
         simulate(worn_mechanism(), gas_table(), RunSettings(cycles=1, max_steps=50))
 
 
-def test_free_hertz_impact_matches_the_closed_form():
-    """Rod translating along its axis into the big-end wall (crank radius → 0, piston pin
-    far from its wall, no damping): Hertz impact of a mass m₂ on K δ^{3/2} has
-    δ* = (5 m v²/(4K))^{2/5}, contact time t_c = 2 (δ*/v) ∫₀¹ dx/√(1 − x^{5/2}) ≈ 2.943 δ*/v
-    and rebounds at v (K.L. Johnson, Contact Mechanics, 1985, §11.4)."""
-    omega, speed, stiffness, rod_mass = 100.0, 0.5, 1e13, 0.6
+OMEGA, SPEED, STIFFNESS, ROD_MASS = 100.0, 0.5, 1e13, 0.6
+
+
+def _free_impact(exponent: float, stiffness: float, damping_factor: float):
+    """Rod translating at SPEED along its axis into the big-end wall; crank radius → 0 and
+    the piston pin far from its wall, so only m₂ takes part (force through the centre of
+    mass: no rotation). Returns (angles, states, impacts, big-end penetration)."""
     crank = CrankTrain.with_seed_inertia(crank_radius=1e-12, rod_length=0.145,
-                                         rod_cg_from_big_end=0.04, rod_mass=rod_mass,
-                                         piston_mass=0.45, crank_speed=omega)
-    big = ClearanceJoint(0.048, 100e-6, 100e-6, 0.0, stiffness, 1.5, 0.0, 0.0)
-    small = ClearanceJoint(0.022, 4e-3, 4e-3, 0.0, stiffness, 1.5, 0.0, 0.0)
+                                         rod_cg_from_big_end=0.04, rod_mass=ROD_MASS,
+                                         piston_mass=0.45, crank_speed=OMEGA)
+    big = ClearanceJoint(0.048, 100e-6, 100e-6, 0.0, stiffness, exponent, damping_factor, 0.0)
+    small = ClearanceJoint(0.022, 4e-3, 4e-3, 0.0, stiffness, exponent, 0.0, 0.0)
     mechanism = Mechanism(crank, big, small)
-    y0 = np.array([0.04, speed / omega, 0.0, 0.0, math.pi, 0.0, 0.145, 0.0, 0.0])
+    y0 = np.array([0.04, SPEED / OMEGA, 0.0, 0.0, math.pi, 0.0, 0.145, 0.0, 0.0])
     out = np.linspace(0.0, 0.03, 30001)
-    states, impacts = (lambda r: (r[0], r[1][:r[2]]))(rk.integrate(
-        y0, 0.0, 0.03, mechanism.parameters(), np.zeros(8), error_scale(mechanism, 1e-7),
-        1e-7, 1e-4, True, out, np.array([5e-7, 2e-5]), 10**6, 10))
-    depth = np.array([penetrations(y, a, mechanism.parameters())[0]
-                      for y, a in zip(states, out, strict=True)])
-    peak = (5 * rod_mass * speed**2 / (4 * stiffness)) ** 0.4
+    p = mechanism.parameters()
+    states, impacts, count, _, _, status, _ = rk.integrate(
+        y0, 0.0, 0.03, p, np.zeros(8), error_scale(mechanism, 1e-7), 1e-7, 1e-4, True, out,
+        np.array([5e-7, 2e-5]), 10**6, 10)
+    assert status == rk.OK
+    depth = np.array([penetrations(y, a, p)[0] for y, a in zip(states, out, strict=True)])
+    return out, states, impacts[:count], depth
+
+
+def test_free_hertz_impact_matches_the_closed_form():
+    """Hertz impact of a mass m on K δ^{3/2}: δ* = (5 m v²/(4K))^{2/5}, contact time
+    t_c = 2 (δ*/v) ∫₀¹ dx/√(1 − x^{5/2}) ≈ 2.943 δ*/v, rebound at v
+    (K.L. Johnson, Contact Mechanics, 1985, §11.4)."""
+    out, states, impacts, depth = _free_impact(1.5, STIFFNESS, 0.0)
+    peak = (5 * ROD_MASS * SPEED**2 / (4 * STIFFNESS)) ** 0.4
     integral = quad(lambda x: 1.0 / math.sqrt(1.0 - x**2.5), 0.0, 1.0)[0]
-    contact_time = 2.0 * peak / speed * integral
+    contact_time = 2.0 * peak / SPEED * integral
     in_contact = out[depth > 0.0]
-    assert impacts.shape[0] == 1 and impacts[0, 2] == pytest.approx(speed, rel=1e-6)
+    assert impacts.shape[0] == 1 and impacts[0, 2] == pytest.approx(SPEED, rel=1e-6)
     assert depth.max() == pytest.approx(peak, rel=1e-5)
     # contact time from samples 1e-6 rad apart (≈ 5e-4 of t_c per end)
-    assert (in_contact[-1] - in_contact[0]) / omega == pytest.approx(contact_time, rel=2e-3)
-    assert -states[-1, 1] * omega == pytest.approx(speed, rel=1e-5)  # elastic rebound
+    assert (in_contact[-1] - in_contact[0]) / OMEGA == pytest.approx(contact_time, rel=2e-3)
+    assert -states[-1, 1] * OMEGA == pytest.approx(SPEED, rel=1e-5)  # elastic rebound
+
+
+def test_damped_linear_impact_restitution_matches_the_oscillator_solution():
+    """α = 1: spring-dashpot k δ + β δ̇ with the seed's β = 2μ√(k m₂L₁/L), i.e. damping
+    ratio ζ = μ√(L₁/L) for the mass m₂. δ(t) = (v/ω_d) e^{−ζω_n t} sin ω_d t until the
+    clipped force k δ + β δ̇ reaches 0; the rebound speed is −δ̇ there."""
+    stiffness, mu = 1e9, 0.4
+    out, states, impacts, depth = _free_impact(1.0, stiffness, mu)
+    zeta = mu * math.sqrt(0.04 / 0.145)
+    natural = math.sqrt(stiffness / ROD_MASS)
+    damped = natural * math.sqrt(1.0 - zeta**2)
+
+    def depth_rate(t):
+        decay = math.exp(-zeta * natural * t)
+        ratio = zeta * natural / damped
+        return SPEED * decay * (math.cos(damped * t) - ratio * math.sin(damped * t))
+
+    def force(t):
+        depth_t = SPEED / damped * math.exp(-zeta * natural * t) * math.sin(damped * t)
+        return stiffness * depth_t + 2.0 * zeta * natural * ROD_MASS * depth_rate(t)
+
+    release = brentq(force, 0.5 * math.pi / damped, math.pi / damped)
+    restitution = -depth_rate(release) / SPEED
+    assert 0.2 < restitution < 0.8  # a genuinely damped impact
+    assert impacts.shape[0] == 1
+    assert -states[-1, 1] * OMEGA / SPEED == pytest.approx(restitution, rel=1e-5)
