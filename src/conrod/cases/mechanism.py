@@ -25,7 +25,8 @@ class JointClearanceSection(Section):
     )
     ellipse_angle_deg: float = Field(
         default=0.0, ge=-180.0, le=180.0,
-        description="Angle γ between the ellipse major axis and the rod axis [deg]",
+        description="Angle γ from the rod axis to the ellipse major axis, "
+        "towards y_rod like the shell angle θ [deg]",
     )
     contact_stiffness: float = Field(
         default=1.0e13, gt=0.0, le=1.0e20, description="Contact stiffness c [N/m^exponent]"
