@@ -176,12 +176,12 @@ def test_petroff_limit_of_friction_torque():
 
 
 def test_uniform_deformation_equals_larger_clearance():
-    film = ReynoldsFilm(geometry(1.0), n_theta=72, n_z=16)
+    film = ReynoldsFilm(geometry(1.0), n_theta=72, n_z=16, tolerance=1e-12)
     theta, z = film.grid()
     extra = 2.0e-5
     state = FilmState(0.5 * C, 0.0, journal_speed=OMEGA, viscosity=MU,
                       deformation=np.full((theta.size, z.size), extra))
-    wider = ReynoldsFilm(BearingGeometry(D, D, C + extra), n_theta=72, n_z=16)
+    wider = ReynoldsFilm(BearingGeometry(D, D, C + extra), n_theta=72, n_z=16, tolerance=1e-12)
     same = FilmState(0.5 * C, 0.0, journal_speed=OMEGA, viscosity=MU)
     assert film.force(state) == pytest.approx(wider.force(same), rel=1e-9)
 
@@ -219,3 +219,15 @@ def test_multigrid_and_sor_agree():
     assert multigrid.force_x == pytest.approx(sor.force_x, rel=1e-7)
     assert multigrid.force_y == pytest.approx(sor.force_y, rel=1e-7)
     assert multigrid.side_flow == pytest.approx(sor.side_flow, rel=1e-6)
+
+
+def test_mid_plane_symmetry_shortcut_matches_full_grid():
+    """Solving z ≤ 0 with a mirror plane equals the full-width solve (symmetric hole)."""
+    g = geometry(0.5, feed_holes=(FeedHole(angle=2.5, diameter=0.008),), supply_pressure=2e5)
+    state = FilmState(0.7 * C, -0.2 * C, velocity_x=1e-3, journal_speed=OMEGA, viscosity=MU)
+    half = ReynoldsFilm(g, n_theta=72, n_z=16, tolerance=1e-10).solve(state, with_pressure=True)
+    full = ReynoldsFilm(g, n_theta=72, n_z=16, tolerance=1e-10,
+                        use_symmetry=False).solve(state, with_pressure=True)
+    assert np.max(np.abs(half.pressure - full.pressure)) < 1e-8 * full.max_pressure
+    assert half.pressure == pytest.approx(half.pressure[:, ::-1], abs=1e-12 * full.max_pressure)
+    assert half.side_flow == pytest.approx(full.side_flow, rel=1e-8)

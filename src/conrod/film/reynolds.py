@@ -82,6 +82,8 @@ class ReynoldsFilm:
         'sor' (projected SOR, kept for comparison).
     relaxation : float or None  SOR factor ω [-]; None = :func:`optimal_relaxation`.
     warm_start : bool  Start from the last converged field when available.
+    use_symmetry : bool  Solve only z ≤ 0 when the problem is symmetric about the
+        mid-plane (supply features symmetric, no deformation field; multigrid only).
     """
 
     geometry: BearingGeometry
@@ -94,6 +96,7 @@ class ReynoldsFilm:
     ambient_line_at_max_gap: bool = False
     relaxation: float | None = None
     warm_start: bool = True
+    use_symmetry: bool = True
     name: str = "reynolds"
     _last_pressure: np.ndarray | None = field(default=None, init=False, repr=False)
 
@@ -115,6 +118,8 @@ class ReynoldsFilm:
         self._supply = supply_mask(g, self.film_grid)
         self._edges = edge_mask(self.film_grid)
         self._force_weights = chars.force_weights(self.film_grid)
+        self._symmetric = (self.use_symmetry and self.method == "multigrid"
+                           and np.array_equal(self._supply, self._supply[:, ::-1]))
 
     # ----------------------------------------------------------------- interface
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
@@ -186,6 +191,7 @@ class ReynoldsFilm:
 
     def _sweep(self, level: _Problem, pressure: np.ndarray, state: FilmState,
                tolerance: float) -> tuple[int, float]:
+        symmetric = self._symmetric and state.deformation is None and level.grid.n_z % 4 == 0
         g = level.grid
         a_east, a_north, source = kernel.assemble_coefficients(
             level.h, level.h_rate, g.radius, g.d_theta, g.d_z,
@@ -193,10 +199,9 @@ class ReynoldsFilm:
         )
         pressure[level.fixed] = level.fixed_values[level.fixed]
         if self.method == "multigrid":
-            cycles, change = multigrid.multigrid_solve(
-                pressure, level.h, source, level.fixed, g.radius, g.d_theta, g.d_z,
-                self.geometry.cavitation_pressure, tolerance, self.max_iterations,
-                multigrid.coarse_levels(g.n_theta, g.n_z),
+            cycles, change = multigrid.solve_on_grid(
+                pressure, level.h, source, level.fixed, g, self.geometry.cavitation_pressure,
+                tolerance, self.max_iterations, symmetric,
             )
             sweeps = cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS)
         else:

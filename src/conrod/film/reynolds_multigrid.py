@@ -54,9 +54,12 @@ def conductances(h: np.ndarray, radius: float, d_theta: float, d_z: float):
 
 
 @nb.njit(cache=True)
-def stencil(a_east: np.ndarray, a_north: np.ndarray, mask: np.ndarray):
+def stencil(a_east: np.ndarray, a_north: np.ndarray, mask: np.ndarray, symmetric: bool):
     """Normalised weights w_E, w_W, w_N, w_S = a/a_P and a_P; zero weights and a_P = 1
-    on masked nodes and on the edge rows (their value never changes)."""
+    on masked nodes and on the first and last rows (their value never changes).
+
+    ``symmetric``: the row before last is the mid-plane of a z-symmetric problem and the
+    last row is padding; the mirror node p(z) = p(−z) folds a_N into a_S there."""
     n, m = a_east.shape
     w_e = np.zeros((n, m))
     w_w = np.zeros((n, m))
@@ -74,6 +77,12 @@ def stencil(a_east: np.ndarray, a_north: np.ndarray, mask: np.ndarray):
             w_w[i, j] = a_east[im, j] / total
             w_n[i, j] = a_north[i, j] / total
             w_s[i, j] = a_north[i, j - 1] / total
+            if symmetric and j == m - 2:
+                a_p[i, j] = total + a_north[i, j - 1] - a_north[i, j]
+                w_e[i, j] = a_east[i, j] / a_p[i, j]
+                w_w[i, j] = a_east[im, j] / a_p[i, j]
+                w_s[i, j] = 2.0 * a_north[i, j - 1] / a_p[i, j]
+                w_n[i, j] = 0.0
     return w_e, w_w, w_n, w_s, a_p
 
 
@@ -139,10 +148,11 @@ def relative_change(p, previous):
 
 
 @nb.njit(cache=True)
-def restrict(fine: np.ndarray, coarse_mask: np.ndarray) -> np.ndarray:
-    """Transpose of bilinear prolongation: weighted sums of fine balances (1, ½, ¼)."""
+def restrict(fine: np.ndarray, coarse_mask: np.ndarray, symmetric: bool) -> np.ndarray:
+    """Transpose of bilinear prolongation: weighted sums of fine balances (1, ½, ¼), on
+    the grid of ``coarse_mask``; a symmetric problem mirrors the row above the mid-plane."""
     n, m = fine.shape
-    nc, mc = n // 2, (m - 1) // 2 + 1
+    nc, mc = coarse_mask.shape
     out = np.zeros((nc, mc))
     for ic in range(nc):
         for jc in range(1, mc - 1):
@@ -152,7 +162,10 @@ def restrict(fine: np.ndarray, coarse_mask: np.ndarray) -> np.ndarray:
             for di in range(-1, 2):
                 i = (2 * ic + di) % n
                 for dj in range(-1, 2):
-                    total += (1.0 - 0.5 * abs(di)) * (1.0 - 0.5 * abs(dj)) * fine[i, 2 * jc + dj]
+                    j = 2 * jc + dj
+                    if symmetric and j == m - 1:
+                        j = 2 * jc - 1
+                    total += (1.0 - 0.5 * abs(di)) * (1.0 - 0.5 * abs(dj)) * fine[i, j]
             out[ic, jc] = total
     return out
 
@@ -174,6 +187,20 @@ def add_prolongated(coarse: np.ndarray, fine: np.ndarray, fine_mask: np.ndarray)
 
 
 @nb.njit(cache=True)
+def coarsen(field: np.ndarray, symmetric: bool) -> np.ndarray:
+    """Values at the nodes of the next coarser grid (every other node); a symmetric
+    layout keeps its padding row last."""
+    if not symmetric:
+        return field[::2, ::2].copy()
+    n, m = field.shape
+    real = field[::2, 0 : m - 1 : 2]
+    out = np.empty((real.shape[0], real.shape[1] + 1), dtype=field.dtype)
+    out[:, :-1] = real
+    out[:, -1] = field[::2, m - 1]
+    return out
+
+
+@nb.njit(cache=True)
 def coarsest_relaxation(a_east: np.ndarray, a_north: np.ndarray) -> float:
     """SOR factor for the coarsest grid from the mean conductances (Young) [-]."""
     n, m = a_east.shape
@@ -184,15 +211,16 @@ def coarsest_relaxation(a_east: np.ndarray, a_north: np.ndarray) -> float:
 
 
 @nb.njit(cache=True)
-def correction(rhs_fine, mask_fine, coarse_east, coarse_north):
+def correction(rhs_fine, mask_fine, coarse_east, coarse_north, symmetric):
     """Linear V-cycle for A e = rhs on the coarse levels (lists, fine → coarse); returns
     the correction on the first coarse level."""
     levels = len(coarse_east)
-    masks = [mask_fine[::2, ::2].copy()]
+    masks = [coarsen(mask_fine, symmetric)]
     for level in range(1, levels):
-        masks.append(masks[level - 1][::2, ::2].copy())
-    stencils = [stencil(coarse_east[k], coarse_north[k], masks[k]) for k in range(levels)]
-    sources = [restrict(rhs_fine, masks[0])]
+        masks.append(coarsen(masks[level - 1], symmetric))
+    stencils = [stencil(coarse_east[k], coarse_north[k], masks[k], symmetric)
+                for k in range(levels)]
+    sources = [restrict(rhs_fine, masks[0], symmetric)]
     errors = [np.zeros(masks[0].shape)]
     for k in range(levels):
         w_e, w_w, w_n, w_s, a_p = stencils[k]
@@ -203,7 +231,7 @@ def correction(rhs_fine, mask_fine, coarse_east, coarse_north):
             break
         relax(errors[k], w_e, w_w, w_n, w_s, s, 1.0, -np.inf, PRE_SWEEPS)
         r = residual(errors[k], w_e, w_w, w_n, w_s, s, a_p, masks[k])
-        sources.append(restrict(r, masks[k + 1]))
+        sources.append(restrict(r, masks[k + 1], symmetric))
         errors.append(np.zeros(masks[k + 1].shape))
     for k in range(levels - 2, -1, -1):
         add_prolongated(errors[k + 1], errors[k], masks[k])
@@ -223,15 +251,16 @@ def coarse_levels(n_theta: int, n_z: int, limit: int = 4) -> int:
 
 @nb.njit(cache=True)
 def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressure,
-                    tolerance, max_cycles, n_coarse):
+                    tolerance, max_cycles, n_coarse, symmetric):
     """Projected multigrid cycles in place on ``p`` [Pa] (module docstring).
 
     h : film thickness [m]; source : b of the flux balance [Pa m^4]; fixed : Dirichlet
-    nodes (edge rows included) holding their current value. Returns (cycles, last
-    relative change [-]).
+    nodes (edge rows included) holding their current value; symmetric : arrays hold
+    z ≤ 0 of a z-symmetric problem, the mid-plane row before a padding row (masked).
+    Returns (cycles, last relative change [-]).
     """
     a_east, a_north = conductances(h, radius, d_theta, d_z)
-    w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, fixed)
+    w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, fixed, symmetric)
     s = source / a_p
     n, m = p.shape
     for i in range(n):
@@ -240,9 +269,11 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
                 s[i, j] = p[i, j]
     coarse_east = []
     coarse_north = []
+    coarse_h = h
     for k in range(1, n_coarse + 1):
         step = 2**k
-        a_e, a_n = conductances(h[::step, ::step].copy(), radius, d_theta * step, d_z * step)
+        coarse_h = coarsen(coarse_h, symmetric)
+        a_e, a_n = conductances(coarse_h, radius, d_theta * step, d_z * step)
         coarse_east.append(a_e)
         coarse_north.append(a_n)
     change = np.inf
@@ -254,10 +285,43 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
         if n_coarse > 0:
             mask = fixed | (p <= cavitation_pressure)
             residual(p, w_e, w_w, w_n, w_s, s, a_p, mask, flux_residual)
-            add_prolongated(correction(flux_residual, mask, coarse_east, coarse_north), p, mask)
+            add_prolongated(correction(flux_residual, mask, coarse_east, coarse_north, symmetric),
+                            p, mask)
             np.maximum(p, cavitation_pressure, p)
         relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS)
         change = relative_change(p, previous)
         if change <= tolerance:
             return cycle, change
     return max_cycles, change
+
+
+def _half_with_padding(field: np.ndarray, padding: float | bool | None = None) -> np.ndarray:
+    """Rows z ≤ 0 (mid-plane included) plus one padding row (default: the mirror row)."""
+    mid = (field.shape[1] - 1) // 2
+    half = np.empty((field.shape[0], mid + 2), dtype=field.dtype)
+    half[:, : mid + 1] = field[:, : mid + 1]
+    half[:, -1] = field[:, mid + 1] if padding is None else padding
+    return half
+
+
+def solve_on_grid(pressure, h, source, fixed, grid, cavitation_pressure, tolerance,
+                  max_cycles, symmetric) -> tuple[int, float]:
+    """Projected multigrid on a full (n_θ, n_z + 1) grid, in place on ``pressure`` [Pa];
+    with ``symmetric`` only z ≤ 0 is solved (half the work) and mirrored.
+
+    Returns (cycles, last relative change [-]).
+    """
+    if not symmetric:
+        return multigrid_solve(pressure, h, source, fixed, grid.radius, grid.d_theta,
+                               grid.d_z, cavitation_pressure, tolerance, max_cycles,
+                               coarse_levels(grid.n_theta, grid.n_z), False)
+    mid = grid.n_z // 2
+    half = _half_with_padding(pressure, 0.0)
+    cycles, change = multigrid_solve(
+        half, _half_with_padding(h), _half_with_padding(source, 0.0),
+        _half_with_padding(fixed, True), grid.radius, grid.d_theta, grid.d_z,
+        cavitation_pressure, tolerance, max_cycles, coarse_levels(grid.n_theta, mid), True,
+    )
+    pressure[:, : mid + 1] = half[:, : mid + 1]
+    pressure[:, mid + 1 :] = half[:, mid - 1 :: -1]
+    return cycles, change
