@@ -50,6 +50,8 @@ BIG_END, SMALL_END = 8, 16
 """Offsets of the two joint blocks."""
 DIAMETER, MINOR, ECC_SQ, ELLIPSE_ANGLE, STIFFNESS, EXPONENT, DAMPING, FRICTION = range(8)
 """Entries of a joint block."""
+FX, FY, MOMENT, NORMAL, ELASTIC, RADIAL_RATE, DEPTH_RATE, SLIDE, TANGENTIAL = range(9)
+"""Entries of the tuple returned by :func:`joint_loads`."""
 PARAMETER_COUNT = 24
 STATE_SIZE = 9
 
@@ -143,17 +145,17 @@ def mechanism_rhs(alpha: float, y: np.ndarray, p: np.ndarray, table: np.ndarray)
     sx, sy, svx, svy = small_end_relative(y, p)
     small = joint_loads(sx, sy, svx, svy, phi, phi_rate, 0.0, p, SMALL_END)
     pressure_force = gas_force(alpha, table)
-    moment = (cg * (c * big[1] - s * big[0]) + big[2]
-              - arm * (c * small[1] - s * small[0]) + small[2])
+    moment = (cg * (c * big[FY] - s * big[FX]) + big[MOMENT]
+              - arm * (c * small[FY] - s * small[FX]) + small[MOMENT])
     out = np.empty(STATE_SIZE)
     out[0] = y[1]
-    out[1] = (big[0] + small[0]) / (p[ROD_MASS] * w2)
+    out[1] = (big[FX] + small[FX]) / (p[ROD_MASS] * w2)
     out[2] = y[3]
-    out[3] = (big[1] + small[1]) / (p[ROD_MASS] * w2)
+    out[3] = (big[FY] + small[FY]) / (p[ROD_MASS] * w2)
     out[4] = phi_rate
     out[5] = moment / (p[ROD_INERTIA] * w2)
     out[6] = y[7]
-    out[7] = (-small[0] - pressure_force) / (p[PISTON_MASS] * w2)
+    out[7] = (-small[FX] - pressure_force) / (p[PISTON_MASS] * w2)
     out[8] = _net_power(alpha, y, p, big, small, pressure_force) / omega
     return out
 
@@ -169,12 +171,13 @@ def _net_power(alpha: float, y: np.ndarray, p: np.ndarray, big: tuple, small: tu
     omega, r = p[CRANK_SPEED], p[CRANK_RADIUS]
     pin_vx, pin_vy = -omega * r * math.sin(alpha), omega * r * math.cos(alpha)
     # crank-pin surface point at the contact moves with v_pin − ω₁ (D/2) t; F·t = F_t
-    crank = (big[0] * pin_vx + big[1] * pin_vy
-             - big[8] * omega * 0.5 * p[BIG_END + DIAMETER])
+    crank = (big[FX] * pin_vx + big[FY] * pin_vy
+             - big[TANGENTIAL] * omega * 0.5 * p[BIG_END + DIAMETER])
     gas = -pressure_force * omega * y[7]
     loss = 0.0
     for joint in (big, small):
-        loss += joint[3] * joint[5] - joint[4] * joint[6] - joint[8] * joint[7]
+        loss += (joint[NORMAL] * joint[RADIAL_RATE] - joint[ELASTIC] * joint[DEPTH_RATE]
+                 - joint[TANGENTIAL] * joint[SLIDE])
     return crank + gas - loss
 
 

@@ -139,7 +139,7 @@ def sample_columns(alpha, states, p, table):
         small = k.joint_loads(sx, sy, svx, svy, phi, y[5], 0.0, p, k.SMALL_END)
         depths = k.penetrations(y, alpha[i], p)
         out[0, i], out[1, i] = depths[0], depths[1]
-        out[2, i], out[3, i] = big[3], small[3]
+        out[2, i], out[3, i] = big[k.NORMAL], small[k.NORMAL]
         out[4, i] = k.gas_force(alpha[i], table)
         # journal relative to shell, rod frame: e = −(cos φ, sin φ) points to the small end
         c, s = -math.cos(phi), -math.sin(phi)
@@ -149,5 +149,5 @@ def sample_columns(alpha, states, p, table):
                                            + p[k.ROD_INERTIA] * y[5] ** 2
                                            + p[k.PISTON_MASS] * y[7] ** 2)
         out[10, i] = k.mechanical_energy(y, alpha[i], p)
-        out[11, i], out[12, i] = big[8], small[8]
+        out[11, i], out[12, i] = big[k.TANGENTIAL], small[k.TANGENTIAL]
     return out
