@@ -206,6 +206,7 @@ class MassConservingFilm:
         cycles, change = multigrid.multigrid_solve(
             gauge, f.h, -source, ~active, grid.radius, grid.d_theta, grid.d_z, p_cav,
             self.tolerance, self.max_iterations, multigrid.coarse_levels(grid.n_theta, grid.n_z),
+            False,  # full width: a broken film need not be symmetric about the mid-plane
         )
         pressure[:] = np.maximum(gauge - p_cav, 0.0)
         return cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS), change

@@ -53,9 +53,9 @@ class MobilityFilm:
     geometry: BearingGeometry
     n_theta: int = 72
     n_z: int = 16
-    n_eps: int = 24
+    n_eps: int = 28
     n_direction: int = 48
-    eccentricity_max: float = 0.98
+    eccentricity_max: float = 0.995
     base: FilmModel | None = None
     cache_dir: str | Path | None = None
     use_cache: bool = True

@@ -33,7 +33,9 @@ import numpy as np
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 from conrod.film.table_kernel import (
+    CLUSTERING,
     WEIGHT_POWER,
+    direction_of,
     interpolate,
     squeeze_velocity,
     stretched,
@@ -42,7 +44,7 @@ from conrod.film.table_kernel import (
 )
 from conrod.io.atomic import atomic_path
 
-TABLE_FORMAT = 2
+TABLE_FORMAT = 3
 """Bumped whenever the stored content changes meaning (part of the cache key) [-]."""
 DEFAULT_CACHE_DIR = Path.home() / ".cache" / "conrod" / "tables"
 QUANTITIES = ("log_magnitude", "turning", "side_flow", "supply_flow", "max_pressure",
@@ -91,9 +93,9 @@ class TabulatedFilm:
     """
 
     base: FilmModel
-    n_eps: int = 24
+    n_eps: int = 28
     n_direction: int = 48
-    eccentricity_max: float = 0.98
+    eccentricity_max: float = 0.995
     cache_dir: str | Path | None = None
     use_cache: bool = True
     name: str = "table"
@@ -119,7 +121,7 @@ class TabulatedFilm:
         payload = {
             "format": TABLE_FORMAT, "geometry": dataclasses.asdict(self.geometry),
             "base": base_description(self.base),
-            "grid": [self.n_eps, self.n_direction, self.eccentricity_max],
+            "grid": [self.n_eps, self.n_direction, self.eccentricity_max, CLUSTERING],
         }
         text = json.dumps(payload, sort_keys=True, default=str)
         return hashlib.sha256(text.encode()).hexdigest()
@@ -145,8 +147,9 @@ class TabulatedFilm:
         return tables
 
     def directions(self) -> np.ndarray:
-        """Squeeze-velocity directions β_k = −π + 2πk/n [rad]."""
-        return -math.pi + 2.0 * math.pi * np.arange(self.n_direction) / self.n_direction
+        """Squeeze-velocity directions β_k = β(u_k), u_k = −π + 2πk/n [rad] (clustered)."""
+        uniform = -math.pi + 2.0 * math.pi * np.arange(self.n_direction) / self.n_direction
+        return np.array([direction_of(u) for u in uniform])
 
     def eccentricities(self) -> np.ndarray:
         """Eccentricity nodes ε_j = 1 − exp(−j Δs) [-]."""
@@ -260,8 +263,8 @@ def build_squeeze_tables(
 ) -> dict[str, np.ndarray]:
     """Solve ``base`` at every (ε_j, β_k) squeeze node; tables of shape (n_eps, n_direction).
 
-    ``directions`` are uniform from −π. Only β ∈ [0, π] is solved: the mirror image about
-    the line of centres gives |f̄|(−β) = |f̄|(β), A(−β) = −A(β).
+    ``directions`` are symmetric, β_{n−k} = −β_k, from β_0 = −π. Only β ∈ [0, π] is solved:
+    the mirror image about the line of centres gives |f̄|(−β) = |f̄|(β), A(−β) = −A(β).
     """
     c = base.geometry.radial_clearance
     speed = c * REFERENCE_RATE
@@ -272,7 +275,7 @@ def build_squeeze_tables(
     mirror = {"turning", "peak_sin"}
     for j, eps in enumerate(eccentricities):
         for k in range(n_direction // 2, n_direction + 1):
-            beta = -math.pi + k * 2.0 * math.pi / n_direction
+            beta = math.pi if k == n_direction else float(directions[k])
             state = FilmState(eps * c, 0.0, speed * math.cos(beta), speed * math.sin(beta),
                               viscosity=REFERENCE_VISCOSITY)
             row = _table_row(base.solve(state), beta, eps, scale * force_scale, speed, scale)
