@@ -36,7 +36,7 @@ def test_numerical_mobility_against_direct_reynolds(tmp_path):
     """Default map (24 ε × 48 directions) from ReynoldsFilm 48×8 (coarse for test time).
 
     The velocities it predicts reproduce the load through direct solves on the same grid:
-    measured RMS 0.9 %, max 3.9 % (one of 20 points; on 72×16 the max is 2.0 %). On a coarse
+    measured RMS 0.9 %, max 3.7 % (one of 20 points; on 144×32 the max is 0.6 %). On a coarse
     grid the discrete cavitation boundary jumps from node to node, so the map is only
     piecewise smooth; bounds: RMS < 1.5 %, max < 5 %."""
     geometry = BearingGeometry(0.05, 0.05, 2.5e-5)
