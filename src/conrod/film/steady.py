@@ -33,7 +33,7 @@ from scipy.optimize import brentq
 
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film import characteristics as chars
-from conrod.film.base import BearingGeometry, FilmResult, FilmState, Groove
+from conrod.film.base import BearingGeometry, FilmResult, FilmState, Groove, film_thickness
 from conrod.film.reynolds import ReynoldsFilm
 from conrod.film.short_bearing import ShortBearingFilm
 
@@ -119,11 +119,22 @@ def _film_end_angle(pressure: np.ndarray, grid: chars.FilmGrid) -> float:
     return float(grid.theta[last] + min(step, 1.0) * grid.d_theta)
 
 
+def _pressure_grid(film, result: FilmResult) -> chars.FilmGrid | None:
+    """The model's FilmGrid when it returned a pressure field on it (grid models)."""
+    grid = getattr(film, "film_grid", None)
+    if isinstance(grid, chars.FilmGrid) and result.pressure is not None and (
+        result.pressure.shape == (grid.n_theta, grid.n_z + 1)
+    ):
+        return grid
+    return None
+
+
 def _flows(film, result: FilmResult, state: FilmState) -> tuple[float, float]:
     """(Q inflow at the inlet line, Q_s side flow) [m^3/s]."""
-    if isinstance(film, ReynoldsFilm):
-        grid = film.film_grid
-        h = film._problem(state).h
+    grid = _pressure_grid(film, result)
+    if grid is not None:
+        h = film_thickness(film.geometry, state.eccentricity_x, state.eccentricity_y,
+                           grid.theta, np.zeros(result.pressure.shape))
         speed = grid.radius * (state.journal_speed + state.shell_speed)
         inflow = chars.circumferential_flow(result.pressure, h, grid, grid.n_theta // 2, 1,
                                             speed, state.viscosity)
@@ -167,8 +178,9 @@ def _dimensionless(film, geometry: BearingGeometry, state: FilmState, result: Fi
         raise ConvergenceError("steady film carries no load", where=f"eps = {eccentricity}")
     unit_load = load / (2.0 * R * L)
     inflow, side = _flows(film, result, state)
-    if isinstance(film, ReynoldsFilm):
-        film_end = _film_end_angle(result.pressure, film.film_grid)
+    grid = _pressure_grid(film, result)
+    if grid is not None:
+        film_end = _film_end_angle(result.pressure, grid)
     elif model == "short":
         film_end = 0.0  # half-Sommerfeld: the film ends at h_min
     else:
