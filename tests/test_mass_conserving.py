@@ -169,3 +169,25 @@ def test_sor_and_multigrid_instants_agree_with_a_broken_film():
     assert results[0].force_y == pytest.approx(results[1].force_y, rel=1e-6)
     scale = np.abs(results[1].history_rate).max()
     assert np.abs(results[0].history_rate - results[1].history_rate).max() < 1e-5 * scale
+
+
+def test_bad_inputs_raise_case_errors():
+    model = MassConservingFilm(BearingGeometry(0.05, 0.025, 2.5e-5), n_theta=16, n_z=4)
+    with pytest.raises(CaseError, match="touches the shell"):
+        model.solve(FilmState(2.6e-5, 0.0, journal_speed=100.0))
+    with pytest.raises(CaseError, match="deformation shape"):
+        model.solve(FilmState(1e-5, 0.0, journal_speed=100.0, deformation=np.zeros((16, 4))))
+    with pytest.raises(CaseError, match="viscosity"):
+        model.solve(FilmState(1e-5, 0.0, journal_speed=100.0, viscosity=0.0))
+
+
+def test_deformation_field_is_additive():
+    """A uniform δ is the same as a larger clearance (h = c − e·n + δ)."""
+    geometry = BearingGeometry(0.05, 0.025, 2.5e-5)
+    wider = BearingGeometry(0.05, 0.025, 3.0e-5)
+    state = FilmState(1.5e-5, 0.0, journal_speed=200.0, viscosity=0.02)
+    model = MassConservingFilm(geometry, n_theta=32, n_z=8, tolerance=1e-10)
+    deformed = model.solve(FilmState(**{**state.__dict__,
+                                        "deformation": np.full((32, 9), 0.5e-5)}))
+    reference = MassConservingFilm(wider, n_theta=32, n_z=8, tolerance=1e-10).solve(state)
+    assert deformed.force_y == pytest.approx(reference.force_y, rel=1e-8)

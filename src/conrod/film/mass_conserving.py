@@ -138,6 +138,11 @@ class MassConservingFilm:
         g = self.geometry
         dx, dz = self.spacing()
         mu = state.viscosity
+        if not mu > 0.0:
+            raise CaseError(f"viscosity = {mu!r} Pa s: out of range (allowed: > 0 Pa s)")
+        if state.deformation is not None and np.shape(state.deformation) != self._edge.shape:
+            raise CaseError(f"deformation shape = {np.shape(state.deformation)}: allowed "
+                            f"{self._edge.shape} = (n_theta, n_z + 1) [m]")
         rigid = (g.radial_clearance - state.eccentricity_x * self._cos
                  - state.eccentricity_y * self._sin)
         h = np.repeat(rigid, self.n_z + 1, axis=1)
@@ -278,7 +283,7 @@ class MassConservingFilm:
 
     def _check(self, sweeps: int, change: float, state: FilmState) -> None:
         self.last_iterations = sweeps
-        if sweeps >= self.max_iterations:
+        if not change <= self.tolerance:
             raise ConvergenceError(
                 f"mass-conserving film did not converge in {sweeps} sweeps",
                 where=f"e = ({state.eccentricity_x:.3e}, {state.eccentricity_y:.3e}) m",
