@@ -171,7 +171,7 @@ def main() -> None:
     rows.append(f"| short (`force()`, Python call) | – | – | – | {1e3 * short['python']:.4f} "
                 "| – | |")
     table = time_table()
-    rows.append(f"| table build (24 ε × 48 dir over reynolds 144×32) | – | "
+    rows.append(f"| table build (28 ε × 48 dir over reynolds 144×32) | – | "
                 f"{1e3 * table['build']:.0f} | – | {1e3 * table['lookup']:.4f} | – | "
                 f"look-up per call; max error {100 * table['error_max']:.2f} % (ε ≤ 0.9) |")
     rows.append(f"| mobility `journal_velocity` | – | – | – | {1e3 * table['mobility']:.4f} "
