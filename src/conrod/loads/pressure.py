@@ -11,6 +11,7 @@ pressure [Pa]; the gas force uses the gauge pressure p − p_ambient.
 
 from __future__ import annotations
 
+import abc
 import csv
 import math
 from dataclasses import dataclass
@@ -50,11 +51,12 @@ class CylinderPressure(Protocol):
         ...
 
 
-class _GaugeMixin:
+class _GaugeMixin(abc.ABC):
     ambient: float
 
-    def absolute(self, crank_angle: np.ndarray) -> np.ndarray:  # pragma: no cover - abstract
-        raise NotImplementedError
+    @abc.abstractmethod
+    def absolute(self, crank_angle: np.ndarray) -> np.ndarray:
+        """Absolute pressure [Pa] at crank angles [rad]."""
 
     def gauge(self, crank_angle: np.ndarray) -> np.ndarray:
         """Gauge pressure p − p_ambient [Pa] at crank angles [rad]."""
