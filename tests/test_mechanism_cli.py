@@ -6,6 +6,7 @@ import csv
 import json
 import math
 import tomllib
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -17,7 +18,7 @@ from conrod.cases.case import Case
 from conrod.cli import mechanism_command
 from conrod.errors import CaseError
 from conrod.mechanism.setup import mechanism_case
-from conrod.mechanism.sweep import parse_sweep_option
+from conrod.mechanism.sweep import parse_sweep_option, run_sweep
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "seed003_worn_rod_bearings.toml"
 MECHANISM_COLUMNS = {"crank_angle_deg", "piston_position_m", "big_end_gap_m", "small_end_gap_m",
@@ -165,3 +166,13 @@ def test_example_case_maps_seed_symbols_to_si():
     area = math.pi * 0.081**2 / 4
     compression_end = 0.10e6 * 16.5**1.36  # seed 003: p_c = p_a ε^n1 at firing TDC
     assert run.gas_table[0] == pytest.approx(area * (compression_end - 0.1e6), rel=1e-9)
+
+
+@pytest.mark.slow
+def test_parallel_sweep_gives_the_same_table():
+    base = mechanism_case(Case.from_toml(EXAMPLE))
+    base = replace(base, settings=replace(base.settings, cycles=1, tolerance=1e-3))
+    serial = run_sweep(base, [2500.0, 3000.0], [0.5])
+    parallel = run_sweep(base, [2500.0, 3000.0], [0.5], jobs=2)
+    for name, column in serial.columns().items():
+        np.testing.assert_array_equal(parallel.columns()[name], column)

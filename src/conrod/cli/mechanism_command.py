@@ -1,4 +1,4 @@
-"""``conrod mechanism CASE.toml --out DIR [--sweep speed=A:B:N --sweep load=A:B:N]``.
+"""``conrod mechanism CASE.toml --out DIR [--sweep speed=A:B:N --sweep load=A:B:N] [--jobs N]``.
 
 Single run writes ``mechanism.csv`` (last cycle), ``impacts.csv`` (every cycle but the
 first, which holds the start-up transient),
@@ -132,6 +132,8 @@ def register(app: typer.Typer) -> None:
         sweep: Annotated[list[str] | None, typer.Option(
             "--sweep", help="speed=START:STOP:COUNT \\[rpm] or load=START:STOP:COUNT \\[-]; "
             "repeatable")] = None,
+        jobs: Annotated[int, typer.Option(
+            "--jobs", min=1, help="Worker processes for --sweep (1 = in this process)")] = 1,
     ) -> None:
         """Slider-crank with clearances in both rod bearings: gaps, forces, impacts (seed 003)."""
         case = Case.from_toml(case_file)
@@ -140,7 +142,8 @@ def register(app: typer.Typer) -> None:
             speeds, loads = sweep_values(sweep, base)
             started = time.perf_counter()
             with typer.progressbar(length=speeds.size * loads.size, label="sweep") as bar:
-                result = run_sweep(base, speeds, loads, progress=lambda done, total: bar.update(1))
+                result = run_sweep(base, speeds, loads, jobs=jobs,
+                                   progress=lambda done, total: bar.update(1))
             best = write_sweep_outputs(result, out, time.perf_counter() - started)
             typer.echo(f"most informative regime: {best['speed_rpm']:g} rpm, load "
                        f"{best['load_scale']:g} (κ = {best['impact_velocity_ratio']:.3g}) -> {out}")
