@@ -114,3 +114,18 @@ def test_worn_profile_deformation_on_a_film_grid():
     assert delta[19, 2] == pytest.approx(2e-6)  # θ = 95° after 1000 cycles, uniform in z
     assert np.all(delta[:, 0] == delta[:, 4]) and np.all(delta >= 0.0)
     assert delta[0, 0] == 0.0
+
+
+def test_element_maximum_follows_the_contact_point():
+    """Seed Fig. 4.4.1: a stress pulse at a fixed shell point marks one shell element, and the
+    journal elements that pass under it (journal-fixed angle θ − ψ)."""
+    from conrod.contact.friction_work import element_maximum
+
+    deg = np.degrees(PHI)
+    stress = np.where((deg > 10.0) & (deg < 50.0), 3.0e7, 0.0)
+    contact_angle = np.full(PHI.size, math.radians(180.5))
+    journal, shell = element_maximum(stress, contact_angle, PHI, PHI, 360)
+    assert shell[180] == 3.0e7 and np.count_nonzero(shell) == 1
+    touched = np.flatnonzero(journal)  # 180.5° − ψ for ψ from ~10° to ~50°
+    assert touched.min() >= 129 and touched.max() <= 171
+    assert np.max(journal) == 3.0e7

@@ -18,7 +18,12 @@ from typing import Any
 import numpy as np
 
 from conrod.contact.asperity import AsperityParameters, asperity_force
-from conrod.contact.friction_work import FrictionWork, cycle_length, friction_work_distribution
+from conrod.contact.friction_work import (
+    FrictionWork,
+    cycle_length,
+    element_maximum,
+    friction_work_distribution,
+)
 from conrod.contact.hertz import (
     contact_modulus,
     hertz_half_width,
@@ -82,6 +87,10 @@ class ContactResults:
     """Maximum film pressure from the orbit [Pa]."""
     model: str
     """Contact model ('hard' or 'greenwood_tripp') [-]."""
+    journal_stress: np.ndarray | None = None
+    """Largest Hertz stress each journal element sees over the cycle [Pa] (Fig. 4.4.1)."""
+    shell_stress: np.ndarray | None = None
+    """Largest Hertz stress each shell element sees over the cycle [Pa] (Fig. 4.4.1)."""
 
     @property
     def max_contact_force(self) -> float:
@@ -183,11 +192,16 @@ def analyse_contact(case, cycle) -> ContactResults:
         radius, section.surface_elements, cycle_rad,
     )
     peak_load = float(np.max(np.hypot(cycle.load_x, cycle.load_y)))
+    stress = hertz_line_contact_pressure(force, width, radius, shell_radius, modulus)
+    journal_stress, shell_stress = element_maximum(
+        stress, angle, np.asarray(cycle.journal_rotation, dtype=float), crank_angle,
+        section.surface_elements, cycle_rad,
+    )
     return ContactResults(
         crank_angle=crank_angle,
         contact_force=force,
         friction_force=friction,
-        hertz_stress=hertz_line_contact_pressure(force, width, radius, shell_radius, modulus),
+        hertz_stress=stress,
         hertz_half_width=hertz_half_width(force, width, radius, shell_radius, modulus),
         intervals=contact_intervals(
             crank_angle, force, section.contact_threshold_ratio * peak_load, cycle_rad
@@ -202,4 +216,6 @@ def analyse_contact(case, cycle) -> ContactResults:
         h_min=np.asarray(cycle.h_min, dtype=float),
         p_max=np.asarray(cycle.p_max, dtype=float),
         model=section.model,
+        journal_stress=journal_stress,
+        shell_stress=shell_stress,
     )

@@ -50,6 +50,42 @@ def deposit_along_arc(bins: np.ndarray, start: float, end: float, amount: float)
 
 
 @nb.njit(cache=True)
+def _raise_along_arc(bins: np.ndarray, start: float, end: float, value: float) -> None:
+    """bins[k] = max(bins[k], value) for every element the arc start → end [rad] touches."""
+    count = bins.size
+    width = 2.0 * math.pi / count
+    first = int(math.floor(min(start, end) / width))
+    last = int(math.floor(max(start, end) / width))
+    for k in range(first, last + 1):
+        bins[k % count] = max(bins[k % count], value)
+
+
+@nb.njit(cache=True)
+def _element_maximum(values, shell_path, journal_path, elements):
+    shell = np.zeros(elements)
+    journal = np.zeros(elements)
+    for i in range(values.size - 1):
+        peak = max(values[i], values[i + 1])
+        if peak > 0.0:
+            _raise_along_arc(shell, shell_path[i], shell_path[i + 1], peak)
+            _raise_along_arc(journal, journal_path[i], journal_path[i + 1], peak)
+    return journal, shell
+
+
+def element_maximum(
+    values: np.ndarray, contact_angle: np.ndarray, journal_rotation: np.ndarray,
+    crank_angle: np.ndarray, elements: int, cycle: float | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Largest value (e.g. contact stress [Pa]) each journal and shell element sees over the
+    cycle while the contact point passes over it (seed 004 Fig. 4.4.1); (journal, shell)."""
+    cycle = cycle_length(crank_angle) if cycle is None else cycle
+    _, psi = close_cycle(crank_angle, journal_rotation, cycle)
+    theta = np.unwrap(np.append(contact_angle, contact_angle[0]).astype(float))
+    closed = np.append(values, values[0]).astype(float)
+    return _element_maximum(closed, theta, theta - psi, int(elements))
+
+
+@nb.njit(cache=True)
 def _distribute(step_work, shell_path, journal_path, elements):
     shell = np.zeros(elements)
     journal = np.zeros(elements)

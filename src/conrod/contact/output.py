@@ -24,9 +24,11 @@ def write_wear_tables(contact, out_dir: Path) -> list[Path]:
 
 
 def write_contact_figures(contact, out_dir: Path) -> list[Path]:
-    """contact_cycle.png (seed Fig. 4.3.2), wear_unrolled.png and wear_polar.png (Fig. 4.5.1)."""
+    """contact_cycle.png (seed Fig. 4.3.2), wear_unrolled.png and wear_polar.png (Fig. 4.5.1),
+    contact_stress_surfaces.png (Fig. 4.4.1)."""
     from conrod.plotting.contact_plots import (
         plot_contact_cycle,
+        plot_contact_stress_surfaces,
         plot_wear_polar,
         plot_wear_unrolled,
     )
@@ -36,6 +38,7 @@ def write_contact_figures(contact, out_dir: Path) -> list[Path]:
         save_figure(plot_contact_cycle(contact), out_dir / "contact_cycle.png"),
         save_figure(plot_wear_unrolled(contact), out_dir / "wear_unrolled.png"),
         save_figure(plot_wear_polar(contact), out_dir / "wear_polar.png"),
+        save_figure(plot_contact_stress_surfaces(contact), out_dir / "contact_stress_surfaces.png"),
     ]
 
 

@@ -81,3 +81,20 @@ def plot_wear_polar(contact) -> Figure:
         axis.set_title(f"{name}: friction work per element [J]")
     figure.tight_layout()
     return figure
+
+
+def plot_contact_stress_surfaces(contact) -> Figure:
+    """Seed 004 Fig. 4.4.1: largest Hertz contact stress seen by each element of the journal
+    and of the shell over the cycle."""
+    angle = np.degrees(contact.wear.element_angle)
+    figure = Figure(figsize=(8.0, 4.0))
+    axis = figure.subplots()
+    axis.plot(angle, contact.journal_stress / 1e6, label="journal (angle from journal mark)")
+    axis.plot(angle, contact.shell_stress / 1e6, label="shell (film-frame θ)", ls="--")
+    axis.set_xlabel("surface angle [deg]")
+    axis.set_ylabel("max contact stress [MPa]")
+    axis.set_xlim(0.0, 360.0)
+    axis.grid(alpha=0.3)
+    axis.legend()
+    figure.tight_layout()
+    return figure
