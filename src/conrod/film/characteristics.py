@@ -26,8 +26,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
+
+
+def _read_only(array: np.ndarray) -> np.ndarray:
+    array.flags.writeable = False
+    return array
 
 
 @dataclass(frozen=True)
@@ -45,15 +51,15 @@ class FilmGrid:
     n_theta: int
     n_z: int
 
-    @property
+    @cached_property
     def theta(self) -> np.ndarray:
-        """Circumferential nodes θ_i = iΔθ [rad]."""
-        return np.arange(self.n_theta) * self.d_theta
+        """Circumferential nodes θ_i = iΔθ [rad] (read-only, cached)."""
+        return _read_only(np.arange(self.n_theta) * self.d_theta)
 
-    @property
+    @cached_property
     def z(self) -> np.ndarray:
-        """Axial nodes [m]."""
-        return np.linspace(-0.5 * self.width, 0.5 * self.width, self.n_z + 1)
+        """Axial nodes [m] (read-only, cached)."""
+        return _read_only(np.linspace(-0.5 * self.width, 0.5 * self.width, self.n_z + 1))
 
     @property
     def d_theta(self) -> float:
@@ -65,18 +71,18 @@ class FilmGrid:
         """Axial spacing Δz [m]."""
         return self.width / self.n_z
 
-    @property
+    @cached_property
     def axial_weights(self) -> np.ndarray:
         """Trapezoid weights of the axial nodes [m]."""
         weights = np.full(self.n_z + 1, self.d_z)
         weights[[0, -1]] *= 0.5
-        return weights
+        return _read_only(weights)
 
-    @property
+    @cached_property
     def area_weights(self) -> np.ndarray:
         """Area of each node's control volume R Δθ w_j, shape (n_θ, n_z + 1) [m^2]."""
         row = self.radius * self.d_theta * self.axial_weights
-        return np.broadcast_to(row, (self.n_theta, self.n_z + 1))
+        return _read_only(np.broadcast_to(row, (self.n_theta, self.n_z + 1)).copy())
 
     def integrate(self, field: np.ndarray) -> float:
         """∫∫ field R dθ dz over the film [field unit × m^2]."""
