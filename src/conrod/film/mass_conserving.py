@@ -61,6 +61,7 @@ class FilmFields:
     edge: np.ndarray
     supply: np.ndarray
     fixed_pressure: np.ndarray
+    has_deformation: bool = False
 
     @property
     def free(self) -> np.ndarray:
@@ -83,7 +84,8 @@ class MassConservingFilm:
         or over the full 360° (Raimondi & Boyd's convention).
     method : 'multigrid' | 'sor'  Full-film solver of a transient instant: the projected
         multigrid of :mod:`conrod.film.reynolds_multigrid` (broken-film nodes held at p_cav
-        like Dirichlet nodes) or plain projected SOR.
+        like Dirichlet nodes; only z ≤ 0 is solved when film fraction, sources and supply
+        are mirror-symmetric about the mid-plane) or plain projected SOR.
     """
 
     geometry: BearingGeometry
@@ -162,6 +164,7 @@ class MassConservingFilm:
             couette_east=(6.0 * mu * speed * dz) * h_east,
             squeeze=np.repeat(12.0 * mu * dx * dz * dh_dt, self.n_z + 1, axis=1),
             edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed.copy(),
+            has_deformation=state.deformation is not None,
         )
 
     # ------------------------------------------------------------------ transient
@@ -207,11 +210,12 @@ class MassConservingFilm:
         from conrod.film import reynolds_multigrid as multigrid
 
         gauge = pressure + p_cav
-        grid = self.film_grid
-        cycles, change = multigrid.multigrid_solve(
-            gauge, f.h, -source, ~active, grid.radius, grid.d_theta, grid.d_z, p_cav,
-            self.tolerance, self.max_iterations, multigrid.coarse_levels(grid.n_theta, grid.n_z),
-            False,  # full width: a broken film need not be symmetric about the mid-plane
+        symmetric = (not f.has_deformation and self.n_z % 4 == 0
+                     and np.array_equal(active, active[:, ::-1])
+                     and np.array_equal(source, source[:, ::-1]))
+        cycles, change = multigrid.solve_on_grid(
+            gauge, f.h, -source, ~active, self.film_grid, p_cav, self.tolerance,
+            self.max_iterations, symmetric,
         )
         pressure[:] = np.maximum(gauge - p_cav, 0.0)
         return cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS), change
