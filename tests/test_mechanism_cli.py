@@ -176,3 +176,14 @@ def test_parallel_sweep_gives_the_same_table():
     parallel = run_sweep(base, [2500.0, 3000.0], [0.5], jobs=2)
     for name, column in serial.columns().items():
         np.testing.assert_array_equal(parallel.columns()[name], column)
+
+
+def test_python_snippets_of_the_mechanism_docs_run(repo, monkeypatch):
+    text = (repo / "docs" / "mechanism.md").read_text(encoding="utf-8")
+    snippets = [block.split("```", 1)[0] for block in text.split("```python\n")[1:]]
+    assert snippets
+    monkeypatch.chdir(repo)
+    for snippet in snippets:
+        namespace: dict = {}
+        exec(compile(snippet, "docs/mechanism.md", "exec"), namespace)
+        assert namespace["sweep"].best()["speed_rpm"] in (1000.0, 2000.0, 3000.0)
