@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from conrod.contact.asperity import AsperityParameters, asperity_force
+from conrod.contact.asperity import AsperityParameters, asperity_force_array
 from conrod.contact.friction_work import (
     FrictionWork,
     cycle_length,
@@ -148,12 +148,10 @@ def _contact_from_asperity(case, cycle) -> tuple[np.ndarray, np.ndarray]:
     params = AsperityParameters.from_case(case).kernel_parameters(
         0.5 * bearing.diameter, bearing.width
     )
-    forces = np.array([
-        asperity_force(float(x), float(y), bearing.radial_clearance, params)
-        for x, y in zip(cycle.eccentricity_x, cycle.eccentricity_y, strict=True)
-    ])
-    angle = np.arctan2(cycle.eccentricity_y, cycle.eccentricity_x)
-    return np.hypot(forces[:, 0], forces[:, 1]), angle
+    ex = np.ascontiguousarray(cycle.eccentricity_x, dtype=float)
+    ey = np.ascontiguousarray(cycle.eccentricity_y, dtype=float)
+    fx, fy = asperity_force_array(ex, ey, float(bearing.radial_clearance), params)
+    return np.hypot(fx, fy), np.arctan2(ey, ex)
 
 
 def _contact_force_and_angle(case, cycle) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -151,6 +151,18 @@ def asperity_force(
     return -radial * ex / e, -radial * ey / e
 
 
+@nb.njit(cache=True)
+def asperity_force_array(
+    ex: np.ndarray, ey: np.ndarray, clearance: float, params: tuple[float, float, float, float]
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`asperity_force` for arrays of centre positions (ex, ey) [m] → (F_x, F_y) [N]."""
+    fx = np.empty(ex.size)
+    fy = np.empty(ex.size)
+    for i in range(ex.size):
+        fx[i], fy[i] = asperity_force(ex[i], ey[i], clearance, params)
+    return fx, fy
+
+
 @dataclass(frozen=True)
 class AsperityParameters:
     """Greenwood–Tripp surface and material parameters.
