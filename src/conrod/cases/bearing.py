@@ -94,8 +94,9 @@ class BearingSection(Section):
     def _check_features_inside_width(self) -> None:
         half = 0.5 * self.width
         allowed = f">= {-half:g} and <= {half:g}"
-        for kind, features in (("grooves", self.grooves), ("feed_holes", self.feed_holes)):
-            for k, feature in enumerate(features):
-                if abs(feature.axial_position) > half:
-                    raise range_error(f"bearing.{kind}[{k}].axial_position",
-                                      feature.axial_position, allowed, "m")
+        positions = [(f"grooves[{k}]", g.axial_position) for k, g in enumerate(self.grooves)]
+        positions += [(f"feed_holes[{k}]", h.axial_position)
+                      for k, h in enumerate(self.feed_holes)]
+        for name, position in positions:
+            if abs(position) > half:
+                raise range_error(f"bearing.{name}.axial_position", position, allowed, "m")

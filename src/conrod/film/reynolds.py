@@ -221,9 +221,10 @@ class ReynoldsFilm:
 
     def _solve_pressure(self, problem: _Problem, state: FilmState) -> tuple[np.ndarray, dict]:
         """Converged pressure [Pa] on the fine grid and solver diagnostics."""
-        warm = self.warm_start and self._last_pressure is not None
-        if warm:
-            pressure = self._last_pressure.copy()
+        last = self._last_pressure if self.warm_start else None
+        warm = last is not None
+        if last is not None:
+            pressure = last.copy()
             sweeps, change = self._sweep(problem, pressure, state, self.tolerance)
             total = sweeps
         else:

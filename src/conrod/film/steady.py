@@ -34,7 +34,7 @@ from scipy.optimize import brentq
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film import characteristics as chars
 from conrod.film.base import BearingGeometry, FilmResult, FilmState, Groove, film_thickness
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds import FrictionConvention, ReynoldsFilm
 from conrod.film.short_bearing import ShortBearingFilm
 
 SteadyModel = Literal["reynolds", "mass_conserving", "short"]
@@ -87,8 +87,11 @@ def make_film(model: SteadyModel, geometry: BearingGeometry, grid: tuple[int, in
               friction: str = "full_film"):
     """Film model under Raimondi–Boyd conditions; journal centre later placed on +x."""
     n_theta, n_z = grid
+    if friction not in ("full_film", "film_fraction"):
+        raise CaseError(f"friction = {friction!r}: allowed full_film, film_fraction")
+    convention: FrictionConvention = "full_film" if friction == "full_film" else "film_fraction"
     if model == "reynolds":
-        return ReynoldsFilm(geometry, n_theta=n_theta, n_z=n_z, friction=friction,
+        return ReynoldsFilm(geometry, n_theta=n_theta, n_z=n_z, friction=convention,
                             ambient_line_at_max_gap=True)
     if model == "short":
         return ShortBearingFilm(geometry)
@@ -119,11 +122,11 @@ def _film_end_angle(pressure: np.ndarray, grid: chars.FilmGrid) -> float:
     return float(grid.theta[last] + min(step, 1.0) * grid.d_theta)
 
 
-def _pressure_grid(film, result: FilmResult) -> chars.FilmGrid | None:
+def _pressure_grid(film, pressure: np.ndarray | None) -> chars.FilmGrid | None:
     """The model's FilmGrid when it returned a pressure field on it (grid models)."""
     grid = getattr(film, "film_grid", None)
-    if isinstance(grid, chars.FilmGrid) and result.pressure is not None and (
-        result.pressure.shape == (grid.n_theta, grid.n_z + 1)
+    if isinstance(grid, chars.FilmGrid) and pressure is not None and (
+        pressure.shape == (grid.n_theta, grid.n_z + 1)
     ):
         return grid
     return None
@@ -131,12 +134,13 @@ def _pressure_grid(film, result: FilmResult) -> chars.FilmGrid | None:
 
 def _flows(film, result: FilmResult, state: FilmState) -> tuple[float, float]:
     """(Q inflow at the inlet line, Q_s side flow) [m^3/s]."""
-    grid = _pressure_grid(film, result)
-    if grid is not None:
+    pressure = result.pressure
+    grid = _pressure_grid(film, pressure)
+    if grid is not None and pressure is not None:
         h = film_thickness(film.geometry, state.eccentricity_x, state.eccentricity_y,
-                           grid.theta, np.zeros(result.pressure.shape))
+                           grid.theta, np.zeros(pressure.shape))
         speed = grid.radius * (state.journal_speed + state.shell_speed)
-        inflow = chars.circumferential_flow(result.pressure, h, grid, grid.n_theta // 2, 1,
+        inflow = chars.circumferential_flow(pressure, h, grid, grid.n_theta // 2, 1,
                                             speed, state.viscosity)
         return inflow, result.side_flow
     g = film.geometry
@@ -178,9 +182,10 @@ def _dimensionless(film, geometry: BearingGeometry, state: FilmState, result: Fi
         raise ConvergenceError("steady film carries no load", where=f"eps = {eccentricity}")
     unit_load = load / (2.0 * R * L)
     inflow, side = _flows(film, result, state)
-    grid = _pressure_grid(film, result)
-    if grid is not None:
-        film_end = _film_end_angle(result.pressure, grid)
+    pressure = result.pressure
+    grid = _pressure_grid(film, pressure)
+    if grid is not None and pressure is not None:
+        film_end = _film_end_angle(pressure, grid)
     elif model == "short":
         film_end = 0.0  # half-Sommerfeld: the film ends at h_min
     else:
