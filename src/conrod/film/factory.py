@@ -3,11 +3,16 @@ imported when chosen, so an unfinished or heavy model never slows the others).""
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
+import math
+from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from conrod.errors import CaseError
-from conrod.film.base import BearingGeometry, FilmModel
+from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 
 FILM_MODELS = {
     "short": ("conrod.film.short_bearing", "ShortBearingFilm"),
@@ -58,6 +63,8 @@ def build_film_model(
     cls = _film_class(film_name)
     if film_name in _GRID_MODELS:
         return _construct(cls, geometry, _grid_kwargs(solver))
+    if film_name == "short" and central_groove_width(geometry) > 0.0:
+        return GroovedShortBearingFilm.from_geometry(geometry)
     if film_name == "table":
         base = _film_class("short")(geometry)
         return cls(base)
@@ -69,3 +76,67 @@ def _construct(cls: Any, geometry: BearingGeometry, kwargs: dict[str, int]) -> F
         return cls(geometry, **kwargs)
     except TypeError:
         return cls(geometry)
+
+
+def central_groove_width(geometry: BearingGeometry) -> float:
+    """Width [m] of a single full circumferential groove at mid-width, 0 if there is none."""
+    grooves = geometry.grooves
+    if len(grooves) != 1 or geometry.feed_holes:
+        return 0.0
+    groove = grooves[0]
+    full = groove.extent >= 2.0 * math.pi - 1e-9 and abs(groove.axial_position) < 1e-12
+    return groove.width if full else 0.0
+
+
+@dataclass
+class GroovedShortBearingFilm:
+    """Short-bearing theory on the two lands beside a full central circumferential groove.
+
+    Each land of width L_l = (L − g)/2 carries the Ocvirk film with ambient (gauge supply)
+    pressure at both of its edges, so forces and torques are twice those of one land; half
+    of the leakage leaves at the outer edges (side flow) and half enters from the groove
+    (supply flow, with the sign convention 'into the film' of :class:`FilmResult`).
+    """
+
+    geometry: BearingGeometry
+    land: Any
+    groove_width: float
+    name: str = "short"
+
+    @classmethod
+    def from_geometry(cls, geometry: BearingGeometry) -> GroovedShortBearingFilm:
+        """Two-land film of ``geometry`` (with a full central groove)."""
+        groove = central_groove_width(geometry)
+        land_geometry = dataclasses.replace(
+            geometry, width=0.5 * (geometry.width - groove), grooves=(), feed_holes=()
+        )
+        return cls(geometry, _film_class("short")(land_geometry), groove)
+
+    def force(self, state: FilmState) -> tuple[float, float]:
+        """Film force on the journal (F_x, F_y) [N]: both lands."""
+        fx, fy = self.land.force(state)
+        return 2.0 * fx, 2.0 * fy
+
+    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+        """Both lands' characteristics (pressure field over the full width on request)."""
+        r = self.land.solve(state, with_pressure=with_pressure)
+        leakage = r.side_flow  # two lands x (half of one land's edge flow) each side
+        result = dataclasses.replace(
+            r, force_x=2.0 * r.force_x, force_y=2.0 * r.force_y,
+            friction_torque_journal=2.0 * r.friction_torque_journal,
+            friction_torque_shell=2.0 * r.friction_torque_shell,
+            friction_power=2.0 * r.friction_power, side_flow=leakage, supply_flow=leakage,
+        )
+        if with_pressure and r.pressure is not None:
+            result.pressure = np.concatenate([r.pressure, r.pressure], axis=1)
+        return result
+
+    def grid(self) -> tuple[np.ndarray, np.ndarray]:
+        """θ nodes [rad]; z nodes of both lands [m] (the groove lies between them)."""
+        theta, z_land = self.land.grid()
+        offset = 0.5 * (self.groove_width + self.land.geometry.width)
+        return theta, np.concatenate([z_land - offset, z_land + offset])
+
+    def initial_history(self) -> None:
+        """No memory."""
+        return None

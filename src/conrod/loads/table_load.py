@@ -1,7 +1,9 @@
 """Bearing load from a table: ``[load] table = "load.csv"`` (issue 4).
 
 The CSV has the columns ``crank_angle_deg, load_x_N, load_y_N`` (bearing/film frame, load
-pressing the journal on the shell). Lines starting with ``#`` are comments (provenance).
+pressing the journal on the shell), optionally ``journal_speed_rad_s`` and
+``shell_speed_rad_s`` per angle (e.g. a rod-frame journal speed ω − dβ/dt); otherwise the
+speeds of ``[load]`` apply. Lines starting with ``#`` are comments (provenance).
 One cycle of ``cycle_deg``; a closing row at ``first + cycle_deg`` is dropped (periodic).
 """
 
@@ -18,6 +20,7 @@ from conrod.loads.cycle import LoadCycle
 from conrod.units import rpm_to_rad_s
 
 REQUIRED_COLUMNS = ("crank_angle_deg", "load_x_N", "load_y_N")
+OPTIONAL_COLUMNS = ("journal_speed_rad_s", "shell_speed_rad_s")
 
 
 def read_load_columns(path: Path) -> dict[str, np.ndarray]:
@@ -44,7 +47,8 @@ def read_load_columns(path: Path) -> dict[str, np.ndarray]:
         raise CaseError(f"load.table {str(path)!r}: every row needs {len(header)} values")
     if not np.all(np.isfinite(data)):
         raise CaseError(f"load.table {str(path)!r}: contains NaN or infinite values")
-    return {name: data[:, header.index(name)] for name in REQUIRED_COLUMNS}
+    names = REQUIRED_COLUMNS + tuple(n for n in OPTIONAL_COLUMNS if n in header)
+    return {name: data[:, header.index(name)] for name in names}
 
 
 def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
@@ -61,13 +65,14 @@ def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
         )
     crank_speed = rpm_to_rad_s(section.speed)
     journal = crank_speed if section.journal_speed is None else section.journal_speed
-    n = int(np.count_nonzero(keep))
+    journal_speed = columns.get("journal_speed_rad_s", np.full(angle_deg.size, float(journal)))
+    shell_speed = columns.get("shell_speed_rad_s", np.full(angle_deg.size, section.shell_speed))
     return LoadCycle(
         crank_angle=np.radians(angle_deg[keep]),
         load_x=section.scale * columns["load_x_N"][keep],
         load_y=section.scale * columns["load_y_N"][keep],
-        journal_speed=np.full(n, float(journal)),
-        shell_speed=np.full(n, float(section.shell_speed)),
+        journal_speed=journal_speed[keep],
+        shell_speed=shell_speed[keep],
         crank_speed=crank_speed,
         cycle=math.radians(section.cycle_deg),
     )
