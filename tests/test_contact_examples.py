@@ -41,6 +41,13 @@ def test_1000rpm_touches_around_combustion_and_2000rpm_stays_full_film(repo):
     assert items["max_contact_force_N"] < float(np.max(np.hypot(low.cycle.load_x,
                                                                 low.cycle.load_y)))
 
+    # friction work from the journal rotation (ours) = ∫ P_f |V_s| dt from the orbit's own
+    # sliding speed (independent: H4's V_k + (ω_j − ω_b) R), to the neglected c/R share
+    step_time = float(np.median(np.diff(low.cycle.crank_angle))) / (
+        data_1000["engine"]["speed"] * 2.0 * np.pi / 60.0)
+    power_work = float(np.sum(low.cycle.friction_force * np.abs(low.cycle.sliding_speed)))
+    assert items["friction_work_J"] == pytest.approx(power_work * step_time, rel=1e-3)
+
     high = _run(Case.from_dict(data_2000, base_dir=path_2000.parent))
     assert high.contact.summary_items()["contact_intervals_deg"] == []
     assert float(np.max(high.cycle.contact_force)) == 0.0
