@@ -157,7 +157,7 @@ def inverse_direction(eps: float, target: float, s_step: float, turning: np.ndar
         if _force_angle(eps, hi, s_step, turning) >= goal:
             break
         lo = hi
-    for _ in range(60):
+    for _ in range(44):  # bracket 2π/n_dir halved to < 1e-14 rad
         mid = 0.5 * (lo + hi)
         if _force_angle(eps, mid, s_step, turning) < goal:
             lo = mid
