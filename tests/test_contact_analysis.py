@@ -173,3 +173,13 @@ def test_running_in_feeds_worn_profile_back_and_accumulates_wear():
     first_stage = analyse_contact(case, _combustion_cycle()).wear.shell_wear
     assert history.shell_wear.sum() < 2000 * first_stage.sum()  # wear slows as it runs in
     np.testing.assert_allclose(history.shell_wear[:18], 0.0)  # nothing worn 0–90° away
+
+
+def test_conformal_contact_caveat():
+    """The Hertz half-width of a journal in its shell is comparable with R: say so."""
+    items = analyse_contact(_case(), _combustion_cycle()).summary_items()
+    assert items["max_hertz_half_width_m"] > 0.1 * 0.03
+    assert any("conformal" in text for text in items["contact_warnings"])
+    quiet = _combustion_cycle()
+    quiet.contact_force[:] = 0.0
+    assert analyse_contact(_case(), quiet).summary_items()["contact_warnings"] == []

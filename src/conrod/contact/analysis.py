@@ -33,6 +33,9 @@ from conrod.contact.hertz import (
 from conrod.contact.wear import WearDistribution, wear_distribution
 from conrod.errors import CaseError
 
+HERTZ_WIDTH_WARNING = 0.1
+"""Hertz half-width, as a share of the journal radius, above which a caveat is issued [-]."""
+
 
 def contact_intervals(
     crank_angle: np.ndarray, contact_force: np.ndarray, threshold: float, cycle: float
@@ -91,6 +94,20 @@ class ContactResults:
     """Largest Hertz stress each journal element sees over the cycle [Pa] (Fig. 4.4.1)."""
     shell_stress: np.ndarray | None = None
     """Largest Hertz stress each shell element sees over the cycle [Pa] (Fig. 4.4.1)."""
+    journal_radius: float = 0.0
+    """Journal radius R [m] (validity check of the Hertz half-width)."""
+
+    @property
+    def warnings(self) -> list[str]:
+        """Caveats a user should read with the numbers [-]."""
+        widest = float(np.max(self.hertz_half_width, initial=0.0))
+        if self.journal_radius > 0.0 and widest > HERTZ_WIDTH_WARNING * self.journal_radius:
+            return [
+                f"Hertz half-width {widest * 1e3:.3g} mm is {widest / self.journal_radius:.2f} "
+                "of the journal radius: the contact is conformal and the Hertz stress is an "
+                "upper bound (docs/contact.md)"
+            ]
+        return []
 
     @property
     def max_contact_force(self) -> float:
@@ -125,6 +142,7 @@ class ContactResults:
             "friction_work_J": self.work.total,
             "max_wear_journal_m": float(np.max(self.wear.journal_wear)),
             "max_wear_shell_m": float(np.max(self.wear.shell_wear)),
+            "contact_warnings": self.warnings,
         }
 
     def cycle_columns(self) -> dict[str, np.ndarray]:
@@ -178,6 +196,8 @@ def analyse_contact(case, cycle) -> ContactResults:
         raise CaseError("contact analysis needs [bearing] with radial_clearance [m]")
     radius, width = 0.5 * bearing.diameter, bearing.width
     crank_angle = np.asarray(cycle.crank_angle, dtype=float)
+    if crank_angle.size < 3:
+        raise CaseError(f"contact analysis needs at least 3 output angles, got {crank_angle.size}")
     cycle_rad = cycle_length(crank_angle)
     force, friction, angle = _contact_force_and_angle(case, cycle)
     modulus = contact_modulus(
@@ -216,4 +236,5 @@ def analyse_contact(case, cycle) -> ContactResults:
         model=section.model,
         journal_stress=journal_stress,
         shell_stress=shell_stress,
+        journal_radius=radius,
     )
