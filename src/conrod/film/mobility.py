@@ -35,7 +35,7 @@ import numpy as np
 
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 from conrod.film.table import TabulatedFilm
-from conrod.film.table_kernel import inverse_direction, unit_force
+from conrod.film.table_kernel import inverse_direction, mobility_velocity, unit_force
 
 
 @dataclass
@@ -116,19 +116,9 @@ class MobilityFilm:
     ) -> tuple[float, float]:
         """Quasi-static journal-centre velocity (v_x, v_y) [m/s] for the external load W [N]
         pressing the journal at position (e_x, e_y) [m]; speeds [rad/s], viscosity [Pa s]."""
-        g = self.geometry
-        c = g.radial_clearance
-        e = math.hypot(ex, ey)
-        cos_psi, sin_psi = (ex / e, ey / e) if e > 1e-12 * c else (1.0, 0.0)
-        mean = 0.5 * (journal_speed + shell_speed)
-        load = math.hypot(load_x, load_y)
-        if load == 0.0:
-            return -mean * ey, mean * ex
-        film_r = -(load_x * cos_psi + load_y * sin_psi)
-        film_t = -(load_y * cos_psi - load_x * sin_psi)
-        magnitude, beta = self.mobility(e / c, math.atan2(film_t, film_r))
-        speed = c**3 * load * magnitude / (viscosity * g.radius**3 * g.width)
-        v_r, v_t = speed * math.cos(beta), speed * math.sin(beta)
-        vx = v_r * cos_psi - v_t * sin_psi - mean * ey
-        vy = v_r * sin_psi + v_t * cos_psi + mean * ex
-        return vx, vy
+        t = self.table
+        return mobility_velocity(
+            ex, ey, load_x, load_y, journal_speed + shell_speed, viscosity, t.force_scale,
+            self.geometry.radial_clearance, t.s_step, t.tables["log_magnitude"],
+            t.tables["turning"],
+        )

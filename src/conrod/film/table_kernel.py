@@ -67,8 +67,9 @@ def direction_of(u: float) -> float:
 
 @nb.njit(cache=True)
 def uniform_coordinate(beta: float) -> float:
-    """Inverse of :func:`direction_of` (Newton; β ↦ u is smooth and monotone) [rad]."""
-    u = beta
+    """Inverse of :func:`direction_of` (Newton from the first-order inverse; β ↦ u is
+    smooth and monotone) [rad]."""
+    u = beta - 0.5 * CLUSTERING * math.sin(2.0 * beta)
     for _ in range(30):
         step = (direction_of(u) - beta) / (1.0 + CLUSTERING * math.cos(2.0 * u))
         u -= step
@@ -80,9 +81,15 @@ def uniform_coordinate(beta: float) -> float:
 @nb.njit(cache=True)
 def interpolate(table: np.ndarray, eps: float, beta: float, s_step: float) -> float:
     """Value of a (n_eps, n_dir) table at (ε, β); nodes β(u_k), u_k = −π + 2πk/n_dir."""
+    return interpolate_at(table, eps, uniform_coordinate(
+        (beta + math.pi) % (2.0 * math.pi) - math.pi), s_step)
+
+
+@nb.njit(cache=True)
+def interpolate_at(table: np.ndarray, eps: float, u: float, s_step: float) -> float:
+    """Value of a (n_eps, n_dir) table at ε and the uniform direction coordinate u."""
     n_eps, n_dir = table.shape
     j, a0, a1, a2 = lagrange3(stretched(eps) / s_step, n_eps, False)
-    u = uniform_coordinate((beta + math.pi) % (2.0 * math.pi) - math.pi)
     k, b0, b1, b2 = lagrange3((u + math.pi) * n_dir / (2.0 * math.pi), n_dir, True)
     total = 0.0
     for dk, wb in ((-1, b0), (0, b1), (1, b2)):
@@ -112,9 +119,18 @@ def unit_force(
     eps: float, beta: float, s_step: float, log_magnitude: np.ndarray, turning: np.ndarray
 ) -> tuple[float, float]:
     """Dimensionless squeeze force f̄ (radial, tangential) for a unit velocity at angle β."""
-    magnitude = math.exp(interpolate(log_magnitude, eps, beta, s_step)) / (
+    u = uniform_coordinate((beta + math.pi) % (2.0 * math.pi) - math.pi)
+    return unit_force_at(eps, u, s_step, log_magnitude, turning)
+
+
+@nb.njit(cache=True)
+def unit_force_at(
+    eps: float, u: float, s_step: float, log_magnitude: np.ndarray, turning: np.ndarray
+) -> tuple[float, float]:
+    """:func:`unit_force` at the uniform direction coordinate u."""
+    magnitude = math.exp(interpolate_at(log_magnitude, eps, u, s_step)) / (
         (1.0 - eps * eps) ** WEIGHT_POWER)
-    phi = beta + math.pi + interpolate(turning, eps, beta, s_step)
+    phi = direction_of(u) + math.pi + interpolate_at(turning, eps, u, s_step)
     return magnitude * math.cos(phi), magnitude * math.sin(phi)
 
 
@@ -135,32 +151,100 @@ def table_force(
 
 
 @nb.njit(cache=True)
-def _force_angle(eps: float, beta: float, s_step: float, turning: np.ndarray) -> float:
-    """Unwrapped force angle g(β) = β + π + A(ε, β), increasing by 2π over one turn [rad]."""
-    return beta + math.pi + interpolate(turning, eps, beta, s_step)
+def _turning_at_nodes(eps: float, s_step: float, turning: np.ndarray) -> np.ndarray:
+    """A(ε, β_k) at every direction node (Lagrange in s only) [rad]."""
+    n_eps, n_dir = turning.shape
+    j, a0, a1, a2 = lagrange3(stretched(eps) / s_step, n_eps, False)
+    column = np.empty(n_dir)
+    for k in range(n_dir):
+        column[k] = a0 * turning[j - 1, k] + a1 * turning[j, k] + a2 * turning[j + 1, k]
+    return column
+
+
+@nb.njit(cache=True)
+def _force_angle(u: float, column: np.ndarray) -> float:
+    """Unwrapped force angle g = β(u) + π + A(ε, β(u)), increasing by 2π over a turn [rad]."""
+    n_dir = column.size
+    k, b0, b1, b2 = lagrange3((u + math.pi) * n_dir / (2.0 * math.pi), n_dir, True)
+    turning = (b0 * column[(k - 1) % n_dir] + b1 * column[k % n_dir]
+               + b2 * column[(k + 1) % n_dir])
+    return direction_of(u) + math.pi + turning
 
 
 @nb.njit(cache=True)
 def inverse_direction(eps: float, target: float, s_step: float, turning: np.ndarray) -> float:
-    """Velocity direction β [rad] whose squeeze force points at angle ``target`` [rad].
+    """Velocity direction β [rad] whose squeeze force points at angle ``target`` [rad]."""
+    return direction_of(inverse_coordinate(eps, target, s_step, turning))
 
-    Brackets the target between table directions, then bisects on the interpolant.
+
+@nb.njit(cache=True)
+def inverse_coordinate(eps: float, target: float, s_step: float, turning: np.ndarray) -> float:
+    """Uniform direction coordinate u whose squeeze force points at ``target`` [rad].
+
+    Brackets the target between direction nodes, then Illinois regula falsi in u on the
+    same interpolant as the forward look-up (so force(inverse) reproduces the target).
     """
-    n_dir = turning.shape[1]
+    column = _turning_at_nodes(eps, s_step, turning)
+    n_dir = column.size
     step = 2.0 * math.pi / n_dir
-    lo = -math.pi
-    hi = math.pi
-    g_lo = _force_angle(eps, lo, s_step, turning)
+    u_lo = -math.pi
+    g_lo = _force_angle(u_lo, column)
     goal = g_lo + (target - g_lo) % (2.0 * math.pi)
+    u_hi, g_hi = math.pi, g_lo + 2.0 * math.pi
     for k in range(1, n_dir + 1):
-        hi = direction_of(-math.pi + k * step)
-        if _force_angle(eps, hi, s_step, turning) >= goal:
+        u = -math.pi + k * step
+        g = _force_angle(u, column)
+        if g >= goal:
+            u_hi, g_hi = u, g
             break
-        lo = hi
-    for _ in range(44):  # bracket 2π/n_dir halved to < 1e-14 rad
-        mid = 0.5 * (lo + hi)
-        if _force_angle(eps, mid, s_step, turning) < goal:
-            lo = mid
+        u_lo, g_lo = u, g
+    f_lo, f_hi = g_lo - goal, g_hi - goal
+    u = u_lo if f_lo == 0.0 else u_hi
+    side = 0
+    for _ in range(100):
+        if f_hi == f_lo or f_lo == 0.0 or f_hi == 0.0:
+            break
+        u = (u_lo * f_hi - u_hi * f_lo) / (f_hi - f_lo)
+        f = _force_angle(u, column) - goal
+        if abs(f) < 1e-13 or u_hi - u_lo < 1e-13:
+            break
+        if f * f_hi > 0.0:
+            u_hi, f_hi = u, f
+            if side == -1:
+                f_lo *= 0.5
+            side = -1
         else:
-            hi = mid
-    return 0.5 * (lo + hi)
+            u_lo, f_lo = u, f
+            if side == 1:
+                f_hi *= 0.5
+            side = 1
+    return u
+
+
+@nb.njit(cache=True)
+def mobility_velocity(
+    ex: float, ey: float, load_x: float, load_y: float, omega_sum: float, viscosity: float,
+    force_scale: float, clearance: float, s_step: float,
+    log_magnitude: np.ndarray, turning: np.ndarray,
+) -> tuple[float, float]:
+    """Quasi-static journal velocity (v_x, v_y) [m/s] under the load W [N]: the squeeze
+    velocity whose tabulated force is −W, plus ω̄ × e; force_scale = R³L/c³ [m]."""
+    e = math.hypot(ex, ey)
+    if e > 1.0e-12 * clearance:
+        cos_psi, sin_psi = ex / e, ey / e
+    else:
+        cos_psi, sin_psi = 1.0, 0.0
+    mean = 0.5 * omega_sum
+    load = math.hypot(load_x, load_y)
+    if load == 0.0:
+        return -mean * ey, mean * ex
+    eps = e / clearance
+    film_r = -(load_x * cos_psi + load_y * sin_psi)
+    film_t = -(load_y * cos_psi - load_x * sin_psi)
+    u = inverse_coordinate(eps, math.atan2(film_t, film_r), s_step, turning)
+    beta = direction_of(u)
+    f_r, f_t = unit_force_at(eps, u, s_step, log_magnitude, turning)
+    speed = load / (viscosity * force_scale * math.hypot(f_r, f_t))
+    v_r, v_t = speed * math.cos(beta), speed * math.sin(beta)
+    return (v_r * cos_psi - v_t * sin_psi - mean * ey,
+            v_r * sin_psi + v_t * cos_psi + mean * ex)
