@@ -27,6 +27,7 @@ from conrod.film.reynolds import ReynoldsFilm
 from conrod.film.short_bearing import ShortBearingFilm
 from conrod.film.short_bearing_kernel import short_bearing_force
 from conrod.film.table import TabulatedFilm
+from conrod.film.table_kernel import mobility_velocity, table_force
 from conrod.io.atomic import write_text
 
 GEOMETRY = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
@@ -125,6 +126,45 @@ def time_short() -> dict[str, float]:
     return {"kernel": kernel, "python": (time.perf_counter() - start) / 20000}
 
 
+@nb.njit(cache=True)
+def _table_loop(n: int, force_scale: float, c: float, s_step: float,
+                log_magnitude: np.ndarray, turning: np.ndarray) -> float:
+    total = 0.0
+    for k in range(n):
+        fx, fy = table_force(0.5 * c, 1e-2 * c * (k % 7), 1e-4, -2e-4, 200.0, 0.02,
+                             force_scale, c, s_step, log_magnitude, turning)
+        vx, vy = mobility_velocity(0.5 * c, 1e-2 * c * (k % 7), 1e3, 2e3, 200.0, 0.02,
+                                   force_scale, c, s_step, log_magnitude, turning)
+        total += fx + vx
+    return total
+
+
+@nb.njit(cache=True)
+def _table_only_loop(n: int, force_scale: float, c: float, s_step: float,
+                     log_magnitude: np.ndarray, turning: np.ndarray) -> float:
+    total = 0.0
+    for k in range(n):
+        fx, fy = table_force(0.5 * c, 1e-2 * c * (k % 7), 1e-4, -2e-4, 200.0, 0.02,
+                             force_scale, c, s_step, log_magnitude, turning)
+        total += fx
+    return total
+
+
+def time_compiled_lookups(table: TabulatedFilm) -> tuple[float, float]:
+    """Per-call time of table_force and mobility_velocity inside compiled loops [s]."""
+    args = (table.force_scale, GEOMETRY.radial_clearance, table.s_step,
+            table.tables["log_magnitude"], table.tables["turning"])
+    _table_loop(10, *args)
+    _table_only_loop(10, *args)
+    n = 100_000
+    start = time.perf_counter()
+    _table_only_loop(n, *args)
+    force_time = (time.perf_counter() - start) / n
+    start = time.perf_counter()
+    _table_loop(n, *args)
+    return force_time, (time.perf_counter() - start) / n - force_time
+
+
 def time_table() -> dict[str, float]:
     """Table build over ReynoldsFilm 144×32 (no cache) and per-call look-up [s]."""
     ReynoldsFilm(GEOMETRY, n_theta=72, n_z=16).solve(state_at(0))
@@ -142,8 +182,10 @@ def time_table() -> dict[str, float]:
     start = time.perf_counter()
     for _ in range(5000):
         mobility.journal_velocity(1e-5, 0.0, 1e3, 2e3, SPEED, 0.0, VISCOSITY)
+    compiled_force, compiled_mobility = time_compiled_lookups(table)
     return {"build": table.build_seconds, "lookup": lookup, "error_max": error["max_relative"],
-            "mobility": (time.perf_counter() - start) / 5000}
+            "mobility": (time.perf_counter() - start) / 5000,
+            "compiled_force": compiled_force, "compiled_mobility": compiled_mobility}
 
 
 def time_ross(n_theta: int, n_z: int) -> tuple[float, float] | str:
@@ -208,6 +250,9 @@ def main() -> None:
                 f"look-up per call; max error {100 * table['error_max']:.2f} % (ε ≤ 0.9) |")
     rows.append(f"| mobility `journal_velocity` | – | – | – | {1e3 * table['mobility']:.4f} "
                 "| – | |")
+    rows.append(f"| compiled `table_force` / `mobility_velocity` (in a numba loop) | – | – | – | "
+                f"{1e3 * table['compiled_force']:.5f} / {1e3 * table['compiled_mobility']:.5f} "
+                "| – | for an orbit compiled end to end |")
     for n_theta, n_z in GRIDS:
         ross = time_ross(n_theta, n_z)
         if isinstance(ross, str):
