@@ -129,3 +129,35 @@ def test_element_maximum_follows_the_contact_point():
     touched = np.flatnonzero(journal)  # 180.5° − ψ for ψ from ~10° to ~50°
     assert touched.min() >= 129 and touched.max() <= 171
     assert np.max(journal) == 3.0e7
+
+
+def test_worn_shell_film_opens_the_gap_of_a_reynolds_film():
+    """δ = 0 leaves the Reynolds force unchanged; wear where the film is thinnest lowers it."""
+    from conrod.contact.running_in import WornShellFilm
+    from conrod.film.base import BearingGeometry, FilmState
+    from conrod.film.reynolds import ReynoldsFilm
+
+    film = ReynoldsFilm(BearingGeometry(0.05, 0.02, 25e-6), n_theta=36, n_z=8)
+    state = FilmState(20e-6, 0.0, 0.0, 0.0, 300.0, 0.0, 0.01)
+    unworn = WornShellFilm(film, lambda theta, z: np.zeros((theta.size, z.size)))
+    assert unworn.force(state) == pytest.approx(film.force(state), rel=1e-9)
+
+    def pocket(theta, z):  # 2 µm deep wear around θ = 0, where h is smallest
+        return np.repeat((2e-6 * np.cos(theta / 2.0) ** 8)[:, None], z.size, axis=1)
+
+    worn = WornShellFilm(film, pocket)
+    assert np.hypot(*worn.force(state)) < 0.9 * np.hypot(*film.force(state))
+    assert worn.solve(state).min_film_thickness > film.solve(state).min_film_thickness
+
+
+def test_run_in_refuses_films_that_ignore_the_worn_profile():
+    from conrod.cases.case import Case
+    from conrod.contact.running_in import run_in
+    from conrod.errors import CaseError
+
+    case = Case.from_dict({"bearing": {"diameter": 0.05, "width": 0.02,
+                                       "radial_clearance": 25e-6}})
+    with pytest.raises(CaseError, match="solver.film = 'short'.*reynolds"):
+        run_in(case, cycles=100)
+    with pytest.raises(CaseError, match="cycles"):
+        run_in(case, cycles=0)

@@ -10,16 +10,18 @@ Journal wear is not fed back: the journal turns, so its wear is not fixed in the
 and mostly enlarges the clearance uniformly.
 
 The orbit is run by ``simulate(case, profile)``, where ``profile(theta, z)`` returns δ [m]
-on any film grid (θ [rad], z [m]). The default uses
-``Simulation(case, shell_profile=profile)`` — the orbit solver must pass ``profile`` to its
-film states (and to the hard-contact circle); if it does not accept it, a clear
-:class:`CaseError` says so.
+on any film grid (θ [rad], z [m]). The default runs :class:`conrod.simulation.Simulation`
+with its film wrapped in :class:`WornShellFilm`, which hands δ on the film's grid to every
+film state. Only film models that honour ``FilmState.deformation`` feel the wear
+(``reynolds``, ``mass_conserving``); the closed-form ``short`` film and its derivatives do
+not, so :func:`run_in` refuses them. Limits: the hard-contact circle of the orbit solver and
+the Greenwood–Tripp kernel keep the round shell (the wear only opens the film).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -61,17 +63,63 @@ def profile_from_wear(element_angle: np.ndarray, shell_wear: np.ndarray) -> Prof
     return profile
 
 
+DEFORMABLE_FILMS = ("reynolds", "mass_conserving")
+"""Film models that use ``FilmState.deformation`` (and so feel a worn shell) [-]."""
+
+
+@dataclass
+class WornShellFilm:
+    """A film model whose every state carries the worn-shell field δ(θ, z) [m].
+
+    base : FilmModel  Film model honouring ``FilmState.deformation``.
+    profile : Profile  δ(θ [rad], z [m]) [m], evaluated once on ``base.grid()``.
+    """
+
+    base: Any
+    profile: Profile
+
+    def __post_init__(self) -> None:
+        theta, z = self.base.grid()
+        self._deformation = np.ascontiguousarray(self.profile(theta, z), dtype=float)
+
+    @property
+    def name(self) -> str:
+        """Name of the base film model [-]."""
+        return self.base.name
+
+    @property
+    def geometry(self):
+        """Bearing geometry of the base film."""
+        return self.base.geometry
+
+    def _worn(self, state):
+        return replace(state, deformation=self._deformation)
+
+    def force(self, state) -> tuple[float, float]:
+        """Film force on the journal with the worn shell (F_x, F_y) [N]."""
+        return self.base.force(self._worn(state))
+
+    def solve(self, state, *, with_pressure: bool = False):
+        """Full film result with the worn shell."""
+        return self.base.solve(self._worn(state), with_pressure=with_pressure)
+
+    def grid(self) -> tuple[np.ndarray, np.ndarray]:
+        """Grid of the base film."""
+        return self.base.grid()
+
+    def initial_history(self):
+        """Initial history of the base film."""
+        return self.base.initial_history()
+
+
 def _default_simulate(case, profile: Profile):
     from conrod.simulation import Simulation
 
-    try:
-        simulation = Simulation(case, shell_profile=profile)
-    except (TypeError, CaseError) as error:
-        raise CaseError(
-            "running-in needs an orbit solver that accepts a worn shell profile "
-            f"(Simulation(case, shell_profile=...)); this one does not ({error})"
-        ) from None
-    return simulation.run().contact
+    class WornShellSimulation(Simulation):
+        def film(self):
+            return WornShellFilm(super().film(), profile)
+
+    return WornShellSimulation(case).run().contact
 
 
 def run_in(
@@ -87,7 +135,13 @@ def run_in(
         raise CaseError(f"run_in cycles = {cycles!r}: out of range (allowed: > 0)")
     if stages < 1:
         raise CaseError(f"run_in stages = {stages!r}: out of range (allowed: >= 1)")
-    simulate = simulate or _default_simulate
+    if simulate is None:
+        if case.solver.film not in DEFORMABLE_FILMS:
+            raise CaseError(
+                f"solver.film = {case.solver.film!r}: running-in needs a film model that "
+                f"uses the worn shell profile (allowed: {', '.join(DEFORMABLE_FILMS)})"
+            )
+        simulate = _default_simulate
     elements = case.contact.surface_elements
     angles = (np.arange(elements) + 0.5) * 2.0 * np.pi / elements
     wear = np.zeros(elements)
