@@ -6,15 +6,18 @@ import math
 
 import numpy as np
 import pytest
+from scipy.optimize import minimize_scalar
 
 from conrod.mechanism.geometry import (
     contact_force,
     damping_coefficient,
+    exact_contact,
     penetration,
     penetration_rate,
     shell_radius,
     shell_radius_slope,
     shell_semi_axes,
+    support_penetration,
 )
 
 D = 0.048
@@ -94,3 +97,72 @@ def test_contact_law_hertz_damping_and_clipping():
     assert contact_force(2e-6, 0.1, 1e13, 1.5, 1e5)[0] == pytest.approx(elastic + 1e4, rel=1e-14)
     assert contact_force(2e-6, -10.0, 1e13, 1.5, 1e5)[0] == 0.0  # no adhesive pull
     assert damping_coefficient(0.1, 1e13, 0.25) == pytest.approx(2 * 0.1 * math.sqrt(2.5e12))
+
+
+OFFSETS = [(61e-6, 3e-6), (20e-6, 31e-6), (-40e-6, 25e-6), (5e-6, -29e-6), (10e-6, 10e-6)]
+
+
+@pytest.mark.parametrize("u, v", OFFSETS)
+def test_exact_penetration_is_the_largest_half_plane_violation(u, v):
+    major, minor, _ = shell_semi_axes(D, 120e-6, 60e-6)
+    angles = np.linspace(0.0, 2 * np.pi, 400_001)
+    support = np.sqrt((major * np.cos(angles)) ** 2 + (minor * np.sin(angles)) ** 2)
+    brute = np.max(u * np.cos(angles) + v * np.sin(angles) - support + D / 2)
+    depth, _ = support_penetration(u, v, D, major, minor)
+    assert depth == pytest.approx(brute, abs=1e-14)
+
+
+def test_exact_contact_journal_touches_the_ellipse_when_penetration_is_zero():
+    """Independent geometry: on δ = 0 the nearest ellipse point is exactly D/2 from the
+    journal centre, along the returned contact normal."""
+    major, minor, _ = shell_semi_axes(D, 120e-6, 70e-6)
+    for direction in (0.3, 1.2, 2.5):
+        low, high = 0.0, 1e-4
+        for _ in range(80):
+            middle = 0.5 * (low + high)
+            inside = support_penetration(middle * math.cos(direction),
+                                         middle * math.sin(direction), D, major, minor)[0] < 0
+            low, high = (middle, high) if inside else (low, middle)
+        centre = np.array([low * math.cos(direction), low * math.sin(direction)])
+        normal_angle = support_penetration(*centre, D, major, minor)[1]
+        t = minimize_scalar(lambda s, c=centre: math.hypot(major * math.cos(s) - c[0],
+                                                           minor * math.sin(s) - c[1]),
+                            bounds=(normal_angle - 0.5, normal_angle + 0.5), method="bounded",
+                            options={"xatol": 1e-12})
+        assert t.fun == pytest.approx(D / 2, abs=1e-12)
+        point = np.array([major * math.cos(t.x), minor * math.sin(t.x)])
+        towards = (point - centre) / np.linalg.norm(point - centre)
+        assert towards @ [math.cos(normal_angle), math.sin(normal_angle)] == pytest.approx(
+            1.0, abs=1e-6)
+
+
+def test_exact_contact_rates_and_lever_are_derivatives_of_the_penetration():
+    major, minor, _ = shell_semi_axes(D, 150e-6, 90e-6)
+    gamma, step = 0.2, 1e-6
+
+    def path(t):
+        return 50e-6 + 8e-6 * t, -30e-6 + 15e-6 * t * t, 0.3 + 0.4 * t
+
+    def depth_at(t, extra_rod=0.0):
+        dx, dy, rod = path(t)
+        return exact_contact(dx, dy, 0.0, 0.0, rod + extra_rod, 0.0, D, major, minor, gamma)[0]
+
+    t = 0.6
+    dx, dy, rod = path(t)
+    _, _, _, rate, lever = exact_contact(dx, dy, 8e-6, 30e-6 * t, rod, 0.4, D, major, minor,
+                                         gamma)
+    numeric_rate = (depth_at(t + step) - depth_at(t - step)) / (2 * step)
+    assert rate == pytest.approx(numeric_rate, rel=1e-6)
+    numeric_turn = (depth_at(t, step) - depth_at(t, -step)) / (2 * step)
+    assert -lever == pytest.approx(numeric_turn, rel=1e-6)
+
+
+def test_exact_and_seed_geometry_coincide_for_circular_shells():
+    major, minor, ecc = shell_semi_axes(D, 80e-6, 80e-6)
+    for angle in np.linspace(0.0, 6.0, 9):
+        dx, dy = 45e-6 * math.cos(angle), 45e-6 * math.sin(angle)
+        exact = exact_contact(dx, dy, 3e-6, -2e-6, 0.7, 0.1, D, major, minor, 0.4)
+        seed = penetration_rate(dx, dy, 3e-6, -2e-6, 0.7, 0.1, minor, ecc, 0.4)
+        assert exact[0] == pytest.approx(penetration(dx, dy, 0.7, D, minor, ecc, 0.4), abs=1e-17)
+        assert exact[3] == pytest.approx(seed[1], rel=1e-9)
+        assert exact[4] == pytest.approx(0.0, abs=1e-15)

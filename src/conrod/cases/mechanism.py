@@ -86,6 +86,11 @@ class ClearanceSection(Section):
     load_scale: float = Field(
         default=1.0, ge=0.0, le=5.0, description="Factor on the gas pressure (load) [-]"
     )
+    contact_geometry: Literal["seed", "exact"] = Field(
+        default="seed",
+        description="seed: penetration along the line of centres (seed 003); exact: "
+        "ellipse-circle contact along the contact normal [-]",
+    )
     worn_joint: Literal["auto", "big_end", "small_end"] = Field(
         default="auto",
         description="Joint diagnosed in the sweep; auto = the larger clearance_max/diameter [-]",

@@ -41,18 +41,26 @@ import math
 import numpy as np
 from numba import njit
 
-from conrod.mechanism.geometry import contact_force, penetration, penetration_rate
+from conrod.mechanism.geometry import (
+    contact_force,
+    exact_contact,
+    penetration,
+    penetration_rate,
+    support_penetration,
+)
 
 # --- layout of the parameter vector -------------------------------------------------
 CRANK_RADIUS, ROD_LENGTH, ROD_CG, ROD_MASS, ROD_INERTIA, PISTON_MASS = 0, 1, 2, 3, 4, 5
 CRANK_SPEED, FRICTION_VELOCITY = 6, 7
-BIG_END, SMALL_END = 8, 16
+BIG_END, SMALL_END = 8, 18
 """Offsets of the two joint blocks."""
-DIAMETER, MINOR, ECC_SQ, ELLIPSE_ANGLE, STIFFNESS, EXPONENT, DAMPING, FRICTION = range(8)
-"""Entries of a joint block."""
+(DIAMETER, MINOR, ECC_SQ, ELLIPSE_ANGLE, STIFFNESS, EXPONENT, DAMPING, FRICTION, MAJOR,
+ GEOMETRY) = range(10)
+"""Entries of a joint block (GEOMETRY: 0 seed radial penetration, 1 exact contact)."""
+BLOCK_SIZE = 10
 FX, FY, MOMENT, NORMAL, ELASTIC, RADIAL_RATE, DEPTH_RATE, SLIDE, TANGENTIAL = range(9)
 """Entries of the tuple returned by :func:`joint_loads`."""
-PARAMETER_COUNT = 24
+PARAMETER_COUNT = 28
 STATE_SIZE = 9
 
 
@@ -83,8 +91,33 @@ def small_end_relative(y: np.ndarray, p: np.ndarray) -> tuple:
 @njit(cache=True)
 def joint_depth(dx: float, dy: float, rod_angle: float, p: np.ndarray, block: int) -> float:
     """Penetration δ of one joint [m] (> 0: contact)."""
+    if p[block + GEOMETRY] > 0.5:
+        turn = p[block + ELLIPSE_ANGLE] + rod_angle
+        c, s = math.cos(turn), math.sin(turn)
+        return support_penetration(c * dx + s * dy, -s * dx + c * dy, p[block + DIAMETER],
+                                   p[block + MAJOR], p[block + MINOR])[0]
     return penetration(dx, dy, rod_angle, p[block + DIAMETER], p[block + MINOR],
                        p[block + ECC_SQ], p[block + ELLIPSE_ANGLE])
+
+
+@njit(cache=True)
+def joint_kinematics(dx: float, dy: float, vx: float, vy: float, rod_angle: float,
+                     rod_rate: float, p: np.ndarray, block: int) -> tuple:
+    """(δ, nx, ny, work rate, δ', lever) of one joint; rates per radian of crank.
+
+    Seed geometry: n = d/r, work rate ṙ, δ' = ṙ − p'(ϕ)ϕ', lever 0 (force through the
+    shell centre). Exact geometry: n the contact normal, work rate = δ', lever (d × n)_z.
+    """
+    if p[block + GEOMETRY] > 0.5:
+        depth, nx, ny, rate, lever = exact_contact(
+            dx, dy, vx, vy, rod_angle, rod_rate, p[block + DIAMETER], p[block + MAJOR],
+            p[block + MINOR], p[block + ELLIPSE_ANGLE])
+        return depth, nx, ny, rate, rate, lever
+    depth = joint_depth(dx, dy, rod_angle, p, block)
+    radial, depth_rate = penetration_rate(dx, dy, vx, vy, rod_angle, rod_rate, p[block + MINOR],
+                                          p[block + ECC_SQ], p[block + ELLIPSE_ANGLE])
+    radius = math.sqrt(dx * dx + dy * dy) + 1.0e-30
+    return depth, dx / radius, dy / radius, radial, depth_rate, 0.0
 
 
 @njit(cache=True)
@@ -93,28 +126,27 @@ def joint_loads(dx: float, dy: float, vx: float, vy: float, rod_angle: float, ro
     """Contact of one joint; rates per radian of crank angle.
 
     Returns (Fx, Fy, moment, normal, elastic, radial_rate, depth_rate, slide_rate, tangential):
-    force on the rod [N], moment of friction about the shell centre [N m], normal force R
-    and its elastic part [N], ṙ and δ̇ [m/s], sliding speed [m/s], friction force [N].
+    force on the rod [N], moment about the shell centre (friction; exact geometry also the
+    off-centre normal force) [N m], normal force R and its elastic part [N], work rate of
+    the normal force (ṙ, or δ̇ for exact geometry) and δ̇ [m/s], sliding speed [m/s],
+    friction force [N].
     journal_rate : rotation of the journal per radian of crank (1 crank pin, 0 piston pin).
     """
-    depth = joint_depth(dx, dy, rod_angle, p, block)
+    depth, nx, ny, radial, depth_rate, lever = joint_kinematics(
+        dx, dy, vx, vy, rod_angle, rod_rate, p, block)
     if depth <= 0.0:
         return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     omega = p[CRANK_SPEED]
-    radial, depth_rate = penetration_rate(dx, dy, vx, vy, rod_angle, rod_rate, p[block + MINOR],
-                                          p[block + ECC_SQ], p[block + ELLIPSE_ANGLE])
     normal, elastic = contact_force(depth, omega * depth_rate, p[block + STIFFNESS],
                                     p[block + EXPONENT], p[block + DAMPING])
-    radius = math.sqrt(dx * dx + dy * dy) + 1.0e-30
-    nx, ny = dx / radius, dy / radius
     half_d = 0.5 * p[block + DIAMETER]
     slide = omega * (-ny * vx + nx * vy - half_d * (rod_rate - journal_rate))
     v_reg = p[FRICTION_VELOCITY]
     tangential = -p[block + FRICTION] * normal * slide / math.sqrt(slide * slide + v_reg * v_reg)
     fx = -normal * nx - tangential * ny
     fy = -normal * ny + tangential * nx
-    return (fx, fy, -half_d * tangential, normal, elastic, omega * radial, omega * depth_rate,
-            slide, tangential)
+    return (fx, fy, normal * lever - half_d * tangential, normal, elastic, omega * radial,
+            omega * depth_rate, slide, tangential)
 
 
 @njit(cache=True)
@@ -195,10 +227,8 @@ def penetration_rates(y: np.ndarray, alpha: float, p: np.ndarray) -> tuple:
     omega = p[CRANK_SPEED]
     bx, by, bvx, bvy = big_end_relative(y, alpha, p)
     sx, sy, svx, svy = small_end_relative(y, p)
-    _, big = penetration_rate(bx, by, bvx, bvy, y[4], y[5], p[BIG_END + MINOR],
-                              p[BIG_END + ECC_SQ], p[BIG_END + ELLIPSE_ANGLE])
-    _, small = penetration_rate(sx, sy, svx, svy, y[4], y[5], p[SMALL_END + MINOR],
-                                p[SMALL_END + ECC_SQ], p[SMALL_END + ELLIPSE_ANGLE])
+    big = joint_kinematics(bx, by, bvx, bvy, y[4], y[5], p, BIG_END)[4]
+    small = joint_kinematics(sx, sy, svx, svy, y[4], y[5], p, SMALL_END)[4]
     return omega * big, omega * small
 
 

@@ -55,15 +55,16 @@ class ClearanceJoint:
             self.diameter, self.clearance_max, self.clearance_min)
         return shell_radius(self.ellipse_angle, minor, eccentricity_sq) - 0.5 * self.diameter
 
-    def block(self, effective_mass: float) -> np.ndarray:
-        """The joint's 8 entries of the kernel parameter vector (β from ``effective_mass`` [kg])."""
-        _, minor, eccentricity_sq = shell_semi_axes(
+    def block(self, effective_mass: float, exact: bool = False) -> np.ndarray:
+        """The joint's entries of the kernel parameter vector (β from ``effective_mass``
+        [kg]; ``exact`` selects the exact ellipse–circle contact instead of the seed's)."""
+        major, minor, eccentricity_sq = shell_semi_axes(
             self.diameter, self.clearance_max, self.clearance_min)
         damping = self.damping_scale * damping_coefficient(
             self.damping_factor, self.contact_stiffness, effective_mass)
         return np.array([self.diameter, minor, eccentricity_sq, self.ellipse_angle,
                          self.contact_stiffness, self.contact_exponent, damping,
-                         self.friction_coefficient])
+                         self.friction_coefficient, major, 1.0 if exact else 0.0])
 
 
 @dataclass(frozen=True)
@@ -107,12 +108,17 @@ class Mechanism:
 
     friction_velocity : float  Sliding speed below which friction is smoothed,
         F = f R v/√(v² + v₀²) [m/s].
+    contact_geometry : str  "seed": penetration along the line of centres
+        δ = r + D/2 − p(ϕ), force through the shell centre (seed 003); "exact": largest
+        violation of the shell's supporting half-planes, force along the contact normal
+        (see :func:`conrod.mechanism.geometry.exact_contact`).
     """
 
     crank: CrankTrain
     big_end: ClearanceJoint
     small_end: ClearanceJoint
     friction_velocity: float = 1.0e-3
+    contact_geometry: str = "seed"
 
     def parameters(self) -> np.ndarray:
         """Flat parameter vector of :mod:`conrod.mechanism.kernel` (SI)."""
@@ -122,8 +128,9 @@ class Mechanism:
             c.crank_radius, c.rod_length, c.rod_cg_from_big_end)
         p[k.ROD_MASS], p[k.ROD_INERTIA], p[k.PISTON_MASS] = c.rod_mass, c.rod_inertia, c.piston_mass
         p[k.CRANK_SPEED], p[k.FRICTION_VELOCITY] = c.crank_speed, self.friction_velocity
-        p[k.BIG_END:k.BIG_END + 8] = self.big_end.block(c.big_end_mass)
-        p[k.SMALL_END:k.SMALL_END + 8] = self.small_end.block(c.small_end_mass)
+        exact = self.contact_geometry == "exact"
+        p[k.BIG_END:k.BIG_END + k.BLOCK_SIZE] = self.big_end.block(c.big_end_mass, exact)
+        p[k.SMALL_END:k.SMALL_END + k.BLOCK_SIZE] = self.small_end.block(c.small_end_mass, exact)
         return p
 
     def at_speed(self, crank_speed: float) -> Mechanism:

@@ -92,7 +92,8 @@ def mechanism_case(case: Case) -> MechanismCase:
         crank_speed=rpm_to_rad_s(engine.speed))
     mechanism = Mechanism(crank, joint_from_section(clearance.big_end),
                           joint_from_section(clearance.small_end),
-                          friction_velocity=clearance.friction_velocity)
+                          friction_velocity=clearance.friction_velocity,
+                          contact_geometry=clearance.contact_geometry)
     worn = clearance.worn_joint
     if worn == "auto":
         small, big = clearance.small_end, clearance.big_end

@@ -17,7 +17,6 @@ from numba import njit
 from conrod.errors import ConvergenceError
 from conrod.mechanism import integrator as rk
 from conrod.mechanism import kernel as k
-from conrod.mechanism.geometry import shell_outline
 from conrod.mechanism.model import Mechanism, seed_initial_state
 from conrod.mechanism.results import Impacts, MechanismResults
 
@@ -106,12 +105,10 @@ def _assemble(mechanism, p, table, alpha, states, impacts, settings, steps, reje
     energy = columns[10]
     residual = energy - energy[0] - (states[:, 8] - states[0, 8])
     c = mechanism.crank
-    outline = {}
-    for name, joint in (("big_end", mechanism.big_end), ("small_end", mechanism.small_end)):
-        minor = p[(k.BIG_END if name == "big_end" else k.SMALL_END) + k.MINOR]
-        ecc = p[(k.BIG_END if name == "big_end" else k.SMALL_END) + k.ECC_SQ]
-        angles, radii = shell_outline(minor, ecc)
-        outline[name] = (angles + joint.ellipse_angle, radii - 0.5 * joint.diameter)
+    angles = np.linspace(0.0, 2.0 * np.pi, 361)
+    outline = {name: (angles, free_play_outline(p, block, angles, joint.clearance_max))
+               for name, block, joint in (("big_end", k.BIG_END, mechanism.big_end),
+                                          ("small_end", k.SMALL_END, mechanism.small_end))}
     return MechanismResults(
         crank_angle=alpha, piston_position=states[:, 6],
         piston_position_rigid=rigid_piston_position(alpha, c.crank_radius, c.rod_length),
@@ -120,6 +117,24 @@ def _assemble(mechanism, p, table, alpha, states, impacts, settings, steps, reje
         friction_force=columns[11:13], gas_force=columns[4], energy_residual=residual,
         impacts=impacts, cycles=settings.cycles, steps=steps, rejected_steps=rejected,
         kinetic_energy_scale=float(np.max(columns[9])), clearance_outline=outline)
+
+
+@njit(cache=True)
+def free_play_outline(p, block, angles, clearance_max):
+    """Radius [m] of the free-play region of the journal centre at ``angles`` [rad] from
+    the rod axis (δ = 0 by bisection; p(ϕ) − D/2 for the seed geometry)."""
+    radii = np.empty(angles.shape[0])
+    for i in range(angles.shape[0]):
+        c, s = math.cos(angles[i]), math.sin(angles[i])
+        low, high = 0.0, clearance_max
+        for _ in range(60):
+            middle = 0.5 * (low + high)
+            if k.joint_depth(middle * c, middle * s, 0.0, p, block) > 0.0:
+                high = middle
+            else:
+                low = middle
+        radii[i] = 0.5 * (low + high)
+    return radii
 
 
 @njit(cache=True)

@@ -49,7 +49,7 @@ def plot_journal_orbits(results: MechanismResults) -> Figure:
         ax = axes[index]
         angles, radii = results.clearance_outline[name]
         ax.plot(radii * np.sin(angles) * UM, radii * np.cos(angles) * UM, "k-", lw=0.8,
-                label="clearance outline p(ϕ) − D/2")
+                label="free-play outline (δ = 0)")
         along, across = results.journal_offset[index][:, mask]
         ax.plot(across * UM, along * UM, lw=0.7, color=f"C{index}", label="journal centre")
         ax.set_aspect("equal")
