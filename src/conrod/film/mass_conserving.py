@@ -37,7 +37,12 @@ import numpy as np
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.characteristics import FilmGrid
-from conrod.film.mass_conserving_kernel import cell_balance, elrod_adams_steady, projected_sor
+from conrod.film.mass_conserving_kernel import (
+    assemble,
+    cell_balance,
+    elrod_adams_steady,
+    projected_sor,
+)
 from conrod.film.supply import nearest_theta_index, supply_mask
 
 FULL = 1.0 - 1.0e-9
@@ -108,7 +113,7 @@ class MassConservingFilm:
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
         theta = self.film_grid.theta
-        self._cos, self._sin = np.cos(theta)[:, None], np.sin(theta)[:, None]
+        self._cos_theta, self._sin_theta = np.cos(theta), np.sin(theta)
         self._edge = np.zeros((self.n_theta, self.n_z + 1), dtype=bool)
         self._edge[:, [0, -1]] = True
         self._supply = supply_mask(g, self.film_grid)
@@ -145,24 +150,18 @@ class MassConservingFilm:
         if state.deformation is not None and np.shape(state.deformation) != self._edge.shape:
             raise CaseError(f"deformation shape = {np.shape(state.deformation)}: allowed "
                             f"{self._edge.shape} = (n_theta, n_z + 1) [m]")
-        rigid = (g.radial_clearance - state.eccentricity_x * self._cos
-                 - state.eccentricity_y * self._sin)
-        h = np.repeat(rigid, self.n_z + 1, axis=1)
-        if state.deformation is not None:
-            h = h + state.deformation
+        deformation = (np.empty((0, 0)) if state.deformation is None
+                       else np.ascontiguousarray(state.deformation, dtype=float))
+        h, a_east, a_north, couette, squeeze = assemble(
+            self._cos_theta, self._sin_theta, self.n_z + 1, g.radial_clearance,
+            state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
+            deformation, dx, dz, mu, g.radius * (state.journal_speed + state.shell_speed),
+        )
         if not float(h.min()) > 0.0:
             raise CaseError(f"film thickness min = {float(h.min()):.3g} m: out of range "
                             "(allowed: > 0 m); the journal touches the shell")
-        h_east = 0.5 * (h + np.roll(h, -1, axis=0))
-        h_north = np.empty_like(h)
-        h_north[:, :-1] = 0.5 * (h[:, 1:] + h[:, :-1])
-        h_north[:, -1] = h[:, -1]
-        speed = g.radius * (state.journal_speed + state.shell_speed)
-        dh_dt = -state.velocity_x * self._cos - state.velocity_y * self._sin
         return FilmFields(
-            h=h, a_east=h_east**3 * (dz / dx), a_north=h_north**3 * (dx / dz),
-            couette_east=(6.0 * mu * speed * dz) * h_east,
-            squeeze=np.repeat(12.0 * mu * dx * dz * dh_dt, self.n_z + 1, axis=1),
+            h=h, a_east=a_east, a_north=a_north, couette_east=couette, squeeze=squeeze,
             edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed.copy(),
             has_deformation=state.deformation is not None,
         )

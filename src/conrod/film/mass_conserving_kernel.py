@@ -173,3 +173,39 @@ def cell_balance(
                 else:
                     from_supply += inflow
     return imbalance, from_edges, from_supply
+
+
+@nb.njit(cache=True)
+def assemble(
+    cos_theta: np.ndarray, sin_theta: np.ndarray, n_nodes_z: int, clearance: float,
+    ex: float, ey: float, vx: float, vy: float, deformation: np.ndarray,
+    d_x: float, d_z: float, viscosity: float, surface_speed: float,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """h, a_E, a_N, C_e and 12μΔxΔz ∂h/∂t on the grid (module docstring; SI units).
+
+    ``deformation`` is an (n, m) field [m] added to h, or an empty (0, 0) array.
+    """
+    n = cos_theta.size
+    m = n_nodes_z
+    h = np.empty((n, m))
+    for i in range(n):
+        rigid = clearance - ex * cos_theta[i] - ey * sin_theta[i]
+        for j in range(m):
+            h[i, j] = rigid + (deformation[i, j] if deformation.shape[0] > 0 else 0.0)
+    a_east = np.empty((n, m))
+    a_north = np.empty((n, m))
+    couette = np.empty((n, m))
+    squeeze = np.empty((n, m))
+    c_e = 6.0 * viscosity * surface_speed * d_z
+    c_s = 12.0 * viscosity * d_x * d_z
+    for i in range(n):
+        ie = i + 1 if i < n - 1 else 0
+        rate = -vx * cos_theta[i] - vy * sin_theta[i]
+        for j in range(m):
+            h_e = 0.5 * (h[i, j] + h[ie, j])
+            a_east[i, j] = h_e * h_e * h_e * d_z / d_x
+            couette[i, j] = c_e * h_e
+            squeeze[i, j] = c_s * rate
+            h_n = 0.5 * (h[i, j] + h[i, j + 1]) if j < m - 1 else h[i, j]
+            a_north[i, j] = h_n * h_n * h_n * d_x / d_z
+    return h, a_east, a_north, couette, squeeze
