@@ -179,7 +179,8 @@ def _contact_force_and_angle(case, cycle) -> tuple[np.ndarray, np.ndarray, np.nd
         force, angle = _contact_from_asperity(case, cycle)
         return force, mu * force, angle
     force = np.maximum(np.asarray(cycle.contact_force, dtype=float), 0.0)
-    return force, np.asarray(cycle.friction_force, dtype=float), np.asarray(cycle.contact_angle)
+    friction = np.abs(np.asarray(cycle.friction_force, dtype=float))  # magnitude, any sign
+    return force, friction, np.asarray(cycle.contact_angle, dtype=float)
 
 
 def analyse_contact(case, cycle) -> ContactResults:
