@@ -9,9 +9,7 @@ import numpy as np
 import pytest
 
 from conrod.cases.case import Case
-
-pytest.importorskip("conrod.simulation")
-from conrod.simulation import Simulation  # noqa: E402
+from conrod.simulation import Simulation
 
 
 def _run(case: Case):
