@@ -38,7 +38,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 
@@ -118,12 +117,6 @@ def contact_force(depth: float, depth_rate: float, stiffness: float, exponent: f
 def damping_coefficient(damping_factor: float, stiffness: float, effective_mass: float) -> float:
     """Seed 003 damping β = 2 μ √(c m_eff) [N s/m for α = 1]."""
     return 2.0 * damping_factor * math.sqrt(stiffness * effective_mass)
-
-
-def shell_outline(minor: float, eccentricity_sq: float, points: int = 361) -> np.ndarray:
-    """Angles ϕ [rad] and radii p(ϕ) [m] of the shell outline, for plotting."""
-    angles = np.linspace(0.0, 2.0 * np.pi, points)
-    return np.stack([angles, minor / np.sqrt(1.0 - eccentricity_sq * np.cos(angles) ** 2)])
 
 
 # --- exact ellipse–circle contact (option ``contact_geometry = "exact"``) ----------------

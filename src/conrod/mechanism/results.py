@@ -53,6 +53,8 @@ class MechanismResults:
     cycle_length : float  4π [rad]; cycles : int  cycles integrated [-].
     steps, rejected_steps : int  Accepted / rejected integrator steps [-].
     kinetic_energy_scale : float  Peak kinetic energy of rod and piston [J].
+    clearance_outline : dict  Per joint (angles from the rod axis [rad], free-play radius of
+        the journal centre [m]) for plotting.
     """
 
     crank_angle: np.ndarray
