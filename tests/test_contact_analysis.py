@@ -86,6 +86,9 @@ def test_hard_contact_summary_matches_seed_definitions(tmp_path):
         items["max_hertz_stress_Pa"] / items["nominal_specific_load_Pa"])
     assert np.sum(result.wear.journal_work) == pytest.approx(items["friction_work_J"])
     assert np.sum(result.wear.shell_work) == pytest.approx(items["friction_work_J"])
+    # seed eq. 4.5.1 on the same cycle: Σ μ P_c R Δφ (rotation = crank angle)
+    assert items["friction_work_seed_formula_J"] == pytest.approx(
+        0.1 * 0.03 * np.sum(_combustion_cycle().contact_force) * math.radians(1.0))
     write_json(tmp_path / "summary.json", items)  # JSON-clean: no NaN, plain types
     assert json.loads((tmp_path / "summary.json").read_text())["friction_work_J"] > 0.0
     assert set(result.cycle_columns()) >= {"contact_force_N", "friction_force_N"}

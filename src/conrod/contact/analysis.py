@@ -127,6 +127,13 @@ class ContactResults:
             return None
         return self.max_hertz_stress / self.nominal_specific_load
 
+    @property
+    def seed_friction_work(self) -> float:
+        """Seed 004 eq. 4.5.1, μ R Σ P_f Δφ with P_f = μ P_c: relative rotation taken equal
+        to the crank angle (ignores the rod swing) [J]."""
+        step = cycle_length(self.crank_angle) / self.crank_angle.size
+        return float(np.sum(self.friction_force) * self.journal_radius * step)
+
     def summary_items(self) -> dict[str, Any]:
         """Items merged into summary.json (issue 5 CLI contract)."""
         return {
@@ -140,6 +147,7 @@ class ContactResults:
             "nominal_specific_load_Pa": self.nominal_specific_load,
             "hertz_to_nominal_ratio": self.hertz_to_nominal_ratio,
             "friction_work_J": self.work.total,
+            "friction_work_seed_formula_J": self.seed_friction_work,
             "max_wear_journal_m": float(np.max(self.wear.journal_wear)),
             "max_wear_shell_m": float(np.max(self.wear.shell_wear)),
             "contact_warnings": self.warnings,
