@@ -56,6 +56,7 @@ class Simulation:
             raise CaseError("bearing.radial_clearance: required by 'run' [m]")
         self.case = case
         self.solver = _solver_with(case, overrides)
+        self._loads = self._read_loads()  # bad tables fail here, before any integration
 
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
@@ -69,6 +70,9 @@ class Simulation:
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (engine loads or the load table)."""
+        return self._loads
+
+    def _read_loads(self) -> LoadCycle:
         if self.case.load is not None:
             from conrod.loads.table_load import load_cycle_from_table
 

@@ -54,6 +54,11 @@ class SolverSection(Section):
         default=1.0e-3, gt=0.0, le=1.0,
         description="Periodic when max |e_k − e_(k−1)|/c at equal angles is below this [-]",
     )
+    film_tolerance: float = Field(
+        default=1.0e-10, gt=0.0, le=1.0e-3,
+        description="Iteration tolerance of grid films in the orbit (tight: smooth forces "
+        "for the implicit integrator) [-]",
+    )
     n_theta: int = Field(default=72, ge=8, le=2048, description="Circumferential grid nodes [-]")
     n_z: int = Field(default=16, ge=3, le=512, description="Axial grid nodes [-]")
     mass_x: float | None = Field(

@@ -18,6 +18,7 @@ from conrod.dynamics.problem import OrbitProblem, OrbitState, initial_state
 from conrod.dynamics.quasi_static import quasi_static_cycle
 from conrod.dynamics.rk2 import rk2_cycle
 from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.errors import CaseError
 
 
 @dataclass
@@ -45,6 +46,11 @@ def integrate_cycle(
 ) -> CycleTrajectory:
     """One cycle with the integrator named in ``settings`` (the ``[solver]`` section)."""
     name = integrator or settings.integrator
+    if name == "adaptive" and problem.has_history:
+        raise CaseError(
+            f"solver.integrator = 'adaptive': the {problem.film.name} film carries a history "
+            "field that is advanced in lock-step with a fixed step (allowed: rk2, quasi_static)"
+        )
     if name == "rk2":
         return rk2_cycle(problem, state, settings.step_deg, settings.output_step_deg)
     if name == "quasi_static":

@@ -34,6 +34,7 @@ class OrbitState:
     x, y : float  Position relative to the shell centre [m].
     vx, vy : float  Velocity [m/s].
     in_contact : bool  Journal on the contact circle [-].
+    film_history : ndarray or None  Film memory (mass-conserving film fraction) [-].
     """
 
     x: float = 0.0
@@ -41,6 +42,7 @@ class OrbitState:
     vx: float = 0.0
     vy: float = 0.0
     in_contact: bool = False
+    film_history: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -90,8 +92,15 @@ class OrbitProblem:
             self.dry_friction, self.contact_film_thickness,
         )
 
-    def force_function(self) -> ForceFunction:
-        """(x, y, vx, vy, ω_j, ω_b) → film force (F_x, F_y) [N] for this film and viscosity."""
+    @property
+    def has_history(self) -> bool:
+        """True for films with memory (mass-conserving): advanced in lock-step, see
+        :class:`FilmHistory`."""
+        return self.film.initial_history() is not None
+
+    def force_function(self, history: FilmHistory | None = None) -> ForceFunction:
+        """(x, y, vx, vy, ω_j, ω_b) → film force (F_x, F_y) [N] for this film and viscosity;
+        films with memory read the current ``history.field``."""
         mu = self.viscosity
         if self.is_short_bearing:
             g = self.film.geometry
@@ -104,7 +113,8 @@ class OrbitProblem:
         film = self.film
 
         def generic(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
-            state = FilmState(x, y, vx, vy, wj, wb, mu)
+            field = history.field if history is not None else None
+            state = FilmState(x, y, vx, vy, wj, wb, mu, history=field)
             fx, fy = film.force(state)
             return float(fx), float(fy)
 
@@ -114,6 +124,32 @@ class OrbitProblem:
         """Output crank angles over one cycle from 0, last point excluded [rad]."""
         count = max(int(round(np.degrees(self.loads.cycle) / step_deg)), 4)
         return np.linspace(0.0, self.loads.cycle, count, endpoint=False)
+
+
+class FilmHistory:
+    """Film memory (e.g. the film fraction ϑ of the mass-conserving model) advanced in
+    lock-step with a fixed-step integrator: after each accepted step of length dt [s],
+    ϑ ← clip(ϑ + dt ∂ϑ/∂t, 0, 1) with ∂ϑ/∂t from the film at the step start (explicit Euler,
+    first order in time; the model's transport limit dt |ω_j + ω_b|/2 ≤ Δθ must hold)."""
+
+    def __init__(self, film: FilmModel, field: np.ndarray | None = None):
+        self.film = film
+        self.field = film.initial_history() if field is None else field
+
+    def advance(self, state: FilmState, dt: float) -> None:
+        """One explicit step from ``state`` (its history is replaced by the current field)."""
+        if self.field is None:
+            return
+        rate = self.film.solve(_with_history(state, self.field)).history_rate
+        if rate is not None:
+            self.field = np.clip(self.field + dt * rate, 0.0, 1.0)
+
+
+def _with_history(state: FilmState, field: np.ndarray) -> FilmState:
+    return FilmState(
+        state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
+        state.journal_speed, state.shell_speed, state.viscosity, state.deformation, field,
+    )
 
 
 @nb.njit(cache=True)

@@ -16,9 +16,10 @@ import numba as nb
 import numpy as np
 
 from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
-from conrod.dynamics.problem import OrbitProblem, OrbitState
+from conrod.dynamics.problem import FilmHistory, OrbitProblem, OrbitState
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
+from conrod.film.base import FilmState
 from conrod.film.short_bearing_kernel import short_bearing_force
 
 NEWTON_ITERATIONS = 60
@@ -69,7 +70,7 @@ def short_bearing_velocity(
     return vx, vy, res / load
 
 
-def _velocity_solver(problem: OrbitProblem):
+def _velocity_solver(problem: OrbitProblem, history=None):
     """(x, y, W_x, W_y, ω_j, ω_b, guess) → (v_x, v_y, relative residual)."""
     mu = problem.viscosity
     film = problem.film
@@ -87,12 +88,12 @@ def _velocity_solver(problem: OrbitProblem):
                 guess[0], guess[1], scale,
             )
         return short
-    return _generic_newton(problem, scale)
+    return _generic_newton(problem, scale, history)
 
 
-def _generic_newton(problem: OrbitProblem, scale: float):
+def _generic_newton(problem: OrbitProblem, scale: float, history=None):
     """Damped Newton (backtracking, step ≤ 10 c ω) with a finite-difference Jacobian."""
-    force = problem.force_function()
+    force = problem.force_function(history)
 
     def residual(x, y, v, wx, wy, wj, wb):
         fx, fy = force(x, y, v[0], v[1], wj, wb)
@@ -139,7 +140,8 @@ def quasi_static_cycle(
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed
-    velocity = _velocity_solver(problem)
+    history = FilmHistory(problem.film, state.film_history) if problem.has_history else None
+    velocity = _velocity_solver(problem, history)
     rc = problem.contact_radius * (1.0 - 1e-9)
     x, y, guess = state.x, state.y, (state.vx, state.vy)
     table = np.zeros((n_out, 7))
@@ -157,11 +159,14 @@ def quasi_static_cycle(
         x, y, _ = project_onto_circle(x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), rc)
         guess = (vx2, vy2)
         worst = max(worst, r1, r2)
+        if history is not None:
+            history.advance(FilmState(xp, yp, vx, vy, wj[k], wb[k], problem.viscosity), dt)
     if worst > 1e-4 or not np.all(np.isfinite(table)):
         raise ConvergenceError("quasi-static velocity solve failed", residual=worst)
     sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
     _contact_forces(problem, table, *sampled)
-    end = OrbitState(x, y, guess[0], guess[1], False)
+    end = OrbitState(x, y, guess[0], guess[1], False,
+                     history.field if history is not None else None)
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, 2 * (len(phi) - 1))
 
 

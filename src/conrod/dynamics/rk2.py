@@ -15,9 +15,10 @@ import numba as nb
 import numpy as np
 
 from conrod.dynamics.contact import contact_acceleration
-from conrod.dynamics.problem import OrbitProblem, OrbitState
+from conrod.dynamics.problem import FilmHistory, OrbitProblem, OrbitState
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import CaseError, ConvergenceError
+from conrod.film.base import FilmState
 from conrod.film.short_bearing_kernel import short_bearing_force
 
 
@@ -101,6 +102,7 @@ def rk2_cycle(
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed
     start = np.array([state.x, state.y, state.vx, state.vy, float(state.in_contact)])
+    history = None
     if problem.is_short_bearing:
         g = problem.film.geometry
         table, end = rk2_short_bearing_cycle(
@@ -109,19 +111,24 @@ def rk2_cycle(
             problem.dry_friction, problem.contact_radius,
         )
     else:
-        table, end = _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every)
+        history = FilmHistory(problem.film, state.film_history) if problem.has_history else None
+        table, end = _rk2_generic_cycle(
+            problem, start, dt, load_x, load_y, wj, wb, record_every, history
+        )
     if not np.all(np.isfinite(table)):
         raise ConvergenceError(
             "rk2 orbit diverged (film too stiff for the step; reduce solver.step_deg)",
             where=f"step {step_deg} deg",
         )
-    end_state = OrbitState(end[0], end[1], end[2], end[3], bool(end[4] > 0.5))
+    field = history.field if not problem.is_short_bearing and history is not None else None
+    end_state = OrbitState(end[0], end[1], end[2], end[3], bool(end[4] > 0.5), field)
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state, len(phi) - 1)
 
 
-def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every):
-    """The same Heun scheme for any film model (Python loop; slow for grid models)."""
-    force = problem.force_function()
+def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every, history):
+    """The same Heun scheme for any film model (Python loop; slow for grid models); a film
+    history is advanced in lock-step after every step (:class:`FilmHistory`)."""
+    force = problem.force_function(history)
     radius = problem.film.geometry.radius
     x, y, vx, vy, contact = start[0], start[1], start[2], start[3], bool(start[4] > 0.5)
     n_steps = load_x.size - 1
@@ -140,6 +147,8 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every)
             out[k // record_every] = (x, y, vx, vy, pc, pf, float(contact))
         xp, yp, vxp, vyp = x + dt * vx, y + dt * vy, vx + dt * ax, vy + dt * ay
         ax2, ay2, _, _ = acceleration(k + 1, xp, yp, vxp, vyp)
+        if history is not None:
+            history.advance(FilmState(x, y, vx, vy, wj[k], wb[k], problem.viscosity), dt)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius, pc > 0.0)

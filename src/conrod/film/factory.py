@@ -43,10 +43,14 @@ def _film_class(name: str) -> Any:
     return getattr(module, class_name)
 
 
-def _grid_kwargs(solver: Any) -> dict[str, int]:
+def _grid_kwargs(solver: Any) -> dict[str, Any]:
     if solver is None:
         return {}
-    return {"n_theta": int(solver.n_theta), "n_z": int(solver.n_z)}
+    kwargs: dict[str, Any] = {"n_theta": int(solver.n_theta), "n_z": int(solver.n_z)}
+    tolerance = getattr(solver, "film_tolerance", None)
+    if tolerance is not None:
+        kwargs["tolerance"] = float(tolerance)
+    return kwargs
 
 
 def build_film_model(
@@ -71,7 +75,7 @@ def build_film_model(
     return cls(geometry)
 
 
-def _construct(cls: Any, geometry: BearingGeometry, kwargs: dict[str, int]) -> FilmModel:
+def _construct(cls: Any, geometry: BearingGeometry, kwargs: dict[str, Any]) -> FilmModel:
     try:
         return cls(geometry, **kwargs)
     except TypeError:
