@@ -108,9 +108,9 @@ def test_heat_balance_closes_with_reported_means(table_run):
 
 def test_vogel_viscosity_is_iterated_to_the_effective_temperature(tmp_path):
     lub = "vogel_a = 6.0e-5\nvogel_b = 900.0\nvogel_c = 95.0\nsupply_temperature = 80.0\n"
+    solver = 'film = "short"\nintegrator = "quasi_static"\nthermal_tolerance = 0.05\n'
     case = table_case(tmp_path, sinus_rows(), lubricant=lub,
-                      solver='film = "short"\nintegrator = "quasi_static"\nthermal_tolerance = 0.05\n'
-                             "thermal_iterations = 30\n")
+                      solver=solver + "thermal_iterations = 30\n")
     results = Simulation(case).run()
     s = results.summary
     assert s.thermal_iterations >= 1
