@@ -113,6 +113,7 @@ class Simulation:
         return OrbitProblem(
             self.film(), self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, self.solver.contact_film_thickness,
+            _asperity_parameters(self.case),
         )
 
     # -- run --------------------------------------------------------------------------
@@ -203,6 +204,17 @@ def _previous(orbit: PeriodicOrbit):
     if orbit.previous is None:
         return None
     return np.vstack([orbit.previous.x, orbit.previous.y])
+
+
+def _asperity_parameters(case: Case):
+    """Greenwood–Tripp kernel parameters when ``[contact] model = "greenwood_tripp"``."""
+    if case.contact.model != "greenwood_tripp":
+        return None
+    if importlib.util.find_spec("conrod.contact.asperity") is None:
+        raise CaseError("contact.model = 'greenwood_tripp': asperity model not available")
+    from conrod.contact.asperity import kernel_parameters
+
+    return kernel_parameters(case)
 
 
 def _contact_analysis(case: Case, cycle: CycleResults):

@@ -55,6 +55,8 @@ class OrbitProblem:
     mass_x, mass_y : float  Moving masses along film x and y [kg].
     dry_friction : float  Dry friction coefficient μ_dry [-].
     contact_film_thickness : float  h at which hard contact starts [m].
+    asperity : tuple or None  Greenwood–Tripp parameters (R [m], L [m], σ [m], K E' [Pa]) of
+        :func:`conrod.contact.asperity.asperity_force`, added to the film force when given.
     """
 
     film: FilmModel
@@ -64,6 +66,7 @@ class OrbitProblem:
     mass_y: float
     dry_friction: float = 0.1
     contact_film_thickness: float = 0.0
+    asperity: tuple[float, float, float, float] | None = None
 
     @property
     def clearance(self) -> float:
@@ -83,13 +86,13 @@ class OrbitProblem:
     @property
     def is_short_bearing(self) -> bool:
         """True when the compiled short-bearing fast path applies."""
-        return type(self.film) is ShortBearingFilm
+        return type(self.film) is ShortBearingFilm and self.asperity is None
 
     def with_viscosity(self, viscosity: float) -> OrbitProblem:
         """Same problem with another viscosity [Pa s]."""
         return OrbitProblem(
             self.film, self.loads, viscosity, self.mass_x, self.mass_y,
-            self.dry_friction, self.contact_film_thickness,
+            self.dry_friction, self.contact_film_thickness, self.asperity,
         )
 
     @property
@@ -101,16 +104,20 @@ class OrbitProblem:
     def force_function(self, history: FilmHistory | None = None) -> ForceFunction:
         """(x, y, vx, vy, ω_j, ω_b) → film force (F_x, F_y) [N] for this film and viscosity;
         films with memory read the current ``history.field``."""
-        mu = self.viscosity
-        if self.is_short_bearing:
-            g = self.film.geometry
+        if self.asperity is not None:
+            return _with_asperity(self._film_force(history), self.clearance, self.asperity)
+        return self._film_force(history)
+
+    def _film_force(self, history: FilmHistory | None) -> ForceFunction:
+        mu, film = self.viscosity, self.film
+        if type(film) is ShortBearingFilm:
+            g = film.geometry
             radius, width, c = g.radius, g.width, g.radial_clearance
 
             def short(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
                 return short_bearing_force(x, y, vx, vy, wj + wb, mu, radius, width, c)
 
             return short
-        film = self.film
 
         def generic(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
             field = history.field if history is not None else None
@@ -124,6 +131,18 @@ class OrbitProblem:
         """Output crank angles over one cycle from 0, last point excluded [rad]."""
         count = max(int(round(np.degrees(self.loads.cycle) / step_deg)), 4)
         return np.linspace(0.0, self.loads.cycle, count, endpoint=False)
+
+
+def _with_asperity(film_force: ForceFunction, clearance: float, params) -> ForceFunction:
+    """Film force plus the Greenwood–Tripp asperity force (H5's compiled kernel)."""
+    from conrod.contact.asperity import asperity_force
+
+    def total(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
+        fx, fy = film_force(x, y, vx, vy, wj, wb)
+        ax, ay = asperity_force(x, y, clearance, params)
+        return fx + ax, fy + ay
+
+    return total
 
 
 class FilmHistory:
