@@ -103,3 +103,11 @@ def test_periodicity_loop_reports_non_periodic_orbits():
     orbit = periodic_orbit(problem, solver(max_cycles=1, min_cycles=1))
     assert not orbit.periodic
     assert orbit.cycles == 1 and math.isinf(orbit.periodicity_error)
+
+
+def test_rk2_refuses_a_step_beyond_its_stability_limit():
+    from conrod.errors import ConvergenceError
+
+    loads = load_cycle(lambda p: 6000.0 + 0 * p, lambda p: 0 * p, cycle=2 * math.pi)
+    with pytest.raises(ConvergenceError, match="step too large"):
+        integrate_cycle(short_problem(loads, mass=1.0), OrbitState(), solver(step_deg=0.05), "rk2")

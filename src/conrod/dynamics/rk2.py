@@ -42,6 +42,15 @@ def _settle_contact(x, y, vx, vy, radius, pressing):
 
 
 @nb.njit(cache=True)
+def short_bearing_squeeze_damping(eps, viscosity, radius, width, clearance):
+    """Radial squeeze damping of the short bearing B_rr = π μ R L³ (1 + 2ε²) /
+    (2 c³ (1 − ε²)^{5/2}) [N s/m] (Hamrock, Fundamentals of Fluid Film Lubrication, ch. 10)."""
+    eps = min(eps, 0.999999)
+    return (math.pi * viscosity * radius * width**3 * (1.0 + 2.0 * eps * eps)
+            / (2.0 * clearance**3 * (1.0 - eps * eps) ** 2.5))
+
+
+@nb.njit(cache=True)
 def rk2_short_bearing_cycle(
     state, dt, load_x, load_y, journal_speed, shell_speed, record_every,
     viscosity, radius, width, clearance, mass_x, mass_y, dry_friction, contact_radius,
@@ -50,12 +59,19 @@ def rk2_short_bearing_cycle(
 
     state = (x, y, vx, vy, in_contact) [m, m/s]; loads and speeds sampled at the n+1 step
     points [N, rad/s]; ``dt`` step [s]. Returns rows (x, y, vx, vy, P_c, P_f, contact) every
-    ``record_every`` steps, and the end state.
+    ``record_every`` steps, the end state and the largest stability number Δt B_rr/m [-]
+    (Heun is stable for real negative eigenvalues when it is ≤ 2).
     """
     x, y, vx, vy, contact = state[0], state[1], state[2], state[3], state[4] > 0.5
     n_steps = load_x.size - 1
     out = np.empty((n_steps // record_every, 7))
+    stiffness = 0.0
+    lightest = min(mass_x, mass_y)
     for k in range(n_steps):
+        damping = short_bearing_squeeze_damping(
+            math.hypot(x, y) / clearance, viscosity, radius, width, clearance
+        )
+        stiffness = max(stiffness, dt * damping / lightest)
         wj, wb = journal_speed[k], shell_speed[k]
         fx, fy = short_bearing_force(x, y, vx, vy, wj + wb, viscosity, radius, width, clearance)
         ax, ay, pc, pf = contact_acceleration(
@@ -77,7 +93,7 @@ def rk2_short_bearing_cycle(
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, contact_radius, pc > 0.0)
-    return out, np.array([x, y, vx, vy, 1.0 if contact else 0.0])
+    return out, np.array([x, y, vx, vy, 1.0 if contact else 0.0]), stiffness
 
 
 def _step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
@@ -105,11 +121,18 @@ def rk2_cycle(
     history = None
     if problem.is_short_bearing:
         g = problem.film.geometry
-        table, end = rk2_short_bearing_cycle(
+        table, end, stiffness = rk2_short_bearing_cycle(
             start, dt, load_x, load_y, wj, wb, record_every, problem.viscosity,
             g.radius, g.width, g.radial_clearance, problem.mass_x, problem.mass_y,
             problem.dry_friction, problem.contact_radius,
         )
+        if stiffness > 2.0:
+            raise ConvergenceError(
+                f"rk2 step too large for the film stiffness: Δt·B/m = {stiffness:.3g} > 2 "
+                f"(explicit Heun unstable); use solver.step_deg ≤ {step_deg * 1.9 / stiffness:.2g}"
+                " deg or the adaptive integrator",
+                where=f"step {step_deg} deg", residual=stiffness,
+            )
     else:
         history = FilmHistory(problem.film, state.film_history) if problem.has_history else None
         table, end = _rk2_generic_cycle(

@@ -59,8 +59,9 @@ def build_film_model(
     """Film model for ``geometry`` from a :class:`Case` or its ``[solver]`` section.
 
     ``name`` overrides ``solver.film``. Grid models (reynolds, mass_conserving) receive
-    ``n_theta``, ``n_z``; ``table`` wraps the short-bearing model (its fast base) unless the
-    table class chooses otherwise.
+    ``n_theta``, ``n_z`` and ``film_tolerance``; ``table`` tabulates a Reynolds film on that
+    grid; ``mobility`` builds its map from a Reynolds film on that grid; ``short`` with a full
+    central groove becomes :class:`GroovedShortBearingFilm`.
     """
     solver = getattr(case_or_solver, "solver", case_or_solver)
     film_name = name or getattr(solver, "film", "short")
@@ -70,8 +71,11 @@ def build_film_model(
     if film_name == "short" and central_groove_width(geometry) > 0.0:
         return GroovedShortBearingFilm.from_geometry(geometry)
     if film_name == "table":
-        base = _film_class("short")(geometry)
+        base = _construct(_film_class("reynolds"), geometry, _grid_kwargs(solver))
         return cls(base)
+    if film_name == "mobility":
+        grid = {k: v for k, v in _grid_kwargs(solver).items() if k != "tolerance"}
+        return _construct(cls, geometry, grid)
     return cls(geometry)
 
 
