@@ -70,6 +70,41 @@ def short_bearing_velocity(
     return vx, vy, res / load
 
 
+@nb.njit(cache=True)
+def quasi_static_short_bearing_cycle(
+    x, y, vx, vy, dt, load_x, load_y, journal_speed, shell_speed, record_every,
+    viscosity, radius, width, clearance, contact_radius, speed_scale,
+):
+    """Compiled Heun loop of :func:`quasi_static_cycle` for the short bearing: rows
+    (x, y, vx, vy, 0, 0, contact) every ``record_every`` steps, end state, worst residual."""
+    n_steps = load_x.size - 1
+    out = np.zeros((n_steps // record_every, 7))
+    worst = 0.0
+    for k in range(n_steps):
+        vx, vy, r1 = short_bearing_velocity(
+            x, y, load_x[k], load_y[k], journal_speed[k], shell_speed[k], viscosity,
+            radius, width, clearance, vx, vy, speed_scale,
+        )
+        contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
+        if contact and x * vx + y * vy > 0.0:
+            vx, vy = remove_normal_velocity(x, y, vx, vy)
+        if k % record_every == 0 and k // record_every < out.shape[0]:
+            row = k // record_every
+            out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
+            out[row, 6] = 1.0 if contact else 0.0
+        xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
+        vx2, vy2, r2 = short_bearing_velocity(
+            xp, yp, load_x[k + 1], load_y[k + 1], journal_speed[k + 1], shell_speed[k + 1],
+            viscosity, radius, width, clearance, vx, vy, speed_scale,
+        )
+        x, y, _ = project_onto_circle(
+            x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), contact_radius
+        )
+        vx, vy = vx2, vy2
+        worst = max(worst, r1, r2)
+    return out, np.array([x, y, vx, vy]), worst
+
+
 def _velocity_solver(problem: OrbitProblem, history=None):
     """(x, y, W_x, W_y, ω_j, ω_b, guess) → (v_x, v_y, relative residual)."""
     mu = problem.viscosity
@@ -140,9 +175,11 @@ def quasi_static_cycle(
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed
+    rc = problem.contact_radius * (1.0 - 1e-9)
+    if problem.is_short_bearing:
+        return _compiled_short(problem, state, phi, record_every, n_out, rc)
     history = FilmHistory(problem.film, state.film_history) if problem.has_history else None
     velocity = _velocity_solver(problem, history)
-    rc = problem.contact_radius * (1.0 - 1e-9)
     x, y, guess = state.x, state.y, (state.vx, state.vy)
     table = np.zeros((n_out, 7))
     worst = 0.0
@@ -168,6 +205,25 @@ def quasi_static_cycle(
     end = OrbitState(x, y, guess[0], guess[1], False,
                      history.field if history is not None else None)
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, 2 * (len(phi) - 1))
+
+
+def _compiled_short(problem, state, phi, record_every, n_out, rc) -> CycleTrajectory:
+    load_x, load_y = problem.loads.load(phi)
+    wj, wb = problem.loads.speeds(phi)
+    dt = (phi[1] - phi[0]) / problem.crank_speed
+    g = problem.film.geometry
+    table, end, worst = quasi_static_short_bearing_cycle(
+        state.x, state.y, state.vx, state.vy, dt, load_x, load_y, wj, wb, record_every,
+        problem.viscosity, g.radius, g.width, g.radial_clearance, rc,
+        g.radial_clearance * max(problem.crank_speed, 1e-3),
+    )
+    if worst > 1e-4 or not np.all(np.isfinite(table)):
+        raise ConvergenceError("quasi-static velocity solve failed", residual=worst)
+    sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
+    _contact_forces(problem, table, *sampled)
+    end_state = OrbitState(end[0], end[1], end[2], end[3], False)
+    return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state,
+                                      2 * (len(phi) - 1))
 
 
 def _inward_only(x: float, y: float, vx: float, vy: float) -> tuple[float, float]:
