@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import tomllib
 
@@ -55,16 +56,20 @@ def test_force_adds_radial_asperity_force_and_opposing_friction():
 @pytest.mark.slow
 def test_mixed_lubrication_orbit_shares_the_load_smoothly(repo):
     """1000 rpm example with Greenwood–Tripp (σ = 1 µm, ηβσ = 0.04, σ/β = 0.02) inside the
-    orbit: the asperities carry part of the combustion load, the asperity force rises and falls
-    smoothly, and contact (asperity force > 1 % of the peak load) sits around combustion."""
+    orbit (the orbit solver adds the asperity force when model = "greenwood_tripp"): the
+    asperities carry part of the combustion load, the asperity force rises and falls
+    smoothly, and contact (asperity force > 1 % of the peak load) sits around combustion.
+    The same surfaces inside a MixedLubricationFilm (with boundary friction) agree."""
     from conrod.simulation import Simulation
 
     class MixedSimulation(Simulation):
-        def film(self):
-            return MixedLubricationFilm(
-                super().film(), kernel_parameters(self.case),
-                self.case.contact.dry_friction_coefficient,
-            )
+        """Asperity force + boundary friction from the film wrapper instead of the solver."""
+
+        def problem(self, viscosity=None):
+            problem = super().problem(viscosity)
+            film = MixedLubricationFilm(problem.film, kernel_parameters(self.case),
+                                        self.case.contact.dry_friction_coefficient)
+            return dataclasses.replace(problem, film=film, asperity=None)
 
     path = repo / "examples" / "passenger_car_diesel_1000rpm.toml"
     data = tomllib.loads(path.read_text(encoding="utf-8"))
@@ -72,7 +77,8 @@ def test_mixed_lubrication_orbit_shares_the_load_smoothly(repo):
     data["contact"].update(model="greenwood_tripp", roughness=sigma, asperity_radius=sigma / 0.02,
                            asperity_density=0.04 / (sigma * sigma / 0.02))
     data["solver"]["contact_film_thickness"] = 0.0  # no hard-contact circle inside the film
-    results = MixedSimulation(Case.from_dict(data, base_dir=path.parent)).run()
+    case = Case.from_dict(data, base_dir=path.parent)
+    results = Simulation(case).run()
     contact = results.contact
     force = contact.contact_force
     peak_load = float(np.max(np.hypot(results.cycle.load_x, results.cycle.load_y)))
@@ -81,3 +87,5 @@ def test_mixed_lubrication_orbit_shares_the_load_smoothly(repo):
     (start, end), = contact.intervals
     assert 0.0 < math.degrees(start) < 40.0 and 40.0 < math.degrees(end) < 100.0
     assert float(np.max(results.cycle.contact_force)) == 0.0  # no hard contact needed
+    wrapped = MixedSimulation(case).run().contact
+    assert np.max(wrapped.contact_force) == pytest.approx(np.max(force), rel=0.05)
