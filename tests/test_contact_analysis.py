@@ -119,10 +119,13 @@ def test_no_contact_gives_zeros_and_null_ratio():
 
 
 def test_greenwood_tripp_mode_recomputes_the_asperity_force():
-    """Under GT the contact force comes from the orbit's eccentricity (same kernel as the RHS)."""
+    """Under GT the asperity force comes from the orbit's eccentricity (same kernel as the
+    RHS) and adds to any hard-contact force of the orbit."""
     case = _case(model="greenwood_tripp", roughness=0.4e-6)
     cycle = _combustion_cycle(gap_in_contact=0.2e-6)
-    cycle.contact_force[:] = 0.0  # the hard-contact force of the orbit is not used
+    hard, hard_friction = cycle.contact_force.copy(), cycle.friction_force.copy()
+    cycle.contact_force[:] = 0.0  # a pure mixed-lubrication orbit: no hard contact
+    cycle.friction_force[:] = 0.0
     result = analyse_contact(case, cycle)
     index = 400
     expected = math.hypot(*asperity_force(
@@ -133,6 +136,10 @@ def test_greenwood_tripp_mode_recomputes_the_asperity_force():
     assert result.contact_force[index] == pytest.approx(expected)
     assert result.friction_force[index] == pytest.approx(0.1 * expected)
     assert result.contact_force[0] == 0.0  # ε = 0.5: no asperity contact
+    cycle.contact_force[:], cycle.friction_force[:] = hard, hard_friction
+    both = analyse_contact(case, cycle)
+    assert both.contact_force[index] == pytest.approx(hard[index] + expected)
+    assert both.friction_force[index] == pytest.approx(hard_friction[index] + 0.1 * expected)
 
 
 def test_missing_clearance_is_a_case_error():

@@ -3,9 +3,9 @@ work, wear on journal and shell (issue 5, seed 004 §4.3–4.5).
 
 ``Simulation.run()`` calls :func:`analyse_contact` after the orbit (``docs/orbit.md``).
 With ``[contact] model = "hard"`` the contact force is the orbit's hard-contact force
-P_c (seed 004 eq. 4.2.5); with ``"greenwood_tripp"`` it is the asperity force recomputed
-from the orbit (the same compiled kernel the orbit used) and the boundary friction is
-μ_dry × that force.
+P_c (seed 004 eq. 4.2.5); with ``"greenwood_tripp"`` the asperity force recomputed from the
+orbit (the same compiled kernel the orbit used) is added, with boundary friction μ_dry × that
+force (both radial along the line of centres).
 """
 
 from __future__ import annotations
@@ -181,13 +181,14 @@ def _contact_from_asperity(case, cycle) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _contact_force_and_angle(case, cycle) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(P_c [N], friction force [N], contact angle [rad]) per output angle."""
-    mu = case.contact.dry_friction_coefficient
-    if case.contact.model == "greenwood_tripp":
-        force, angle = _contact_from_asperity(case, cycle)
-        return force, mu * force, angle
+    """(P_c [N], friction force [N], contact angle [rad]) per output angle: the orbit's hard
+    contact, plus under Greenwood–Tripp the asperity force with μ_dry boundary friction."""
     force = np.maximum(np.asarray(cycle.contact_force, dtype=float), 0.0)
     friction = np.abs(np.asarray(cycle.friction_force, dtype=float))  # magnitude, any sign
+    if case.contact.model == "greenwood_tripp":
+        asperity, angle = _contact_from_asperity(case, cycle)
+        mu = case.contact.dry_friction_coefficient
+        return force + asperity, friction + mu * asperity, angle
     return force, friction, np.asarray(cycle.contact_angle, dtype=float)
 
 
