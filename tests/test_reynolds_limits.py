@@ -231,3 +231,19 @@ def test_mid_plane_symmetry_shortcut_matches_full_grid():
     assert np.max(np.abs(half.pressure - full.pressure)) < 1e-8 * full.max_pressure
     assert half.pressure == pytest.approx(half.pressure[:, ::-1], abs=1e-12 * full.max_pressure)
     assert half.side_flow == pytest.approx(full.side_flow, rel=1e-8)
+
+
+def test_warm_started_force_is_smooth_enough_for_jacobians():
+    """An implicit integrator differentiates F with tiny steps (~1e-8 of the state): the
+    warm-started solver must resolve them. Forward differences at δ = 1e-8 c agree with a
+    central difference at δ = 1e-4 c (the curvature error of which is ~1e-8)."""
+    film = ReynoldsFilm(geometry(1.0), n_theta=72, n_z=16)
+    base = dict(velocity_x=2e-4, journal_speed=OMEGA, viscosity=MU)
+    f0 = np.array(film.force(FilmState(0.6 * C, 0.1 * C, **base)))
+    tiny = 1e-8 * C
+    forward = (np.array(film.force(FilmState(0.6 * C + tiny, 0.1 * C, **base))) - f0) / tiny
+    wide = 1e-4 * C
+    plus = np.array(film.force(FilmState(0.6 * C + wide, 0.1 * C, **base)))
+    minus = np.array(film.force(FilmState(0.6 * C - wide, 0.1 * C, **base)))
+    central = (plus - minus) / (2 * wide)
+    assert np.linalg.norm(forward - central) < 1e-3 * np.linalg.norm(central)
