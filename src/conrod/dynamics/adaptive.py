@@ -22,6 +22,9 @@ from conrod.dynamics.problem import OrbitProblem, OrbitState, load_table, period
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
 
+FALLBACK_METHODS = ("Radau", "BDF", "LSODA")
+"""Methods tried in turn when the chosen one fails on a segment (step-size collapse) [-]."""
+
 MAX_PHASE_CHANGES = 5000
 """Most contact entries + exits per cycle before giving up (chattering) [-]."""
 
@@ -110,11 +113,7 @@ def adaptive_cycle(
     leave.terminal, leave.direction = True, -1.0  # type: ignore[attr-defined]
     for _ in range(MAX_PHASE_CHANGES):
         rhs, event = (phases.contact_rhs, leave) if contact else (phases.free_rhs, hit)
-        sol = solve_ivp(
-            rhs, (phi, end), current, method=settings.adaptive_method, events=event,
-            dense_output=True, max_step=math.radians(settings.max_step_deg),
-            rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
-        )
+        sol = _solve_segment(rhs, phi, end, current, event, settings)
         if sol.status < 0:
             raise ConvergenceError(f"adaptive orbit integration failed: {sol.message}",
                                    where=f"crank angle {math.degrees(phi):.2f} deg")
@@ -131,6 +130,22 @@ def adaptive_cycle(
         current, contact = _switch(phases, phi, sol.y[:, -1], contact)
     raise ConvergenceError("contact chattering: too many contact entries/exits",
                            where=f"crank angle {math.degrees(phi):.2f} deg")
+
+
+def _solve_segment(rhs, phi, end, current, event, settings):
+    """solve_ivp with the chosen method, then the others of :data:`FALLBACK_METHODS`."""
+    methods = [settings.adaptive_method] + [
+        m for m in FALLBACK_METHODS if m != settings.adaptive_method
+    ]
+    for method in methods:
+        sol = solve_ivp(
+            rhs, (phi, end), current, method=method, events=event, dense_output=True,
+            max_step=math.radians(settings.max_step_deg),
+            rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
+        )
+        if sol.status >= 0:
+            return sol
+    return sol
 
 
 def _scaled(state: OrbitState, c: float, w: float, phases: _Phases) -> np.ndarray:
