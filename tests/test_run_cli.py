@@ -91,3 +91,12 @@ def test_bad_case_exits_2_with_one_line(runner, tmp_path):
     assert result.exit_code == 2
     assert "radial_clearance" in result.output
     assert not (tmp_path / "out").exists()
+
+
+def test_non_periodic_orbit_is_reported_not_hidden(runner, tmp_path):
+    result = runner.invoke(app, ["run", str(EXAMPLES / "flores2006_table_load.toml"),
+                                 "--out", str(tmp_path), "--max-cycles", "1", "--no-figures"])
+    assert result.exit_code == 0
+    assert "warning: orbit not periodic after 1 cycles" in result.output
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["periodic"] is False and summary["warnings"]
