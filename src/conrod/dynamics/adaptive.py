@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 
+import numba as nb
 import numpy as np
 from scipy.integrate import solve_ivp
 
@@ -21,12 +22,32 @@ from conrod.dynamics.contact import contact_acceleration, contact_normal_force
 from conrod.dynamics.problem import OrbitProblem, OrbitState, load_table, periodic_sample
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
+from conrod.film.short_bearing_kernel import short_bearing_force
 
 FALLBACK_METHODS = ("Radau", "BDF", "LSODA")
 """Methods tried in turn when the chosen one fails on a segment (step-size collapse) [-]."""
 
 MAX_PHASE_CHANGES = 5000
 """Most contact entries + exits per cycle before giving up (chattering) [-]."""
+
+
+@nb.njit(cache=True)
+def free_rhs_short_bearing(phi, u, angles, table, cycle, viscosity, radius, width, clearance,
+                           omega, mass_x, mass_y):
+    """Compiled free-phase right-hand side du/dφ for the short bearing (same as
+    :meth:`_Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω))."""
+    row = periodic_sample(phi, angles, table, cycle)
+    c_omega = clearance * omega
+    fx, fy = short_bearing_force(
+        u[0] * clearance, u[1] * clearance, u[2] * c_omega, u[3] * c_omega,
+        row[2] + row[3], viscosity, radius, width, clearance,
+    )
+    scale = c_omega * omega
+    out = np.empty(4)
+    out[0], out[1] = u[2], u[3]
+    out[2] = (row[0] + fx) / (mass_x * scale)
+    out[3] = (row[1] + fy) / (mass_y * scale)
+    return out
 
 
 class _Phases:
@@ -51,6 +72,13 @@ class _Phases:
         return wx + fx, wy + fy, (wj - wb) * self.radius
 
     def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:
+        if self.p.is_short_bearing:
+            g = self.p.film.geometry
+            return free_rhs_short_bearing(
+                float(phi), np.asarray(u, dtype=float), self.angles, self.table,
+                float(self.loads.cycle), float(self.p.viscosity), g.radius, g.width, self.c,
+                float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
+            )
         c, w = self.c, self.omega
         x, y, vx, vy = u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w
         big_x, big_y, _ = self.forces(phi, x, y, vx, vy)
