@@ -53,6 +53,8 @@ def cycle_table(results: RunResults) -> dict[str, np.ndarray]:
         if values.dtype == bool:
             values = values.astype(int)
         table[column] = convert(values) if convert is not None else values
+    if results.contact is not None:  # contact post-processing refines/adds columns
+        table.update(results.contact.cycle_columns())
     return table
 
 
