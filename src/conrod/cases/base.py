@@ -32,7 +32,8 @@ def field_unit(model: type[BaseModel], name: str) -> str:
     if info is None or not info.description:
         return ""
     match = _UNIT.search(info.description)
-    return match.group(1) if match else ""
+    unit = match.group(1) if match else ""
+    return "" if unit == "-" else unit
 
 
 def field_range(model: type[BaseModel], name: str) -> str:

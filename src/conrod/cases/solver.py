@@ -55,12 +55,18 @@ class SolverSection(Section):
         description="Periodic when max |e_k − e_(k−1)|/c at equal angles is below this [-]",
     )
     film_tolerance: float = Field(
-        default=1.0e-10, gt=0.0, le=1.0e-3,
-        description="Iteration tolerance of grid films in the orbit (tight: smooth forces "
-        "for the implicit integrator) [-]",
+        default=1.0e-12, gt=0.0, le=1.0e-3,
+        description="Iteration tolerance of grid films in the orbit; tight, because the "
+        "implicit integrator differentiates the film force with ~1e-8 steps [-]",
     )
-    n_theta: int = Field(default=72, ge=8, le=2048, description="Circumferential grid nodes [-]")
-    n_z: int = Field(default=16, ge=3, le=512, description="Axial grid nodes [-]")
+    n_theta: int = Field(
+        default=72, ge=8, le=2048, multiple_of=2,
+        description="Circumferential grid intervals (= nodes, periodic), even [-]",
+    )
+    n_z: int = Field(
+        default=16, ge=4, le=512, multiple_of=2,
+        description="Axial grid intervals (n_z + 1 nodes), even [-]",
+    )
     mass_x: float | None = Field(
         default=None, gt=0.0, le=1.0e5,
         description="Moving mass along film x (rod axis for a big end) [kg]",
