@@ -10,7 +10,7 @@ import pytest
 matplotlib.use("Agg")
 
 REPO = Path(__file__).resolve().parents[1]
-SHARED_DATA = REPO.parent / "shared" / "data"
+SHARED_DATA = REPO / "tests" / "data"
 EXAMPLES = REPO / "examples"
 
 
@@ -22,5 +22,5 @@ def repo() -> Path:
 
 @pytest.fixture
 def shared_data() -> Path:
-    """``../shared/data`` with the published reference tables."""
+    """``tests/data``: verbatim copies of ../shared/data with their provenance headers."""
     return SHARED_DATA
