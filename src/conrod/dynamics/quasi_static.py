@@ -3,7 +3,10 @@ solves the force balance F_film(e, ė) + W = 0 at every instant, and only the po
 integrated (Heun, fixed step ``[solver] quasi_static_step_deg``).
 
 The velocity comes from the film model's ``journal_velocity`` when it has one (mobility
-film), otherwise from a damped Newton solve on ``force`` (compiled for the short bearing).
+film); for a rigid Reynolds film without supply/cavitation pressure from Booker's reduction
+to a 1-D direction solve (:mod:`conrod.dynamics.squeeze_velocity`, compiled); for the table
+film from its compiled inverse; otherwise from a damped Newton solve on ``force``
+(compiled for the short bearing).
 On the contact circle the outward normal velocity is removed (seed 004 eqs 4.1.5–4.1.8) and
 the unbalanced normal force is reported as the contact force.
 """
@@ -17,6 +20,12 @@ import numpy as np
 
 from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
 from conrod.dynamics.problem import FilmHistory, OrbitProblem, OrbitState
+from conrod.dynamics.squeeze_velocity import (
+    squeeze_applies,
+    squeeze_cycle,
+    table_applies,
+    table_cycle,
+)
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
@@ -176,8 +185,8 @@ def quasi_static_cycle(
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed
     rc = problem.contact_radius * (1.0 - 1e-9)
-    if problem.is_short_bearing:
-        return _compiled_short(problem, state, phi, record_every, n_out, rc)
+    if problem.is_short_bearing or squeeze_applies(problem) or table_applies(problem):
+        return _compiled(problem, state, phi, record_every, n_out, rc)
     history = FilmHistory(problem.film, state.film_history) if problem.has_history else None
     velocity = _velocity_solver(problem, history)
     x, y, guess = state.x, state.y, (state.vx, state.vy)
@@ -207,16 +216,27 @@ def quasi_static_cycle(
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, 2 * (len(phi) - 1))
 
 
-def _compiled_short(problem, state, phi, record_every, n_out, rc) -> CycleTrajectory:
+def _compiled(problem, state, phi, record_every, n_out, rc) -> CycleTrajectory:
+    """Compiled Heun loop: short bearing, Reynolds by Booker's reduction, or table."""
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed
-    g = problem.film.geometry
-    table, end, worst = quasi_static_short_bearing_cycle(
-        state.x, state.y, state.vx, state.vy, dt, load_x, load_y, wj, wb, record_every,
-        problem.viscosity, g.radius, g.width, g.radial_clearance, rc,
-        g.radial_clearance * max(problem.crank_speed, 1e-3),
-    )
+    film, mu = problem.film, problem.viscosity
+    g = film.geometry
+    if squeeze_applies(problem):
+        table, end, worst = squeeze_cycle(problem, state, dt, (load_x, load_y, wj, wb),
+                                          record_every, rc)
+    elif table_applies(problem):
+        table, end, worst = table_cycle(
+            state.x, state.y, dt, load_x, load_y, wj, wb, record_every, mu,
+            film.force_scale, g.radial_clearance, film.s_step, film.tables["log_magnitude"],
+            film.tables["turning"], rc)
+    else:
+        table, end, worst = quasi_static_short_bearing_cycle(
+            state.x, state.y, state.vx, state.vy, dt, load_x, load_y, wj, wb, record_every,
+            mu, g.radius, g.width, g.radial_clearance, rc,
+            g.radial_clearance * max(problem.crank_speed, 1e-3),
+        )
     if worst > 1e-4 or not np.all(np.isfinite(table)):
         raise ConvergenceError("quasi-static velocity solve failed", residual=worst)
     sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
