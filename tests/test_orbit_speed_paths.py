@@ -1,0 +1,135 @@
+"""Fast quasi-static velocity paths (issue 4 speed): Booker's squeeze reduction for grid
+Reynolds films and the compiled table-film loop, checked against the Newton solve they
+replace and against the identities they rest on."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import conrod.dynamics.quasi_static as qs
+from conrod.dynamics import OrbitState
+from conrod.dynamics import squeeze_velocity as sv
+from conrod.film.base import BearingGeometry, FilmState, Groove
+from conrod.film.reynolds import ReynoldsFilm
+from orbit_helpers import SPEED, engine_like_load, geometry, load_cycle, short_problem
+
+MU = 0.01
+STATES = [  # x, y [m], W_x, W_y [N], ω_j, ω_b [rad/s]
+    (5e-6, 3e-6, 2000.0, -1000.0, SPEED, 0.0),
+    (-15e-6, 12e-6, -8000.0, 15000.0, SPEED, 30.0),
+    (20e-6, -10e-6, 30000.0, -5000.0, SPEED, -20.0),
+    (0.0, 0.0, 1000.0, 500.0, -SPEED, SPEED),
+]
+
+
+def coarse_film(**kwargs) -> ReynoldsFilm:
+    return ReynoldsFilm(kwargs.pop("geometry", geometry()), n_theta=48, n_z=8, **kwargs)
+
+
+def force(film, x, y, vx, vy, wj=0.0, wb=0.0):
+    return np.array(film.force(FilmState(x, y, vx, vy, wj, wb, MU)))
+
+
+def test_squeeze_force_is_homogeneous_of_degree_one():
+    film = coarse_film()
+    for x, y, *_ in STATES:
+        for beta in (0.3, 2.0, -2.5):
+            v = 0.01 * np.array([math.cos(beta), math.sin(beta)])
+            f1, f2 = force(film, x, y, *v), force(film, x, y, *(2.0 * v))
+            np.testing.assert_allclose(f2, 2.0 * f1, rtol=1e-9, atol=1e-9 * np.abs(f2).max())
+
+
+def test_discrete_wedge_equals_squeeze_in_the_mean_frame():
+    """F(e, ė, ω_j, ω_b) = F(e, ė − κ ω̄ × e, 0, 0), κ = sin Δθ/Δθ (central-difference wedge)."""
+    film = coarse_film()
+    d_theta = 2.0 * math.pi / 48
+    kappa = math.sin(d_theta) / d_theta
+    for x, y, _, _, wj, wb in STATES:
+        mean = 0.5 * kappa * (wj + wb)
+        full = force(film, x, y, 0.003, -0.002, wj, wb)
+        squeeze = force(film, x, y, 0.003 + mean * y, -0.002 - mean * x)
+        np.testing.assert_allclose(full, squeeze, rtol=1e-9, atol=1e-9 * np.abs(full).max())
+
+
+def _squeeze_solve(film, x, y, wx, wy, wj, wb):
+    grid = sv.SqueezeGrid(film, MU)
+    radius, d_theta, d_z, c = grid.geometry
+    g = (grid.fixed, grid.source_x, grid.source_y, grid.weight_x, grid.weight_y,
+         radius, d_theta, d_z, grid.n_coarse, grid.symmetric)
+    mean = 0.5 * math.sin(d_theta) / d_theta * (wj + wb)
+    return sv.squeeze_velocity(x, y, wx, wy, mean, 0.3, 1.0, grid.pressure, grid.cos_t,
+                               grid.sin_t, g, c, c * SPEED, 1e-12, 20000)
+
+
+@pytest.mark.parametrize("supply", [False, True])
+def test_squeeze_velocity_equals_newton_and_balances_the_load(supply):
+    geo = geometry()
+    if supply:  # an ambient partial groove off the mid-plane: no z-symmetry, p = 0 on it
+        groove = Groove(start_angle=1.0, extent=2.0, width=0.004, axial_position=0.005)
+        geo = BearingGeometry(0.05, 0.025, 25e-6, grooves=(groove,))
+    film = coarse_film(geometry=geo)
+    problem = short_problem(load_cycle(np.cos, np.sin), film=film, viscosity=MU)
+    assert sv.squeeze_applies(problem)
+    newton = qs._generic_newton(problem, 25e-6 * SPEED)
+    for x, y, wx, wy, wj, wb in STATES:
+        vx, vy, *_, miss = _squeeze_solve(film, x, y, wx, wy, wj, wb)
+        nx, ny, _ = newton(x, y, wx, wy, wj, wb, (0.0, 0.0))
+        assert miss < 1e-8
+        assert math.hypot(vx - nx, vy - ny) < 1e-6 * math.hypot(nx, ny)
+        residual = force(film, x, y, vx, vy, wj, wb) + (wx, wy)
+        assert np.hypot(*residual) < 1e-7 * math.hypot(wx, wy)
+
+
+def test_reduction_not_used_where_it_is_not_exact():
+    loads = load_cycle(np.cos, np.sin)
+    fed = BearingGeometry(0.05, 0.025, 25e-6, grooves=(Groove(width=0.003),),
+                          supply_pressure=3e5)
+    cavitating = BearingGeometry(0.05, 0.025, 25e-6, cavitation_pressure=-1e4)
+    for geo in (fed, cavitating):
+        assert not sv.squeeze_applies(short_problem(loads, film=coarse_film(geometry=geo)))
+    assert not sv.squeeze_applies(short_problem(loads, film=coarse_film(method="sor")))
+
+
+def _orbit(problem, monkeypatch, fast: bool):
+    if not fast:
+        monkeypatch.setattr(qs, "squeeze_applies", lambda p: False)
+        monkeypatch.setattr(qs, "table_applies", lambda p: False)
+    trajectory = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
+    monkeypatch.undo()
+    return np.array([trajectory.x, trajectory.y])
+
+
+def test_reynolds_orbit_unchanged_by_the_squeeze_path(monkeypatch):
+    loads = load_cycle(*engine_like_load())
+    problem = short_problem(loads, film=coarse_film(), viscosity=MU)
+    fast, newton = _orbit(problem, monkeypatch, True), _orbit(problem, monkeypatch, False)
+    h_fast = problem.clearance - np.hypot(*fast)
+    h_newton = problem.clearance - np.hypot(*newton)
+    assert np.abs(fast - newton).max() < 1e-7 * problem.clearance
+    assert abs(h_fast.min() - h_newton.min()) < 1e-7 * problem.clearance
+
+
+def test_compiled_table_orbit_balances_the_table_force_and_follows_reynolds(tmp_path):
+    """Every recorded velocity of the compiled table loop satisfies F_table + W = 0 (the
+    generic Newton on the piecewise-quadratic table fails here: residual 3e-4), and the
+    orbit stays within the table's interpolation error of the direct Reynolds orbit."""
+    from conrod.film.table import TabulatedFilm
+
+    base = coarse_film()
+    table = TabulatedFilm(base, cache_dir=tmp_path)
+    loads = load_cycle(*engine_like_load())
+    problem = short_problem(loads, film=table, viscosity=MU)
+    assert sv.table_applies(problem)
+    run = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
+    load_x, load_y = loads.load(run.crank_angle)
+    for k in np.flatnonzero(run.contact_force == 0.0)[::7]:
+        f = table.force(FilmState(run.x[k], run.y[k], run.vx[k], run.vy[k], SPEED, 0.0, MU))
+        assert math.hypot(f[0] + load_x[k], f[1] + load_y[k]) < 1e-8 * math.hypot(
+            load_x[k], load_y[k])
+    direct = qs.quasi_static_cycle(short_problem(loads, film=base, viscosity=MU),
+                                   OrbitState(), 1.0, 2.0)
+    gap = np.hypot(run.x - direct.x, run.y - direct.y)
+    assert gap.max() < 0.02 * problem.clearance
