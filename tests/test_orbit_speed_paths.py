@@ -58,7 +58,7 @@ def _squeeze_solve(film, x, y, wx, wy, wj, wb):
     grid = sv.SqueezeGrid(film, MU)
     radius, d_theta, d_z, c = grid.geometry
     g = (grid.fixed, grid.source_x, grid.source_y, grid.weight_x, grid.weight_y,
-         radius, d_theta, d_z, grid.n_coarse, grid.symmetric)
+         radius, d_theta, d_z, grid.n_coarse, grid.symmetric, grid.stats)
     mean = 0.5 * math.sin(d_theta) / d_theta * (wj + wb)
     return sv.squeeze_velocity(x, y, wx, wy, mean, 0.3, 1.0, grid.pressure, grid.cos_t,
                                grid.sin_t, g, c, c * SPEED, 1e-12, 20000)

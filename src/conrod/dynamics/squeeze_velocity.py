@@ -33,8 +33,15 @@ from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
 from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve
 from conrod.film.table_kernel import mobility_velocity
 
-ANGLE_TOLERANCE = 1.0e-10
-"""Stop when the film force is within this angle of −W [rad] (= relative residual)."""
+ANGLE_TOLERANCE = 1.0e-9
+"""Stop when the film force is within this angle of −W [rad]: the relative residual
+|F + W|/|W| (the Newton path stops at 1e-8)."""
+
+FIRST_FILM_TOLERANCE = 1.0e-8
+"""Multigrid tolerance of the first solve of a velocity solve. Later solves use
+0.1·miss² (the secant's next miss is ~miss²), down to max(film tolerance,
+0.1·ANGLE_TOLERANCE) at which a miss ≤ ANGLE_TOLERANCE is accepted; a loose solve that
+already meets the angle is continued to that tolerance (inexact secant) [-]."""
 
 ANGLE_ITERATIONS = 40
 """Most film solves of one velocity solve [-]."""
@@ -46,7 +53,8 @@ class SqueezeGrid:
 
     cos_t, sin_t : cos θ, sin θ at the nodes [-]; fixed : Dirichlet nodes (p = 0) [-];
     source_x, source_y : multigrid source per unit v_s,x, v_s,y [Pa m^4 s/m];
-    weight_x, weight_y : force quadrature F = −Σ p w [m^2]; pressure : warm-start field [Pa].
+    weight_x, weight_y : force quadrature F = −Σ p w [m^2]; pressure : warm-start field [Pa];
+    stats : [film solves, multigrid cycles] counted by the compiled solve [-].
     """
 
     def __init__(self, film, viscosity: float):
@@ -80,6 +88,7 @@ class SqueezeGrid:
         self.geometry = (grid.radius, grid.d_theta, grid.d_z, film.geometry.radial_clearance)
         self.n_coarse = coarse_levels(grid.n_theta, n_z)
         self.pressure = np.zeros(fixed.shape)
+        self.stats = np.zeros(2)
 
 
 def _half(field: np.ndarray, padding) -> np.ndarray:
@@ -102,11 +111,14 @@ def _doubling(mid: int) -> np.ndarray:
 @nb.njit(cache=True)
 def _unit_force(beta, pressure, h, g, speed, tolerance, max_cycles):
     """Film force (F_x, F_y) [N] at the unit squeeze speed ``speed`` in direction β and
-    whether the multigrid converged; ``g`` = (fixed, source_x, source_y, w_x, w_y, dims...)."""
-    fixed, src_x, src_y, w_x, w_y, radius, d_theta, d_z, n_coarse, symmetric = g
+    whether the multigrid converged; ``g`` = (fixed, source_x, source_y, w_x, w_y, dims...,
+    stats), stats = [film solves, multigrid cycles] accumulated."""
+    fixed, src_x, src_y, w_x, w_y, radius, d_theta, d_z, n_coarse, symmetric, stats = g
     source = speed * (math.cos(beta) * src_x + math.sin(beta) * src_y)
-    _, change = multigrid_solve(pressure, h, source, fixed, radius, d_theta, d_z, 0.0,
-                                tolerance, max_cycles, n_coarse, symmetric)
+    cycles, change = multigrid_solve(pressure, h, source, fixed, radius, d_theta, d_z, 0.0,
+                                     tolerance, max_cycles, n_coarse, symmetric)
+    stats[0] += 1.0
+    stats[1] += cycles
     return -np.sum(pressure * w_x), -np.sum(pressure * w_y), change <= tolerance
 
 
@@ -132,13 +144,18 @@ def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, co
     prev_beta, prev_miss = np.nan, np.nan
     miss = np.inf
     fx, fy = 0.0, 0.0
+    accept = max(tolerance, 0.1 * ANGLE_TOLERANCE)
+    film_tolerance = max(accept, FIRST_FILM_TOLERANCE)
     for _ in range(ANGLE_ITERATIONS):
-        fx, fy, ok = _unit_force(beta, pressure, h, g, speed, tolerance, max_cycles)
+        fx, fy, ok = _unit_force(beta, pressure, h, g, speed, film_tolerance, max_cycles)
         if not ok:
             return whirl_x, whirl_y, beta, slope, np.inf
         miss = _wrap(target - math.atan2(fy, fx))
         if abs(miss) <= ANGLE_TOLERANCE:
-            break
+            if film_tolerance <= accept:
+                break
+            film_tolerance = accept
+            continue
         if 0.0 < miss < 1.0:
             lo = max(lo, beta)
         elif -1.0 < miss < 0.0:
@@ -154,6 +171,7 @@ def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, co
         if not lo < nxt < hi and -np.inf < lo < hi < np.inf:
             nxt = 0.5 * (lo + hi)
         beta = nxt
+        film_tolerance = max(accept, min(FIRST_FILM_TOLERANCE, 0.1 * miss * miss))
     magnitude = math.hypot(fx, fy)
     if magnitude == 0.0:
         return whirl_x, whirl_y, beta, slope, np.inf
@@ -175,6 +193,7 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
     out = np.zeros((n_steps // record_every, 7))
     worst = 0.0
     vx2, vy2 = 0.0, 0.0
+    turn = 0.0  # β(corrector) − β(predictor) of the last step: predicts the next one
     for k in range(n_steps):
         mean = 0.5 * whirl_factor * (journal_speed[k] + shell_speed[k])
         vx, vy, beta, slope, r1 = squeeze_velocity(
@@ -189,9 +208,10 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
             out[row, 6] = 1.0 if contact else 0.0
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
         mean = 0.5 * whirl_factor * (journal_speed[k + 1] + shell_speed[k + 1])
-        vx2, vy2, beta, slope, r2 = squeeze_velocity(
-            xp, yp, load_x[k + 1], load_y[k + 1], mean, beta, slope, pressure, cos_t, sin_t,
-            g, clearance, speed, tolerance, max_cycles)
+        vx2, vy2, beta2, slope, r2 = squeeze_velocity(
+            xp, yp, load_x[k + 1], load_y[k + 1], mean, beta + turn, slope, pressure, cos_t,
+            sin_t, g, clearance, speed, tolerance, max_cycles)
+        turn, beta = _wrap(beta2 - beta), beta2
         x, y, _ = project_onto_circle(
             x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), contact_radius)
         worst = max(worst, r1, r2)
@@ -222,22 +242,24 @@ def table_applies(problem) -> bool:
 
 def squeeze_cycle(problem, state, dt, loads, record_every, contact_radius):
     """Run :func:`squeeze_reynolds_cycle` for ``problem`` from ``state``; ``loads`` =
-    (W_x, W_y, ω_j, ω_b) at the steps. Returns (rows, end state array, worst residual)."""
+    (W_x, W_y, ω_j, ω_b) at the steps. Returns (rows, end state array (x, y, v_x, v_y, β,
+    slope, film solves, multigrid cycles), worst residual)."""
     film = problem.film
     grid = SqueezeGrid(film, problem.viscosity)
     radius, d_theta, d_z, clearance = grid.geometry
     g = (grid.fixed, grid.source_x, grid.source_y, grid.weight_x, grid.weight_y,
-         radius, d_theta, d_z, grid.n_coarse, grid.symmetric)
+         radius, d_theta, d_z, grid.n_coarse, grid.symmetric, grid.stats)
     kappa = math.sin(d_theta) / d_theta
     load_x, load_y, wj, wb = loads
     mean = 0.5 * kappa * (wj[0] + wb[0])
     sx, sy = state.vx + mean * state.y, state.vy - mean * state.x
     beta = math.atan2(sy, sx) if sx or sy else math.atan2(load_y[0], load_x[0])
     speed = clearance * max(problem.crank_speed, 1e-3)
-    return squeeze_reynolds_cycle(
+    rows, end, worst = squeeze_reynolds_cycle(
         state.x, state.y, dt, load_x, load_y, wj, wb, record_every, grid.pressure,
         grid.cos_t, grid.sin_t, g, clearance, contact_radius, speed, film.tolerance,
         film.max_iterations, beta, 1.0, kappa)
+    return rows, np.concatenate((end, grid.stats)), worst
 
 
 @nb.njit(cache=True)
