@@ -33,11 +33,11 @@ from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
 from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve
 from conrod.film.table_kernel import mobility_velocity
 
-ANGLE_TOLERANCE = 1.0e-9
+ANGLE_TOLERANCE = 1.0e-8
 """Stop when the film force is within this angle of −W [rad]: the relative residual
 |F + W|/|W| (the Newton path stops at 1e-8)."""
 
-FIRST_FILM_TOLERANCE = 1.0e-8
+FIRST_FILM_TOLERANCE = 1.0e-6
 """Multigrid tolerance of the first solve of a velocity solve. Later solves use
 0.1·miss² (the secant's next miss is ~miss²), down to max(film tolerance,
 0.1·ANGLE_TOLERANCE) at which a miss ≤ ANGLE_TOLERANCE is accepted; a loose solve that
@@ -194,6 +194,7 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
     worst = 0.0
     vx2, vy2 = 0.0, 0.0
     turn = 0.0  # β(corrector) − β(predictor) of the last step: predicts the next one
+    field_1, field_2, last_1 = pressure.copy(), pressure.copy(), pressure.copy()  # fields
     for k in range(n_steps):
         mean = 0.5 * whirl_factor * (journal_speed[k] + shell_speed[k])
         vx, vy, beta, slope, r1 = squeeze_velocity(
@@ -207,11 +208,17 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
             out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
             out[row, 6] = 1.0 if contact else 0.0
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
+        field_1[:] = pressure
+        if k > 0:  # p(corrector) ≈ p(predictor) + last step's difference
+            pressure += field_2 - last_1
+            np.maximum(pressure, 0.0, pressure)
+        last_1[:] = field_1
         mean = 0.5 * whirl_factor * (journal_speed[k + 1] + shell_speed[k + 1])
         vx2, vy2, beta2, slope, r2 = squeeze_velocity(
             xp, yp, load_x[k + 1], load_y[k + 1], mean, beta + turn, slope, pressure, cos_t,
             sin_t, g, clearance, speed, tolerance, max_cycles)
         turn, beta = _wrap(beta2 - beta), beta2
+        field_2[:] = pressure
         x, y, _ = project_onto_circle(
             x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), contact_radius)
         worst = max(worst, r1, r2)
