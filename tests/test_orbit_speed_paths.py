@@ -61,7 +61,8 @@ def _squeeze_solve(film, x, y, wx, wy, wj, wb):
          radius, d_theta, d_z, grid.n_coarse, grid.symmetric, grid.stats)
     mean = 0.5 * math.sin(d_theta) / d_theta * (wj + wb)
     return sv.squeeze_velocity(x, y, wx, wy, mean, 0.3, 1.0, grid.pressure, grid.cos_t,
-                               grid.sin_t, g, c, c * SPEED, 1e-12, 20000)
+                               grid.sin_t, g, c, c * SPEED, 1e-12, 20000,
+                               np.zeros_like(grid.pressure), np.zeros_like(grid.pressure))
 
 
 @pytest.mark.parametrize("supply", [False, True])

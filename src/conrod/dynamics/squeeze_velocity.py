@@ -129,11 +129,13 @@ def _wrap(angle):
 
 @nb.njit(cache=True)
 def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, cos_t, sin_t,
-                     g, clearance, speed, tolerance, max_cycles):
+                     g, clearance, speed, tolerance, max_cycles, tangent, scratch):
     """Quasi-static velocity (v_x, v_y) [m/s] with F(e, ė) + W = 0 by Booker's reduction
     (module docstring), from the squeeze direction guess β [rad] and the slope dφ/dβ of
     the force angle [-]. Returns (v_x, v_y, β, slope, angle residual [rad]); the residual
-    is ∞ when the film solve failed."""
+    is ∞ when the film solve failed. ``tangent`` ≈ ∂p/∂β [Pa/rad] (kept between calls,
+    updated from successive iterates) moves the warm-start field along with β; ``scratch``
+    is work space of the field's shape."""
     whirl_x, whirl_y = -omega_mean * y, omega_mean * x
     load = math.hypot(load_x, load_y)
     if load == 0.0:
@@ -146,8 +148,16 @@ def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, co
     fx, fy = 0.0, 0.0
     accept = max(tolerance, 0.1 * ANGLE_TOLERANCE)
     film_tolerance = max(accept, FIRST_FILM_TOLERANCE)
+    solved_at = np.nan
     for _ in range(ANGLE_ITERATIONS):
+        if not np.isnan(solved_at):
+            scratch[:] = pressure
+            pressure += (beta - solved_at) * tangent
+            np.maximum(pressure, 0.0, pressure)
         fx, fy, ok = _unit_force(beta, pressure, h, g, speed, film_tolerance, max_cycles)
+        if not np.isnan(solved_at) and abs(beta - solved_at) > 1e-6:
+            tangent[:] = (pressure - scratch) / (beta - solved_at)
+        solved_at = beta
         if not ok:
             return whirl_x, whirl_y, beta, slope, np.inf
         miss = _wrap(target - math.atan2(fy, fx))
@@ -195,11 +205,12 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
     vx2, vy2 = 0.0, 0.0
     turn = 0.0  # β(corrector) − β(predictor) of the last step: predicts the next one
     field_1, field_2, last_1 = pressure.copy(), pressure.copy(), pressure.copy()  # fields
+    tangent, scratch = np.zeros_like(pressure), np.zeros_like(pressure)
     for k in range(n_steps):
         mean = 0.5 * whirl_factor * (journal_speed[k] + shell_speed[k])
         vx, vy, beta, slope, r1 = squeeze_velocity(
             x, y, load_x[k], load_y[k], mean, beta, slope, pressure, cos_t, sin_t, g,
-            clearance, speed, tolerance, max_cycles)
+            clearance, speed, tolerance, max_cycles, tangent, scratch)
         contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
         if contact and x * vx + y * vy > 0.0:
             vx, vy = remove_normal_velocity(x, y, vx, vy)
@@ -216,7 +227,7 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
         mean = 0.5 * whirl_factor * (journal_speed[k + 1] + shell_speed[k + 1])
         vx2, vy2, beta2, slope, r2 = squeeze_velocity(
             xp, yp, load_x[k + 1], load_y[k + 1], mean, beta + turn, slope, pressure, cos_t,
-            sin_t, g, clearance, speed, tolerance, max_cycles)
+            sin_t, g, clearance, speed, tolerance, max_cycles, tangent, scratch)
         turn, beta = _wrap(beta2 - beta), beta2
         field_2[:] = pressure
         x, y, _ = project_onto_circle(
