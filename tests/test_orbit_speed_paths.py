@@ -65,13 +65,15 @@ def _squeeze_solve(film, x, y, wx, wy, wj, wb):
                                np.zeros_like(grid.pressure), np.zeros_like(grid.pressure))
 
 
-@pytest.mark.parametrize("supply", [False, True])
-def test_squeeze_velocity_equals_newton_and_balances_the_load(supply):
+@pytest.mark.parametrize("variant", ["symmetric", "groove", "n_z=6"])
+def test_squeeze_velocity_equals_newton_and_balances_the_load(variant):
     geo = geometry()
-    if supply:  # an ambient partial groove off the mid-plane: no z-symmetry, p = 0 on it
+    if variant == "groove":  # an ambient partial groove off the mid-plane: no z-symmetry
         groove = Groove(start_angle=1.0, extent=2.0, width=0.004, axial_position=0.005)
         geo = BearingGeometry(0.05, 0.025, 25e-6, grooves=(groove,))
     film = coarse_film(geometry=geo)
+    if variant == "n_z=6":  # half grid with an odd interval count: full-grid solve
+        film = ReynoldsFilm(geo, n_theta=48, n_z=6)
     problem = short_problem(load_cycle(np.cos, np.sin), film=film, viscosity=MU)
     assert sv.squeeze_applies(problem)
     newton = qs._generic_newton(problem, 25e-6 * SPEED)

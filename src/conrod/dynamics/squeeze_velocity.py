@@ -69,7 +69,8 @@ class SqueezeGrid:
         source_unit = 12.0 * viscosity * width[None, :] * grid.radius * grid.d_theta
         area = grid.area_weights
         weight_x, weight_y = cos_t * area, sin_t * area
-        self.symmetric = bool(film.use_symmetry and np.array_equal(fixed, fixed[:, ::-1]))
+        self.symmetric = bool(film.use_symmetry and grid.n_z % 4 == 0
+                              and np.array_equal(fixed, fixed[:, ::-1]))
         n_z = grid.n_z
         if self.symmetric:
             mid = n_z // 2
@@ -204,7 +205,7 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
     worst = 0.0
     vx2, vy2 = 0.0, 0.0
     turn = 0.0  # β(corrector) − β(predictor) of the last step: predicts the next one
-    field_1, field_2, last_1 = pressure.copy(), pressure.copy(), pressure.copy()  # fields
+    field_2, last_1 = pressure.copy(), pressure.copy()  # predictor/corrector fields
     tangent, scratch = np.zeros_like(pressure), np.zeros_like(pressure)
     for k in range(n_steps):
         mean = 0.5 * whirl_factor * (journal_speed[k] + shell_speed[k])
@@ -219,11 +220,11 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
             out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
             out[row, 6] = 1.0 if contact else 0.0
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
-        field_1[:] = pressure
+        scratch[:] = pressure
         if k > 0:  # p(corrector) ≈ p(predictor) + last step's difference
             pressure += field_2 - last_1
             np.maximum(pressure, 0.0, pressure)
-        last_1[:] = field_1
+        last_1[:] = scratch
         mean = 0.5 * whirl_factor * (journal_speed[k + 1] + shell_speed[k + 1])
         vx2, vy2, beta2, slope, r2 = squeeze_velocity(
             xp, yp, load_x[k + 1], load_y[k + 1], mean, beta + turn, slope, pressure, cos_t,
