@@ -53,14 +53,7 @@ def exits_cleanly(command: F) -> F:
 
 def _register_commands() -> None:
     for name in COMMAND_MODULES:
-        module_name = f"conrod.cli.{name}_command"
-        try:
-            module = importlib.import_module(module_name)
-        except ModuleNotFoundError as error:  # command not built yet
-            if error.name == module_name:
-                continue
-            raise
-        module.register(app)
+        importlib.import_module(f"conrod.cli.{name}_command").register(app)
 
 
 def main() -> None:
