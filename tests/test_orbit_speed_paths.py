@@ -136,3 +136,100 @@ def test_compiled_table_orbit_balances_the_table_force_and_follows_reynolds(tmp_
                                    OrbitState(), 1.0, 2.0)
     gap = np.hypot(run.x - direct.x, run.y - direct.y)
     assert gap.max() < 0.02 * problem.clearance
+
+
+# ------------------------------------------------- short bearing: Booker's exact inversion
+SHORT = (0.01, 0.025, 0.025, 25e-6)  # μ [Pa s], R, L, c [m]
+SHORT_STATES = [  # x, y [m], W_x, W_y [N], ω_j, ω_b [rad/s]
+    (5e-6, 3e-6, 2000.0, -1000.0, SPEED, 0.0),
+    (-15e-6, 12e-6, -8000.0, 15000.0, SPEED, 30.0),
+    (0.98 * 25e-6, 0.0, 30000.0, 2000.0, SPEED, 0.0),  # near contact, pressed on the wall
+    (0.0, -0.98 * 25e-6, 500.0, 4000.0, SPEED, -40.0),  # near contact, pulled off the wall
+    (0.98 * 25e-6 * 0.6, 0.98 * 25e-6 * 0.8, -3000.0, -1000.0, SPEED, 0.0),
+    (12e-6, -6e-6, 2500.0, 9000.0, -SPEED, 0.0),  # reversed rotation
+    (0.98 * 25e-6 * 0.8, -0.98 * 25e-6 * 0.6, 20000.0, -15000.0, -SPEED, -20.0),
+    (0.0, 0.0, 1000.0, 500.0, -SPEED, SPEED),
+]
+
+
+@pytest.mark.parametrize("state", SHORT_STATES)
+def test_short_velocity_equals_newton_and_balances_the_load(state):
+    from conrod.dynamics.short_velocity import newton_short_velocity, short_velocity
+    from conrod.film.short_bearing_kernel import short_bearing_force
+
+    x, y, wx, wy, wj, wb = state
+    for guess in (0.0, 2.0, -3.0):  # cold starts from anywhere on the circle
+        vx, vy, _, residual, _ = short_velocity(x, y, wx, wy, wj, wb, *SHORT, guess)
+        nx, ny, newton_residual, _ = newton_short_velocity(
+            x, y, wx, wy, wj, wb, *SHORT, 0.0, 0.0, 25e-6 * SPEED)
+        assert newton_residual < 1e-10 and residual < 1e-11
+        assert math.hypot(vx - nx, vy - ny) <= 1e-8 * math.hypot(nx, ny)
+        fx, fy = short_bearing_force(x, y, vx, vy, wj + wb, *SHORT)
+        assert math.hypot(fx + wx, fy + wy) < 1e-10 * math.hypot(wx, wy)
+
+
+def test_short_velocity_without_load_is_the_half_speed_whirl():
+    """No load, no film force: ė = ω̄ × e (SPEC pitfall: the whirl carries nothing)."""
+    from conrod.dynamics.short_velocity import short_velocity
+
+    vx, vy, *_ = short_velocity(10e-6, -4e-6, 0.0, 0.0, SPEED, 30.0, *SHORT, 1.0)
+    mean = 0.5 * (SPEED + 30.0)
+    assert (vx, vy) == pytest.approx((mean * 4e-6, mean * 10e-6), rel=1e-15)
+
+
+@pytest.mark.parametrize("eps", [0.0, 0.4, 0.98])
+def test_short_unit_force_direction_derivative_and_homogeneity(eps):
+    """dg/dα in closed form (arc-end terms vanish with the pressure) against central
+    differences of g; F(v_s) = |v_s| F(v̂_s) in the ω̄ frame (both used by the inversion)."""
+    from conrod.dynamics.short_velocity import unit_force_direction
+    from conrod.film.short_bearing_kernel import short_bearing_force
+
+    h = 1e-3
+    for alpha in np.linspace(-3.0, 3.0, 13):
+        g_r, g_t, d_r, d_t = unit_force_direction(alpha, eps)
+        g = [np.array(unit_force_direction(alpha + k * h, eps)[:2]) for k in (-2, -1, 1, 2)]
+        numeric = (g[0] - 8.0 * g[1] + 8.0 * g[2] - g[3]) / (12.0 * h)  # O(h⁴) stencil
+        scale = max(math.hypot(g_r, g_t), math.hypot(d_r, d_t))  # rounding ∝ |g|
+        assert np.abs(numeric - (d_r, d_t)).max() < 1e-8 * scale
+    x, y, mean = eps * 25e-6 * 0.6, -eps * 25e-6 * 0.8, 0.5 * SPEED
+    for beta in (0.3, 2.0, -2.5):
+        sx, sy = 0.01 * math.cos(beta), 0.01 * math.sin(beta)
+        f1 = short_bearing_force(x, y, sx - mean * y, sy + mean * x, SPEED, *SHORT)
+        f2 = short_bearing_force(x, y, 3 * sx - mean * y, 3 * sy + mean * x, SPEED, *SHORT)
+        np.testing.assert_allclose(f2, 3.0 * np.array(f1), rtol=1e-12,
+                                   atol=1e-12 * np.abs(f2).max())
+
+
+def _python_loop(problem, monkeypatch):
+    """Orbit of the uncompiled loop: Newton (short bearing) or ``journal_velocity``."""
+    monkeypatch.setattr(qs, "compiled_applies", lambda p: False)
+    trajectory = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
+    monkeypatch.undo()
+    return trajectory
+
+
+@pytest.mark.parametrize("journal", [SPEED, -SPEED])
+def test_short_orbit_unchanged_by_the_booker_path(monkeypatch, journal):
+    loads = load_cycle(*engine_like_load(peak=1.0e5, base=2.0e4), journal=journal)
+    problem = short_problem(loads, viscosity=0.001, contact_film_thickness=1e-6)
+    assert qs.compiled_applies(problem)
+    fast = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
+    newton = _python_loop(problem, monkeypatch)
+    assert np.count_nonzero(newton.contact_force) > 3  # reaches the contact circle ε = 0.96
+    assert np.abs(fast.x - newton.x).max() < 1e-9 * problem.clearance
+    assert np.abs(fast.y - newton.y).max() < 1e-9 * problem.clearance
+    np.testing.assert_allclose(fast.contact_force, newton.contact_force, rtol=1e-9,
+                               atol=1e-9 * newton.contact_force.max())
+
+
+def test_mobility_orbit_unchanged_by_the_compiled_loop(monkeypatch):
+    from conrod.film.mobility import MobilityFilm
+
+    film = MobilityFilm.short_bearing(geometry(), n_eps=20, n_direction=32)
+    problem = short_problem(load_cycle(*engine_like_load()), film=film, viscosity=MU)
+    assert qs.mobility_applies(problem) and qs.compiled_applies(problem)
+    fast = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
+    slow = _python_loop(problem, monkeypatch)
+    assert np.abs(fast.x - slow.x).max() < 1e-12 * problem.clearance
+    assert np.abs(fast.y - slow.y).max() < 1e-12 * problem.clearance
+    np.testing.assert_allclose(fast.vx, slow.vx, rtol=1e-12, atol=1e-12 * np.abs(slow.vx).max())

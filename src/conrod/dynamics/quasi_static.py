@@ -2,11 +2,11 @@
 solves the force balance F_film(e, ė) + W = 0 at every instant, and only the position is
 integrated (Heun, fixed step ``[solver] quasi_static_step_deg``).
 
-The velocity comes from the film model's ``journal_velocity`` when it has one (mobility
-film); for a rigid Reynolds film without supply/cavitation pressure from Booker's reduction
-to a 1-D direction solve (:mod:`conrod.dynamics.squeeze_velocity`, compiled); for the table
-film from its compiled inverse; otherwise from a damped Newton solve on ``force``
-(compiled for the short bearing).
+The velocity comes, in compiled Heun loops, from Booker's reduction to a 1-D direction
+solve for the short bearing (:mod:`conrod.dynamics.short_velocity`) and for a rigid
+Reynolds film without supply/cavitation pressure (:mod:`conrod.dynamics.squeeze_velocity`),
+and from the table's exact inverse for the table and mobility films; otherwise from the
+film model's ``journal_velocity`` or a damped Newton solve on ``force``.
 On the contact circle the outward normal velocity is removed (seed 004 eqs 4.1.5–4.1.8) and
 the unbalanced normal force is reported as the contact force.
 """
@@ -15,11 +15,15 @@ from __future__ import annotations
 
 import math
 
-import numba as nb
 import numpy as np
 
 from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
 from conrod.dynamics.problem import FilmHistory, OrbitProblem, OrbitState
+from conrod.dynamics.short_velocity import (
+    NEWTON_ITERATIONS,
+    newton_short_velocity,
+    short_bearing_cycle,
+)
 from conrod.dynamics.squeeze_velocity import (
     squeeze_applies,
     squeeze_cycle,
@@ -29,89 +33,6 @@ from conrod.dynamics.squeeze_velocity import (
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
-from conrod.film.short_bearing_kernel import short_bearing_force
-
-NEWTON_ITERATIONS = 60
-"""Most Newton iterations of the velocity solve [-]."""
-
-
-@nb.njit(cache=True)
-def short_bearing_velocity(
-    x, y, load_x, load_y, journal_speed, shell_speed, viscosity, radius, width, clearance,
-    vx, vy, speed_scale,
-):
-    """Velocity (v_x, v_y) [m/s] with F_short(x, y, v) + W = 0 by damped Newton from (vx, vy);
-    third value: final residual |F + W| relative to |W| + 1 N [-]."""
-    omega_sum = journal_speed + shell_speed
-    load = math.hypot(load_x, load_y) + 1.0
-    fx, fy = short_bearing_force(x, y, vx, vy, omega_sum, viscosity, radius, width, clearance)
-    rx, ry = fx + load_x, fy + load_y
-    res = math.hypot(rx, ry)
-    delta = 1e-7 * speed_scale
-    for _ in range(NEWTON_ITERATIONS):
-        if res <= 1e-10 * load:
-            break
-        f1x, f1y = short_bearing_force(
-            x, y, vx + delta, vy, omega_sum, viscosity, radius, width, clearance
-        )
-        f2x, f2y = short_bearing_force(
-            x, y, vx, vy + delta, omega_sum, viscosity, radius, width, clearance
-        )
-        j11, j21 = (f1x - fx) / delta, (f1y - fy) / delta
-        j12, j22 = (f2x - fx) / delta, (f2y - fy) / delta
-        det = j11 * j22 - j12 * j21
-        if det == 0.0:
-            break
-        dvx = -(j22 * rx - j12 * ry) / det
-        dvy = -(-j21 * rx + j11 * ry) / det
-        lam = 1.0
-        for _ in range(30):
-            nvx, nvy = vx + lam * dvx, vy + lam * dvy
-            gx, gy = short_bearing_force(
-                x, y, nvx, nvy, omega_sum, viscosity, radius, width, clearance
-            )
-            new_res = math.hypot(gx + load_x, gy + load_y)
-            if new_res < res or lam < 1e-6:
-                break
-            lam *= 0.5
-        vx, vy, fx, fy = nvx, nvy, gx, gy
-        rx, ry, res = gx + load_x, gy + load_y, new_res
-    return vx, vy, res / load
-
-
-@nb.njit(cache=True)
-def quasi_static_short_bearing_cycle(
-    x, y, vx, vy, dt, load_x, load_y, journal_speed, shell_speed, record_every,
-    viscosity, radius, width, clearance, contact_radius, speed_scale,
-):
-    """Compiled Heun loop of :func:`quasi_static_cycle` for the short bearing: rows
-    (x, y, vx, vy, 0, 0, contact) every ``record_every`` steps, end state, worst residual."""
-    n_steps = load_x.size - 1
-    out = np.zeros((n_steps // record_every, 7))
-    worst = 0.0
-    for k in range(n_steps):
-        vx, vy, r1 = short_bearing_velocity(
-            x, y, load_x[k], load_y[k], journal_speed[k], shell_speed[k], viscosity,
-            radius, width, clearance, vx, vy, speed_scale,
-        )
-        contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
-        if contact and x * vx + y * vy > 0.0:
-            vx, vy = remove_normal_velocity(x, y, vx, vy)
-        if k % record_every == 0 and k // record_every < out.shape[0]:
-            row = k // record_every
-            out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
-            out[row, 6] = 1.0 if contact else 0.0
-        xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
-        vx2, vy2, r2 = short_bearing_velocity(
-            xp, yp, load_x[k + 1], load_y[k + 1], journal_speed[k + 1], shell_speed[k + 1],
-            viscosity, radius, width, clearance, vx, vy, speed_scale,
-        )
-        x, y, _ = project_onto_circle(
-            x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), contact_radius
-        )
-        vx, vy = vx2, vy2
-        worst = max(worst, r1, r2)
-    return out, np.array([x, y, vx, vy]), worst
 
 
 def _velocity_solver(problem: OrbitProblem, history=None):
@@ -126,11 +47,11 @@ def _velocity_solver(problem: OrbitProblem, history=None):
     g = film.geometry
     scale = g.radial_clearance * max(problem.crank_speed, 1e-3)
     if problem.is_short_bearing:
-        def short(x, y, wx, wy, wj, wb, guess):
-            return short_bearing_velocity(
+        def short(x, y, wx, wy, wj, wb, guess):  # reference path (tests)
+            return newton_short_velocity(
                 x, y, wx, wy, wj, wb, mu, g.radius, g.width, g.radial_clearance,
                 guess[0], guess[1], scale,
-            )
+            )[:3]
         return short
     return _generic_newton(problem, scale, history)
 
@@ -185,7 +106,7 @@ def quasi_static_cycle(
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed
     rc = problem.contact_radius * (1.0 - 1e-9)
-    if problem.is_short_bearing or squeeze_applies(problem) or table_applies(problem):
+    if compiled_applies(problem):
         return _compiled(problem, state, phi, record_every, n_out, rc)
     history = FilmHistory(problem.film, state.film_history) if problem.has_history else None
     velocity = _velocity_solver(problem, history)
@@ -216,8 +137,22 @@ def quasi_static_cycle(
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, 2 * (len(phi) - 1))
 
 
+def mobility_applies(problem) -> bool:
+    """True for the mobility film: its velocity is the table inverse of :func:`table_cycle`."""
+    from conrod.film.mobility import MobilityFilm
+
+    return type(problem.film) is MobilityFilm
+
+
+def compiled_applies(problem) -> bool:
+    """True when a compiled Heun loop covers the problem (see :func:`_compiled`)."""
+    return (problem.is_short_bearing or squeeze_applies(problem) or table_applies(problem)
+            or mobility_applies(problem))
+
+
 def _compiled(problem, state, phi, record_every, n_out, rc) -> CycleTrajectory:
-    """Compiled Heun loop: short bearing, Reynolds by Booker's reduction, or table."""
+    """Compiled Heun loop: short bearing and Reynolds by Booker's reduction, table and
+    mobility films by the table's inverse."""
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed
@@ -226,17 +161,17 @@ def _compiled(problem, state, phi, record_every, n_out, rc) -> CycleTrajectory:
     if squeeze_applies(problem):
         table, end, worst = squeeze_cycle(problem, state, dt, (load_x, load_y, wj, wb),
                                           record_every, rc)
-    elif table_applies(problem):
+    elif table_applies(problem) or mobility_applies(problem):
+        tab = film.table if mobility_applies(problem) else film
         table, end, worst = table_cycle(
             state.x, state.y, dt, load_x, load_y, wj, wb, record_every, mu,
-            film.force_scale, g.radial_clearance, film.s_step, film.tables["log_magnitude"],
-            film.tables["turning"], rc)
+            tab.force_scale, g.radial_clearance, tab.s_step, tab.tables["log_magnitude"],
+            tab.tables["turning"], rc)
     else:
-        table, end, worst = quasi_static_short_bearing_cycle(
-            state.x, state.y, state.vx, state.vy, dt, load_x, load_y, wj, wb, record_every,
-            mu, g.radius, g.width, g.radial_clearance, rc,
-            g.radial_clearance * max(problem.crank_speed, 1e-3),
-        )
+        table, end, worst = short_bearing_cycle(
+            state.x, state.y, _start_angle(state, load_x[0], load_y[0], wj[0] + wb[0]), dt,
+            load_x, load_y, wj, wb, record_every, mu, g.radius, g.width, g.radial_clearance,
+            rc)
     if worst > 1e-4 or not np.all(np.isfinite(table)):
         raise ConvergenceError("quasi-static velocity solve failed", residual=worst)
     sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
@@ -244,6 +179,16 @@ def _compiled(problem, state, phi, record_every, n_out, rc) -> CycleTrajectory:
     end_state = OrbitState(end[0], end[1], end[2], end[3], False)
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state,
                                       2 * (len(phi) - 1))
+
+
+def _start_angle(state, load_x, load_y, omega_sum) -> float:
+    """Guess of the short-bearing active-arc angle α + ψ = β + π/2 [rad] from the state's
+    squeeze velocity v_s = ė − ω̄ × e, or from the load when the state is at rest."""
+    mean = 0.5 * omega_sum
+    sx, sy = state.vx + mean * state.y, state.vy - mean * state.x
+    if sx or sy:
+        return math.atan2(sy, sx) + 0.5 * math.pi
+    return math.atan2(load_y, load_x) + 0.5 * math.pi
 
 
 def _inward_only(x: float, y: float, vx: float, vy: float) -> tuple[float, float]:
