@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 
+import numba as nb
 import numpy as np
 
 from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
@@ -33,6 +34,7 @@ from conrod.dynamics.squeeze_velocity import (
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
+from conrod.film.table_kernel import table_force
 
 
 def _velocity_solver(problem: OrbitProblem, history=None):
@@ -107,7 +109,7 @@ def quasi_static_cycle(
     dt = (phi[1] - phi[0]) / problem.crank_speed
     rc = problem.contact_radius * (1.0 - 1e-9)
     if compiled_applies(problem):
-        return _compiled(problem, state, phi, record_every, n_out, rc)
+        return _compiled(problem, state, phi, (load_x, load_y, wj, wb), record_every, n_out, rc)
     history = FilmHistory(problem.film, state.film_history) if problem.has_history else None
     velocity = _velocity_solver(problem, history)
     x, y, guess = state.x, state.y, (state.vx, state.vy)
@@ -150,14 +152,14 @@ def compiled_applies(problem) -> bool:
             or mobility_applies(problem))
 
 
-def _compiled(problem, state, phi, record_every, n_out, rc) -> CycleTrajectory:
+def _compiled(problem, state, phi, loads, record_every, n_out, rc) -> CycleTrajectory:
     """Compiled Heun loop: short bearing and Reynolds by Booker's reduction, table and
-    mobility films by the table's inverse."""
-    load_x, load_y = problem.loads.load(phi)
-    wj, wb = problem.loads.speeds(phi)
+    mobility films by the table's inverse; ``loads`` = (W_x, W_y, ω_j, ω_b) at ``phi``."""
+    load_x, load_y, wj, wb = loads
     dt = (phi[1] - phi[0]) / problem.crank_speed
     film, mu = problem.film, problem.viscosity
     g = film.geometry
+    tab = None
     if squeeze_applies(problem):
         table, end, worst = squeeze_cycle(problem, state, dt, (load_x, load_y, wj, wb),
                                           record_every, rc)
@@ -175,7 +177,13 @@ def _compiled(problem, state, phi, record_every, n_out, rc) -> CycleTrajectory:
     if worst > 1e-4 or not np.all(np.isfinite(table)):
         raise ConvergenceError("quasi-static velocity solve failed", residual=worst)
     sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
-    _contact_forces(problem, table, *sampled)
+    if tab is not None and problem.asperity is None:  # the same table_force, compiled
+        _table_contact_forces(table, sampled[0], sampled[1], sampled[2] + sampled[3], mu,
+                              tab.force_scale, g.radial_clearance, tab.s_step,
+                              tab.tables["log_magnitude"], tab.tables["turning"])
+        table[:, 5] = problem.dry_friction * table[:, 4]
+    else:
+        _contact_forces(problem, table, *sampled)
     end_state = OrbitState(end[0], end[1], end[2], end[3], False)
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state,
                                       2 * (len(phi) - 1))
@@ -195,6 +203,19 @@ def _inward_only(x: float, y: float, vx: float, vy: float) -> tuple[float, float
     if x * vx + y * vy > 0.0:
         return remove_normal_velocity(x, y, vx, vy)
     return vx, vy
+
+
+@nb.njit(cache=True)
+def _table_contact_forces(table, load_x, load_y, omega_sum, viscosity, force_scale, clearance,
+                          s_step, log_magnitude, turning):
+    """:func:`_contact_forces` (column 4) for the table and mobility films, compiled."""
+    for i in range(table.shape[0]):
+        if table[i, 6] > 0.5:
+            x, y = table[i, 0], table[i, 1]
+            fx, fy = table_force(x, y, table[i, 2], table[i, 3], omega_sum[i], viscosity,
+                                 force_scale, clearance, s_step, log_magnitude, turning)
+            e = math.hypot(x, y)
+            table[i, 4] = max(((load_x[i] + fx) * x + (load_y[i] + fy) * y) / e, 0.0)
 
 
 def _contact_forces(problem, table, load_x, load_y, wj, wb) -> None:
