@@ -200,6 +200,18 @@ def test_short_unit_force_direction_derivative_and_homogeneity(eps):
                                    atol=1e-12 * np.abs(f2).max())
 
 
+def test_short_force_angle_is_monotone_and_brackets_the_root():
+    """The inversion's bracket: φ(α) increases (dφ/dα > 0) and |φ − α − π/2| < π/2."""
+    from conrod.dynamics.short_velocity import unit_force_direction
+
+    for eps in (0.0, 0.5, 0.98, 0.9999):
+        for alpha in np.linspace(-math.pi, math.pi, 721):
+            g_r, g_t, d_r, d_t = unit_force_direction(alpha, eps)
+            assert g_r * d_t - g_t * d_r > 0.0
+            offset = (math.atan2(g_t, g_r) - alpha - 0.5 * math.pi + math.pi) % (2 * math.pi)
+            assert abs(offset - math.pi) < 0.5 * math.pi
+
+
 def _python_loop(problem, monkeypatch):
     """Orbit of the uncompiled loop: Newton (short bearing) or ``journal_velocity``."""
     monkeypatch.setattr(qs, "compiled_applies", lambda p: False)
