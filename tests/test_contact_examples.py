@@ -40,7 +40,7 @@ def test_1000rpm_touches_around_combustion_and_2000rpm_stays_full_film(repo):
                                                                 low.cycle.load_y)))
 
     # friction work from the journal rotation (ours) = ∫ P_f |V_s| dt from the orbit's own
-    # sliding speed (independent: H4's V_k + (ω_j − ω_b) R), to the neglected c/R share
+    # sliding speed (independent: the orbit's V_k + (ω_j − ω_b) R), to the neglected c/R share
     step_time = float(np.median(np.diff(low.cycle.crank_angle))) / (
         data_1000["engine"]["speed"] * 2.0 * np.pi / 60.0)
     power_work = float(np.sum(low.cycle.friction_force * np.abs(low.cycle.sliding_speed)))

@@ -44,7 +44,7 @@ def test_full_film_matches_closed_form_with_second_order_convergence():
 
 
 def test_full_history_equals_reynolds_swift_stieber():
-    """With ϑ = 1 everywhere the JFO instant is the Swift–Stieber problem (H2's model).
+    """With ϑ = 1 everywhere the JFO instant is the Swift–Stieber problem (ReynoldsFilm).
 
     Both are second-order discretisations that differ in the face coefficients and in the
     peak-pressure read-out, so they agree to the O(Δ²) grid error of 72×16 (measured:

@@ -15,12 +15,13 @@ film model (``[solver] film``) → periodic orbit from the concentric start → 
 
 from __future__ import annotations
 
-import importlib.util
 import time
 from collections.abc import Callable
 from typing import Any
 
 from conrod.cases.case import Case
+from conrod.contact.analysis import analyse_contact
+from conrod.contact.asperity import kernel_parameters
 from conrod.dynamics.characteristics import cycle_characteristics
 from conrod.dynamics.heat_balance import effective_temperature, relaxed_update
 from conrod.dynamics.periodic import PeriodicOrbit, periodic_orbit
@@ -210,19 +211,11 @@ def _asperity_parameters(case: Case):
     """Greenwood–Tripp kernel parameters when ``[contact] model = "greenwood_tripp"``."""
     if case.contact.model != "greenwood_tripp":
         return None
-    if importlib.util.find_spec("conrod.contact.asperity") is None:
-        raise CaseError("contact.model = 'greenwood_tripp': asperity model not available")
-    from conrod.contact.asperity import kernel_parameters
-
     return kernel_parameters(case)
 
 
 def _contact_analysis(case: Case, cycle: CycleResults):
-    """H5's contact post-processing when :mod:`conrod.contact.analysis` exists."""
-    if importlib.util.find_spec("conrod.contact.analysis") is None:
-        return None
-    from conrod.contact.analysis import analyse_contact
-
+    """Contact post-processing: friction work, wear, Hertz stress (SPEC S4)."""
     return analyse_contact(case, cycle)
 
 

@@ -156,7 +156,7 @@ class RunSummary:
 
 @runtime_checkable
 class ContactAnalysis(Protocol):
-    """What :func:`conrod.contact.analysis.analyse_contact` returns (issue 5, H5)."""
+    """What :func:`conrod.contact.analysis.analyse_contact` returns (issue 5)."""
 
     def summary_items(self) -> dict[str, Any]:
         """Items merged into summary.json."""
@@ -184,4 +184,4 @@ class RunResults:
     previous_cycle_eccentricity: np.ndarray | None = None
     """(x, y) of the cycle before the last, shape (2, n) [m] (periodicity figure)."""
     contact: ContactAnalysis | None = None
-    """Contact post-processing of H5 (friction work, wear) when available."""
+    """Contact post-processing (friction work, wear) when available."""

@@ -1,6 +1,6 @@
 """Writers of ``conrod run``: ``cycle.csv``, ``summary.json`` and the figures, all atomic.
 
-Contact post-processing (H5): ``results.contact.summary_items()`` is merged into
+Contact post-processing: ``results.contact.summary_items()`` is merged into
 summary.json and ``results.contact.write_files(out_dir)`` writes its own files.
 """
 
@@ -69,7 +69,7 @@ def summary_items(results: RunResults) -> dict:
 def write_run(
     results: RunResults, out_dir: str | os.PathLike[str], *, figures: bool = True
 ) -> list[Path]:
-    """Write cycle.csv, summary.json (and figures, and H5's files); return the paths."""
+    """Write cycle.csv, summary.json (and figures, and the contact files); return the paths."""
     out = Path(out_dir)
     paths = [
         write_csv(out / "cycle.csv", cycle_table(results)),
