@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 
 import numba as nb
+import numpy as np
 
 FRICTION_REGULARISATION_SPEED = 1.0e-4
 """Sliding speed below which dry friction is regularised (tanh) [m/s]."""
@@ -45,6 +46,24 @@ def project_onto_circle(x: float, y: float, radius: float) -> tuple[float, float
     if z > 1.0:
         return x / z, y / z, True
     return x, y, False
+
+
+@nb.njit(cache=True)
+def constrain_and_record(
+    x: float, y: float, vx: float, vy: float, contact_radius: float,
+    step: int, record_every: int, out: np.ndarray,
+) -> tuple[float, float]:
+    """Shared step of the compiled massless Heun loops: on the contact circle drop an outward
+    normal velocity (eqs 4.1.5–4.1.8); every ``record_every`` steps store the row
+    (x, y, v_x, v_y, ·, ·, contact) in ``out``. Returns the admissible (v_x, v_y) [m/s]."""
+    contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
+    if contact and x * vx + y * vy > 0.0:
+        vx, vy = remove_normal_velocity(x, y, vx, vy)
+    if step % record_every == 0 and step // record_every < out.shape[0]:
+        row = step // record_every
+        out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
+        out[row, 6] = 1.0 if contact else 0.0
+    return vx, vy
 
 
 @nb.njit(cache=True)

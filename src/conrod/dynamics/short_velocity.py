@@ -32,7 +32,7 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
+from conrod.dynamics.contact import constrain_and_record, project_onto_circle
 from conrod.film.short_bearing_kernel import (
     ECCENTRICITY_LIMIT,
     _active_arc_integrals,
@@ -152,13 +152,7 @@ def short_bearing_cycle(
         vx, vy, alpha, r1, n1 = short_velocity(
             x, y, load_x[k], load_y[k], journal_speed[k], shell_speed[k], viscosity,
             radius, width, clearance, alpha)
-        contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
-        if contact and x * vx + y * vy > 0.0:
-            vx, vy = remove_normal_velocity(x, y, vx, vy)
-        if k % record_every == 0 and k // record_every < out.shape[0]:
-            row = k // record_every
-            out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
-            out[row, 6] = 1.0 if contact else 0.0
+        vx, vy = constrain_and_record(x, y, vx, vy, contact_radius, k, record_every, out)
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
         vx2, vy2, alpha2, r2, n2 = short_velocity(
             xp, yp, load_x[k + 1], load_y[k + 1], journal_speed[k + 1], shell_speed[k + 1],

@@ -29,7 +29,7 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
+from conrod.dynamics.contact import constrain_and_record, project_onto_circle
 from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve
 from conrod.film.table_kernel import mobility_velocity
 
@@ -212,13 +212,7 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
         vx, vy, beta, slope, r1 = squeeze_velocity(
             x, y, load_x[k], load_y[k], mean, beta, slope, pressure, cos_t, sin_t, g,
             clearance, speed, tolerance, max_cycles, tangent, scratch)
-        contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
-        if contact and x * vx + y * vy > 0.0:
-            vx, vy = remove_normal_velocity(x, y, vx, vy)
-        if k % record_every == 0 and k // record_every < out.shape[0]:
-            row = k // record_every
-            out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
-            out[row, 6] = 1.0 if contact else 0.0
+        vx, vy = constrain_and_record(x, y, vx, vy, contact_radius, k, record_every, out)
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
         scratch[:] = pressure
         if k > 0:  # p(corrector) ≈ p(predictor) + last step's difference
@@ -294,13 +288,7 @@ def table_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed, record_eve
         vx, vy = mobility_velocity(x, y, load_x[k], load_y[k], journal_speed[k] + shell_speed[k],
                                    viscosity, force_scale, clearance, s_step, log_magnitude,
                                    turning)
-        contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
-        if contact and x * vx + y * vy > 0.0:
-            vx, vy = remove_normal_velocity(x, y, vx, vy)
-        if k % record_every == 0 and k // record_every < out.shape[0]:
-            row = k // record_every
-            out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
-            out[row, 6] = 1.0 if contact else 0.0
+        vx, vy = constrain_and_record(x, y, vx, vy, contact_radius, k, record_every, out)
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
         vx2, vy2 = mobility_velocity(
             xp, yp, load_x[k + 1], load_y[k + 1], journal_speed[k + 1] + shell_speed[k + 1],
