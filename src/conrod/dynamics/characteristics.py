@@ -40,10 +40,11 @@ def attitude_angle(
 
 
 def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[FilmState]:
-    """Film states at the output angles."""
+    """Film states at the output angles (with the sampled film memory, if any)."""
+    memory = traj.film_history or [None] * traj.crank_angle.size
     return [
         FilmState(float(traj.x[i]), float(traj.y[i]), float(traj.vx[i]), float(traj.vy[i]),
-                  float(wj[i]), float(wb[i]), problem.viscosity)
+                  float(wj[i]), float(wb[i]), problem.viscosity, history=memory[i])
         for i in range(traj.crank_angle.size)
     ]
 

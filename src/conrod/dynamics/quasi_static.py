@@ -114,6 +114,7 @@ def quasi_static_cycle(
     velocity = _velocity_solver(problem, history)
     x, y, guess = state.x, state.y, (state.vx, state.vy)
     table = np.zeros((n_out, 7))
+    memory = [None] * n_out if history is not None else None
     worst = 0.0
     for k in range(len(phi) - 1):
         vx, vy, r1 = velocity(x, y, load_x[k], load_y[k], wj[k], wb[k], guess)
@@ -122,6 +123,8 @@ def quasi_static_cycle(
             vx, vy = _inward_only(x, y, vx, vy)
         if k % record_every == 0:
             table[k // record_every] = (x, y, vx, vy, 0.0, 0.0, float(contact))
+            if memory is not None:
+                memory[k // record_every] = history.field
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, rc)
         k1 = k + 1
         vx2, vy2, r2 = velocity(xp, yp, load_x[k1], load_y[k1], wj[k1], wb[k1], (vx, vy))
@@ -136,7 +139,9 @@ def quasi_static_cycle(
     _contact_forces(problem, table, *sampled)
     end = OrbitState(x, y, guess[0], guess[1], False,
                      history.field if history is not None else None)
-    return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, 2 * (len(phi) - 1))
+    traj = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, 2 * (len(phi) - 1))
+    traj.film_history = memory
+    return traj
 
 
 def mobility_applies(problem) -> bool:

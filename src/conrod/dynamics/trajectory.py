@@ -21,6 +21,8 @@ class CycleTrajectory:
     in_contact : ndarray  Journal on the contact circle [-].
     end_state : OrbitState  State at the end of the cycle (start of the next).
     steps : int  Integrator steps taken [-].
+    film_history : list of ndarray or None  Film memory (mass-conserving film fraction ϑ)
+        at each output angle, for films with memory [-].
     """
 
     crank_angle: np.ndarray
@@ -33,6 +35,7 @@ class CycleTrajectory:
     in_contact: np.ndarray
     end_state: OrbitState
     steps: int = 0
+    film_history: list[np.ndarray] | None = None
 
     @classmethod
     def from_table(
