@@ -56,7 +56,8 @@ def orbit(film):
 def test_jfo_orbit_is_periodic_and_agrees_with_reynolds():
     """Measured (24 × 4 grid, 2° steps): JFO 4 cycles, min h_min 3.88 vs 4.02 µm (−3.5 %),
     max p_max 10.67 vs 9.96 MPa (+7.2 %), h_min within 7.5 % at every output angle; the
-    unloaded side cavitates (min ϑ 0.22–0.86 over the cycle), the loaded zone stays (nearly) full."""
+    unloaded side cavitates (min ϑ 0.22–0.86 over the cycle), the loaded zone stays
+    (nearly) full."""
     geometry = fed_bearing()
     jfo, jfo_cycle, _ = orbit(MassConservingFilm(geometry, n_theta=24, n_z=4))
     reynolds, reynolds_cycle, _ = orbit(ReynoldsFilm(geometry, n_theta=24, n_z=4))
@@ -66,3 +67,18 @@ def test_jfo_orbit_is_periodic_and_agrees_with_reynolds():
     assert jfo_cycle.h_min.min() == pytest.approx(reynolds_cycle.h_min.min(), rel=0.05)
     assert jfo_cycle.p_max.max() == pytest.approx(reynolds_cycle.p_max.max(), rel=0.10)
     assert np.max(np.abs(jfo_cycle.h_min / reynolds_cycle.h_min - 1.0)) < 0.10
+
+
+def test_pressure_map_uses_the_film_fraction_of_its_crank_angle():
+    """The pressure map at the p_max angle must be the JFO field (with ϑ there): its maximum
+    equals the cycle's p_max; a full film at the same velocity would overshoot (11.3 MPa)."""
+    from types import SimpleNamespace
+
+    from conrod.simulation import _attach_pressure_map
+
+    film = MassConservingFilm(fed_bearing(), n_theta=24, n_z=4)
+    result, cycle, _ = orbit(film)
+    problem = OrbitProblem(film, rotating_load(), 0.02, 1.0, 1.0)
+    results = SimpleNamespace(cycle=cycle)
+    _attach_pressure_map(results, problem, result.last.film_history)
+    assert results.pressure_at_p_max.max() == pytest.approx(cycle.p_max.max(), rel=1e-6)

@@ -129,7 +129,7 @@ class Simulation:
             cycle, orbit[0], problem, self.solver, temperature, cycles, iterations,
         )
         results = RunResults(cycle=cycle, summary=summary, clearance=problem.clearance)
-        _attach_pressure_map(results, problem)
+        _attach_pressure_map(results, problem, orbit[0].last.film_history)
         results.previous_cycle_eccentricity = _previous(orbit[0])
         results.contact = _contact_analysis(self.case, cycle)
         summary.wall_time = time.perf_counter() - start
@@ -184,14 +184,18 @@ def _heat_balance_temperature(
     )
 
 
-def _attach_pressure_map(results: RunResults, problem: OrbitProblem) -> None:
-    """Pressure field at the crank angle of the largest p_max."""
+def _attach_pressure_map(
+    results: RunResults, problem: OrbitProblem, film_history: list | None = None
+) -> None:
+    """Pressure field at the crank angle of the largest p_max (with the film memory ϑ there,
+    for a mass-conserving film)."""
     cycle: CycleResults = results.cycle
     i = int(cycle.p_max.argmax())
     state = FilmState(
         float(cycle.eccentricity_x[i]), float(cycle.eccentricity_y[i]),
         float(cycle.velocity_x[i]), float(cycle.velocity_y[i]),
         float(cycle.journal_speed[i]), float(cycle.shell_speed[i]), problem.viscosity,
+        history=film_history[i] if film_history else None,
     )
     field = problem.film.solve(state, with_pressure=True).pressure
     if field is not None:
