@@ -46,16 +46,7 @@ def polar_load_diagram(loads: EngineLoads) -> Figure:
         label="tip of S (and of R from O')",
     )
     _label_angles(axes, tangential * KN, outward * KN, loads.crank_angle_deg, 30.0)
-    axes.plot(0.0, 0.0, "s", color="C3")
-    axes.annotate("O", (0.0, 0.0), xytext=(-12, -4), textcoords="offset points", color="C3")
-    axes.plot(pole_shift[0] * KN, pole_shift[1] * KN, "D", color="C2")
-    axes.annotate(
-        "O'",
-        (pole_shift[0] * KN, pole_shift[1] * KN),
-        xytext=(-14, -10),
-        textcoords="offset points",
-        color="C2",
-    )
+    _mark_poles(axes, pole_shift)
     axes.axhline(0.0, color="0.7", lw=0.6)
     axes.axvline(0.0, color="0.7", lw=0.6)
     axes.set_aspect("equal", adjustable="datalim")
@@ -73,6 +64,15 @@ def polar_load_diagram(loads: EngineLoads) -> Figure:
     return figure
 
 
+def _mark_poles(axes, pole) -> None:
+    """Pole O of the S diagram and pole O' shifted by the rotating-mass force (seed 001)."""
+    axes.plot(0.0, 0.0, "s", color="C3")
+    axes.annotate("O", (0.0, 0.0), xytext=(-12, -4), textcoords="offset points", color="C3")
+    axes.plot(pole[0] * KN, pole[1] * KN, "D", color="C2")
+    axes.annotate("O'", (pole[0] * KN, pole[1] * KN), xytext=(-14, -10),
+                  textcoords="offset points", color="C2")
+
+
 def _zoom_on_low_loads(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, pole) -> None:
     """Zoom on the gas-exchange part of the diagram (within the 75th percentile of |S|)."""
     radius = np.hypot(x, y)
@@ -80,16 +80,7 @@ def _zoom_on_low_loads(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray
     near = radius <= extent
     axes.plot(np.append(x, x[0]), np.append(y, y[0]), lw=1.0, color="C0")
     _label_angles(axes, np.where(near, x, np.nan), np.where(near, y, np.nan), angle_deg, 30.0)
-    axes.plot(0.0, 0.0, "s", color="C3")
-    axes.annotate("O", (0.0, 0.0), xytext=(-12, -4), textcoords="offset points", color="C3")
-    axes.plot(pole[0] * KN, pole[1] * KN, "D", color="C2")
-    axes.annotate(
-        "O'",
-        (pole[0] * KN, pole[1] * KN),
-        xytext=(-14, -10),
-        textcoords="offset points",
-        color="C2",
-    )
+    _mark_poles(axes, pole)
     axes.set_xlim(-extent, extent)
     axes.set_ylim(-extent, extent)
     axes.set_aspect("equal")
