@@ -78,7 +78,7 @@ def body_force_load(basis: Basis, thickness: np.ndarray, density: float,
     @LinearForm
     def form(v, w):
         b_x, b_y = acceleration(w.x[0], w.x[1])
-        return w.t * density * (b_x * v.value[0] + b_y * v.value[1])
+        return w.t * density * (b_x * v[0] + b_y * v[1])
 
     return asm(form, basis, t=_element_field(basis, thickness))
 
@@ -86,7 +86,7 @@ def body_force_load(basis: Basis, thickness: np.ndarray, density: float,
 def mass_properties(basis: Basis, thickness: np.ndarray, density: float) -> dict[str, float]:
     """Mass [kg], centre of mass (x, y) [m] and moment of inertia about it [kg m²]."""
     weight = basis.dx * _element_field(basis, thickness) * density
-    x, y = basis.global_coordinates().value
+    x, y = np.asarray(basis.global_coordinates())
     mass = float(np.sum(weight))
     x_g, y_g = float(np.sum(weight * x)) / mass, float(np.sum(weight * y)) / mass
     inertia = float(np.sum(weight * ((x - x_g) ** 2 + (y - y_g) ** 2)))

@@ -1,8 +1,9 @@
 """Transfer between the film grid and the finite-element bore (the documented coupling).
 
 The FE bore has corner nodes at angles α_k; the film grid has n circumferential nodes θ_j
-(the film frame of :mod:`conrod.film.base`), both with periodic piecewise-linear hat functions φ_j(θ) (φ_j(θ_j) = 1, ∫φ_j dθ = Δθ_j, the
-mean spacing of the two neighbouring intervals).
+(the film frame of :mod:`conrod.film.base`), both with periodic piecewise-linear hat
+functions φ_j(θ) (φ_j(θ_j) = 1, ∫φ_j dθ = Δθ_j, the mean spacing of the two neighbouring
+intervals).
 
 * **Nodal force** f_j [N]: the film pressure integrated over node j's arc and the whole
   width, f_j = R Δθ_j ∫ p(θ_j, z) dz (trapezoidal rule in z), positive outward on the
@@ -61,14 +62,14 @@ def bore_load_operator(facet_basis: FacetBasis, angles: np.ndarray,
     angles : ndarray  Film-node angles θ_j, strictly increasing in [0, 2π) [rad].
     radius : float  Bore radius R used for the arc lengths [m].
     """
-    coords = facet_basis.global_coordinates().value          # (2, facets, points)
+    coords = np.asarray(facet_basis.global_coordinates())          # (2, facets, points)
     theta = np.arctan2(coords[1], coords[0])
     normal = coords / np.hypot(coords[0], coords[1])         # outward radial e_r
     left, right, weight = hat_values(theta, angles)
     scale = 1.0 / (radius * arc_weights(angles))
     rows, cols, values = [], [], []
     for local in range(facet_basis.element_dofs.shape[0]):
-        value = facet_basis.basis[local][0].value             # (2, facets, points)
+        value = np.asarray(facet_basis.basis[local][0])             # (2, facets, points)
         radial = np.einsum("ifq,ifq->fq", value, normal) * facet_basis.dx
         dofs = np.broadcast_to(facet_basis.element_dofs[local][:, None], radial.shape)
         for node, share in ((left, 1.0 - weight), (right, weight)):
