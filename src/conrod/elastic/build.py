@@ -61,7 +61,8 @@ def _imported(case, angles, radius, common) -> Housing:
         inertia_angles, fields = read_inertia(case.resolve(section.inertia_file))
         inertia = interpolation_matrix(inertia_angles, angles) @ fields
     info = {"model": "compliance", "source_nodes": len(source_angles)}
-    return Housing(angles, radius, interpolate @ matrix @ interpolate.T, inertia, info=info,
+    compliance = interpolate @ matrix @ interpolate.T
+    return Housing(angles, radius, 0.5 * (compliance + compliance.T), inertia, info=info,
                    **common)
 
 
