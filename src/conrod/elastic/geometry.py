@@ -119,8 +119,8 @@ class RodGeometry:
             problems.append(("shank_width_small_end", self.shank_width_small_end,
                              f"< small-end outer diameter {2.0 * self.small_end_outer_radius:g} m"))
         if self.small_end_outer_radius <= self.small_end_bore_radius:
-            problems.append(("small_end_outer_radius", self.small_end_outer_radius,
-                             f"> small-end bore radius {self.small_end_bore_radius:g} m"))
+            problems.append(("small_end_outer_diameter", 2.0 * self.small_end_outer_radius,
+                             f"> small-end bore diameter {2.0 * self.small_end_bore_radius:g} m"))
         reach = max(self.head_outer_radius, self.cap_outer_radius) + self.small_end_outer_radius
         if self.centre_distance <= reach:
             problems.append(("centre_distance", self.centre_distance,

@@ -30,7 +30,7 @@ def _read(path: Path):
 
     try:
         return meshio.read(path)
-    except Exception as error:  # meshio raises many types for unreadable files
+    except (Exception, SystemExit) as error:  # meshio raises many types, even SystemExit
         raise _error(path, f"cannot be read as a mesh ({type(error).__name__}: {error})"
                      ) from None
 
