@@ -65,9 +65,14 @@ class Housing:
         return housing_from_case(case, cache_dir=cache_dir, use_cache=use_cache)
 
     # ------------------------------------------------------------------ film side
-    def nodal_forces(self, pressure: np.ndarray, z: np.ndarray) -> np.ndarray:
-        """Film nodal forces f_j [N] from p(θ_j, z) (n, n_z + 1) [Pa] on z [m]."""
-        return nodal_forces(pressure, z, self.angles, self.radius)
+    def nodal_forces(self, pressure: np.ndarray, z: np.ndarray,
+                     theta: np.ndarray | None = None) -> np.ndarray:
+        """Film nodal forces f_j [N] from p(θ, z) (n_θ, n_z + 1) [Pa] on z [m]; θ [rad] of
+        the rows when they are not the housing's film nodes."""
+        if theta is not None and len(theta) == len(self.angles) and np.allclose(theta,
+                                                                                 self.angles):
+            theta = None
+        return nodal_forces(pressure, z, self.angles, self.radius, theta)
 
     def correct(self, displacement: np.ndarray) -> np.ndarray:
         """Rigid-body corrected radial displacement(s) [m] of (n,) or (n, k) [m]."""
@@ -116,9 +121,10 @@ class Housing:
         self.info["structure_seconds"] = time.perf_counter() - start
         return structure
 
-    def stresses(self, pressure: np.ndarray, z: np.ndarray, crank_angle: float):
-        """Von Mises stresses of both load schemes at φ [rad] (see
-        :func:`conrod.elastic.stresses.compare_schemes`)."""
+    def stresses(self, pressure: np.ndarray, z: np.ndarray, crank_angle: float,
+                 theta: np.ndarray | None = None):
+        """Von Mises stresses of both load schemes at φ [rad] for the film pressure p(θ, z)
+        [Pa] (see :func:`conrod.elastic.stresses.compare_schemes`)."""
         from conrod.elastic.stresses import compare_schemes
 
-        return compare_schemes(self, self.nodal_forces(pressure, z), crank_angle)
+        return compare_schemes(self, self.nodal_forces(pressure, z, theta), crank_angle)

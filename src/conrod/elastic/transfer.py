@@ -97,8 +97,15 @@ def interpolation_matrix(source: np.ndarray, target: np.ndarray) -> np.ndarray:
     return matrix
 
 
-def nodal_forces(pressure: np.ndarray, z: np.ndarray, angles: np.ndarray,
-                 radius: float) -> np.ndarray:
-    """Film nodal forces f_j = R Δθ_j ∫ p(θ_j, z) dz [N] from p (n, n_z + 1) [Pa]."""
+def nodal_forces(pressure: np.ndarray, z: np.ndarray, angles: np.ndarray, radius: float,
+                 pressure_angles: np.ndarray | None = None) -> np.ndarray:
+    """Film nodal forces f_j = R Δθ_j ∫ p(θ_j, z) dz [N] from p (n_θ, n_z + 1) [Pa].
+
+    pressure_angles : ndarray or None  θ of the pressure rows [rad] when they are not the
+        film nodes ``angles``; the line load ∫p dz [N/m] is then interpolated periodic-
+        linearly to ``angles``.
+    """
     line_load = np.trapezoid(pressure, z, axis=1)
+    if pressure_angles is not None:
+        line_load = interpolation_matrix(np.asarray(pressure_angles), angles) @ line_load
     return radius * arc_weights(angles) * line_load
