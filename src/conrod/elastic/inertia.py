@@ -57,16 +57,25 @@ class CrankKinematics:
     crank_to_rod: float
 
     def coefficients(self, crank_angle: float) -> np.ndarray:
-        """c_k(φ) of the four base fields at crank angle φ [rad] (units in the table)."""
-        beta = math.asin(self.crank_to_rod * math.sin(crank_angle))
-        centripetal = self.crank_speed**2 * self.crank_radius
-        omega = float(rod_angular_velocity(crank_angle, self.crank_to_rod, self.crank_speed))
-        alpha = float(rod_angular_acceleration(crank_angle, self.crank_to_rod, self.crank_speed))
-        return np.array([centripetal * math.cos(crank_angle + beta),
-                         centripetal * math.sin(crank_angle + beta), omega**2, alpha])
+        """c_k(φ) of the four base fields at crank angle φ [rad] (units in the table).
+
+        Scalar form of :mod:`conrod.loads.kinematics` (it runs at every deformation update):
+        sin β = λ sin φ, Ω = −ω λ cos φ / cos β, dΩ/dt = ω² λ (1 − λ²) sin φ / cos³ β.
+        """
+        lam, omega = self.crank_to_rod, self.crank_speed
+        sin_phi, cos_phi = math.sin(crank_angle), math.cos(crank_angle)
+        sin_beta = lam * sin_phi
+        cos_beta = math.sqrt(1.0 - sin_beta * sin_beta)
+        centripetal = omega * omega * self.crank_radius
+        rod_rate = -omega * lam * cos_phi / cos_beta
+        rod_acceleration = omega * omega * lam * (1.0 - lam * lam) * sin_phi / cos_beta**3
+        return np.array([centripetal * (cos_phi * cos_beta - sin_phi * sin_beta),
+                         centripetal * (sin_phi * cos_beta + cos_phi * sin_beta),
+                         rod_rate * rod_rate, rod_acceleration])
 
     def body_force(self, crank_angle: float):
-        """The full d'Alembert body force per unit mass b(x, y) at φ (direct, no split)."""
+        """The full d'Alembert body force per unit mass b(x, y) at φ (direct, no split; uses
+        :mod:`conrod.loads.kinematics`, so it also checks :meth:`coefficients`)."""
         beta = float(rod_angle(crank_angle, self.crank_to_rod))
         centripetal = self.crank_speed**2 * self.crank_radius
         omega = float(rod_angular_velocity(crank_angle, self.crank_to_rod, self.crank_speed))

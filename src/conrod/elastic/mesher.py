@@ -27,6 +27,7 @@ Field = Callable[[np.ndarray], np.ndarray]
 _FORCE_SCALE = 1.2
 _TIME_STEP = 0.2
 _RETRIANGULATE = 0.1
+"""Re-triangulate when a point moved this share of its local target edge length [-]."""
 _STOP_MOVE = 2.0e-3
 
 
@@ -151,7 +152,8 @@ def distance_mesh(distance: Field, size: Field, box: tuple[float, float, float, 
     n_fixed, last = len(fixed), np.full_like(points, np.inf)
     triangles = bars = None
     for _ in range(max_iterations):
-        if triangles is None or np.max(np.hypot(*(points - last).T)) > _RETRIANGULATE * step:
+        moved = np.hypot(*(points - last).T) / size(points)
+        if triangles is None or np.max(moved) > _RETRIANGULATE:
             last = points.copy()
             triangles = _triangulate(points, distance, step)
             bars = _bars(triangles)

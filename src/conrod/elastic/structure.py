@@ -55,8 +55,12 @@ class StructuralHousing:
 
     def compliance(self) -> np.ndarray:
         """C (n × n) [m/N]: radial displacement at film node i per outward force at node j."""
-        bore_load = self.load_operator.toarray()
-        bore_compliance = bore_load.T @ self.model.solve(bore_load)
+        bore_load = self.load_operator.tocsc()
+        transpose = bore_load.T.tocsr()
+        bore_compliance = np.empty((bore_load.shape[1], bore_load.shape[1]))
+        for column in range(bore_load.shape[1]):  # one right-hand side at a time: no dense B
+            load = bore_load[:, column].toarray().ravel()
+            bore_compliance[:, column] = transpose @ self.model.solve(load)
         bore_compliance = 0.5 * (bore_compliance + bore_compliance.T)
         return self.interpolation @ bore_compliance @ self.interpolation.T
 
