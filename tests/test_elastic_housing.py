@@ -107,3 +107,23 @@ def test_fe_mass_of_the_rod_and_load_models(housing):
     assert same["max_load_difference_N"] < 1e-6 * 1e5
     different = rigid_rod_load_difference(case, props)
     assert different["max_load_difference_N"] > 1.0
+
+
+def test_nodal_forces_carry_the_film_force_to_the_housing(housing):
+    """Reynolds film at ε = 0.6: the resultant of the nodal forces on the housing equals
+    minus the film force on the journal (the film model's own integration) within 1 %."""
+    from conrod.film.base import BearingGeometry, FilmState
+    from conrod.film.reynolds import ReynoldsFilm
+
+    geometry = BearingGeometry(diameter=2 * housing.radius, width=0.03,
+                               radial_clearance=5.0e-5)
+    film = ReynoldsFilm(geometry, n_theta=72, n_z=16)
+    state = FilmState(0.6 * 5e-5 * np.cos(0.4), 0.6 * 5e-5 * np.sin(0.4), journal_speed=300.0,
+                      viscosity=0.01)
+    result = film.solve(state, with_pressure=True)
+    theta, z = film.grid()
+    forces = housing.nodal_forces(result.pressure, z, theta)
+    resultant = np.array([np.sum(forces * np.cos(housing.angles)),
+                          np.sum(forces * np.sin(housing.angles))])
+    journal = np.array([result.force_x, result.force_y])
+    assert np.hypot(*(resultant + journal)) < 0.01 * np.hypot(*journal)
