@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from conrod.elastic.compliance_io import write_compliance
 from conrod.elastic.correction import correction_projector
@@ -127,3 +129,19 @@ def test_nodal_forces_carry_the_film_force_to_the_housing(housing):
                           np.sum(forces * np.sin(housing.angles))])
     journal = np.array([result.force_x, result.force_y])
     assert np.hypot(*(resultant + journal)) < 0.01 * np.hypot(*journal)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(8, 60), st.floats(0.0, 0.45), st.integers(0, 2**31),
+       st.sampled_from(["least_squares_circle", "centroid"]),
+       st.floats(-1e-5, 1e-5), st.floats(-1e-5, 1e-5))
+def test_correction_on_any_node_set(n_nodes, jitter, seed, method, a, b):
+    """On jittered (non-uniform) node sets the projector is idempotent and removes a rigid
+    translation."""
+    shift = np.random.default_rng(seed).uniform(-jitter, jitter, n_nodes)
+    angles = 2 * np.pi * (np.arange(n_nodes) + shift) / n_nodes
+    angles = np.sort(np.mod(angles, 2 * np.pi))
+    projector = correction_projector(angles, method)
+    translation = a * np.cos(angles) + b * np.sin(angles)
+    assert np.abs(projector @ translation).max() <= 1e-9 * max(abs(a), abs(b), 1e-30)
+    np.testing.assert_allclose(projector @ projector, projector, atol=1e-9)

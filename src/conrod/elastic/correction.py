@@ -10,9 +10,9 @@ projector matrix P (n × n), precomputed once.
   fitted by least squares to the deformed contour, i.e. the fit u_i ≈ c₀ + a cos θ_i +
   b sin θ_i to the nodal radial displacements (first order in u/R).
 * ``centroid`` (method 1): (a, b) is the centroid of the area bounded by the deformed
-  contour, to first order (a, b) = (1/π) ∮ u (cos θ, sin θ) dθ, integrated with the
-  trapezoidal rule over the nodes. On uniformly spaced nodes the two methods coincide
-  exactly; they differ on non-uniform node sets.
+  contour, to first order (a, b) = (1/π) ∮ u (cos θ, sin θ) dθ; the integrals (and the
+  normalising ∮cos² = ∮sin² = π) use the trapezoidal rule over the nodes. On uniformly
+  spaced nodes the two methods coincide exactly; they differ on non-uniform node sets.
 * ``none``: P = I.
 
 Both remove an imposed rigid translation u = a cos θ + b sin θ exactly.
@@ -36,8 +36,9 @@ def translation_estimator(angles: np.ndarray, method: CorrectionName) -> np.ndar
         design = np.column_stack([np.ones_like(angles), cos, sin])
         return np.linalg.pinv(design)[1:]
     if method == "centroid":
-        weights = arc_weights(angles) / np.pi
-        return np.vstack([weights * cos, weights * sin])
+        weighted = np.vstack([cos, sin]) * arc_weights(angles)
+        normal = weighted @ np.column_stack([cos, sin])   # ∮ cos², ∮ cos sin, ∮ sin² (= π I)
+        return np.linalg.solve(normal, weighted)
     if method == "none":
         return np.zeros((2, len(angles)))
     raise ValueError(f"unknown correction {method!r}")
