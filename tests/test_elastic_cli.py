@@ -65,3 +65,18 @@ def test_stress_writes_maxima_for_both_schemes(runner, tmp_path):
     summary = json.loads((tmp_path / "stress_summary.json").read_text())
     assert set(summary["360"]["zones"]["pressure"]) == {"cap", "head", "shank", "small_end"}
     assert (tmp_path / "von_mises_pressure_360deg.png").exists()
+
+
+def test_default_stress_angles_are_the_peak_load_and_360():
+    from conrod.cases.case import Case
+    from conrod.cli.stress_command import parse_angles
+    from conrod.loads.engine_loads import compute_engine_loads
+
+    case = Case.from_toml(KAMAZ)
+    assert parse_angles(None, case) == [25.0, 360.0]          # [housing] stress_angles
+    plain = case.model_copy(update={"housing": case.housing.model_copy(
+        update={"stress_angles": []})})
+    loads = compute_engine_loads(plain)
+    peak = float(loads.crank_angle_deg[np.argmax(loads.load_magnitude)])
+    assert parse_angles(None, plain) == [peak, 360.0]
+    assert parse_angles("10, 370", plain) == [10.0, 370.0]

@@ -145,3 +145,10 @@ def test_correction_on_any_node_set(n_nodes, jitter, seed, method, a, b):
     translation = a * np.cos(angles) + b * np.sin(angles)
     assert np.abs(projector @ translation).max() <= 1e-9 * max(abs(a), abs(b), 1e-30)
     np.testing.assert_allclose(projector @ projector, projector, atol=1e-9)
+
+
+def test_film_field_is_the_bore_deformation_at_every_axial_node(housing):
+    delta = housing.deformation(cosine_forces(housing, 0.0), 0.5)
+    field = housing.film_field(delta, 17)
+    assert field.shape == (len(housing.angles), 17)
+    np.testing.assert_array_equal(field[:, 8], delta)

@@ -107,6 +107,12 @@ class Housing:
             return self.corrected_compliance @ forces
         return self.deformation_from(forces, self.inertia_coefficients(crank_angle))
 
+    @staticmethod
+    def film_field(deformation: np.ndarray, n_axial_nodes: int) -> np.ndarray:
+        """δ(θ_j) [m] repeated over the axial nodes: the (n, n_z + 1) additive film-thickness
+        field of :class:`conrod.film.base.FilmState` (a 2-D housing deforms alike at every z)."""
+        return np.repeat(np.asarray(deformation)[:, None], n_axial_nodes, axis=1)
+
     # ------------------------------------------------------------------ structure side
     @cached_property
     def structure(self):
