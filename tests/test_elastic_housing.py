@@ -152,3 +152,16 @@ def test_film_field_is_the_bore_deformation_at_every_axial_node(housing):
     field = housing.film_field(delta, 17)
     assert field.shape == (len(housing.angles), 17)
     np.testing.assert_array_equal(field[:, 8], delta)
+
+
+def test_compliance_cache_round_trip_and_key(tmp_path):
+    case = kamaz_case(n_theta=24)
+    first = Housing.from_case(case, cache_dir=tmp_path)
+    second = Housing.from_case(case, cache_dir=tmp_path)
+    assert not first.info["from_cache"] and second.info["from_cache"]
+    np.testing.assert_array_equal(first.compliance, second.compliance)
+    np.testing.assert_array_equal(first.inertia_base, second.inertia_base)
+    other = Housing.from_case(kamaz_case({"cap_thickness": 0.012}, n_theta=24),
+                              cache_dir=tmp_path)
+    assert not other.info["from_cache"]
+    assert len(list(tmp_path.glob("*.npz"))) == 2
