@@ -15,12 +15,13 @@ import os
 import tomllib
 from pathlib import Path
 
-from pydantic import Field, PrivateAttr
+from pydantic import Field, PrivateAttr, model_validator
 
 from conrod.cases.base import Section, validate_section
 from conrod.cases.bearing import BearingSection
 from conrod.cases.contact import ContactSection
 from conrod.cases.engine import EngineSection
+from conrod.cases.housing import HousingSection
 from conrod.cases.load import LoadTableSection
 from conrod.cases.lubricant import LubricantSection
 from conrod.cases.mechanism import ClearanceSection
@@ -40,6 +41,15 @@ class Case(Section):
     solver: SolverSection = SolverSection()
     contact: ContactSection = ContactSection()
     clearance: ClearanceSection | None = None
+    housing: HousingSection = HousingSection()
+
+    @model_validator(mode="after")
+    def _check_housing_closes(self) -> Case:
+        """The built-in rod must close (wall > 0, shank narrower than the head, ...)."""
+        if self.housing.model == "builtin" and self.bearing is not None:
+            rod_length = self.engine.rod_length if self.engine is not None else None
+            self.housing.rod_geometry(self.bearing.diameter, rod_length)
+        return self
 
     _base_dir: Path = PrivateAttr(default_factory=Path.cwd)
     _path: Path | None = PrivateAttr(default=None)

@@ -1,0 +1,160 @@
+"""``[housing]`` section: the big-end housing — rigid, built-in FE rod, imported mesh or
+imported compliance matrix (docs/elastic.md).
+
+Dimensions of the built-in rod left out are scaled from the bearing diameter d and the
+engine's rod length (defaults in each description; d_b = d + 2 × shell thickness is the
+housing bore). Example::
+
+    [housing]
+    model = "builtin"
+    big_end_wall_thickness = 0.016
+    cap_thickness = 0.013
+    split_angle = 0.0
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from conrod.cases.base import Section
+from conrod.elastic.correction import CorrectionName
+from conrod.elastic.geometry import RodGeometry
+from conrod.errors import CaseError
+
+HousingModelName = Literal["rigid", "builtin", "mesh", "compliance"]
+ClampName = Literal["small_end", "mid_shank"]
+
+
+def _length(description: str, upper: float = 5.0, default: float | None = None):
+    return Field(default=default, gt=0.0, le=upper, description=description)
+
+
+class HousingSection(Section):
+    """How the big-end housing deforms (rigid by default)."""
+
+    model: HousingModelName = Field(
+        default="rigid", description="rigid, builtin (parametric FE rod), mesh (imported "
+        "2-D mesh) or compliance (imported matrix) [-]")
+    correction: CorrectionName = Field(
+        default="least_squares_circle", description="Rigid-body correction of the bore "
+        "deformation: least_squares_circle, centroid or none [-]")
+    shell_thickness: float | None = _length("Bearing-shell thickness; default 0.03 d [m]", 0.5)
+    big_end_wall_thickness: float | None = _length(
+        "Radial wall of the head on the rod side of the split line; default 0.20 d_b [m]", 1.0)
+    cap_thickness: float | None = _length("Radial thickness of the cap; default 0.16 d_b [m]",
+                                          1.0)
+    split_angle: float = Field(default=0.0, ge=0.0, le=60.0, description="Inclination of the "
+                               "split line from the perpendicular to the rod axis [deg]")
+    shank_width_big_end: float | None = _length(
+        "Shank width at the big-end centre; default 0.45 d_b [m]", 2.0)
+    shank_width_small_end: float | None = _length(
+        "Shank width at the small-end centre; default 0.30 d_b [m]", 2.0)
+    centre_distance: float | None = _length(
+        "Big-end to small-end centre distance; default engine.rod_length, else 2.8 d [m]", 10.0)
+    small_end_bore_diameter: float | None = _length(
+        "Small-end bore (pin bush outside) diameter; default 0.45 d [m]", 2.0)
+    small_end_outer_diameter: float | None = _length(
+        "Small-end eye outer diameter; default 1.45 small-end bore [m]", 2.0)
+    head_thickness: float | None = _length(
+        "Axial (plane-stress) thickness of head and cap; default bearing width [m]", 2.0)
+    shank_thickness: float | None = _length(
+        "Equivalent plane-stress thickness of the shank (I-section area / shank width); "
+        "default 0.5 head thickness [m]", 2.0)
+    small_end_thickness: float | None = _length(
+        "Axial thickness of the small end; default 0.8 head thickness [m]", 2.0)
+    fillet_radius: float | None = Field(default=None, ge=0.0, le=1.0, description=(
+        "Blend radius between head, shank and small end; default 0.3 shank_width_small_end "
+        "[m]"))
+    element_size: float | None = _length(
+        "Largest element edge; default a third of the thinner head wall [m]", 1.0)
+    bore_nodes_per_film_node: int = Field(default=1, ge=1, le=4, description=(
+        "Built-in mesh: FE bore nodes per film node (the bore nodes include the film nodes) "
+        "[-]"))
+    clamp: ClampName = Field(default="small_end", description=(
+        "Built-in rod held at the small-end bore or across the shank (mid_shank) [-]"))
+    clamp_position: float = Field(default=0.5, gt=0.0, lt=1.0, description=(
+        "mid_shank clamp: distance from the big-end centre / centre distance [-]"))
+    youngs_modulus: float = Field(default=2.1e11, gt=1.0e9, le=1.0e12,
+                                  description="Young's modulus E (steel default) [Pa]")
+    poisson_ratio: float = Field(default=0.3, ge=0.0, lt=0.5, description="Poisson ratio ν [-]")
+    density: float = Field(default=7850.0, gt=100.0, le=25000.0,
+                           description="Density ρ (steel default) [kg/m^3]")
+    mesh_file: Path | None = Field(default=None, description=(
+        "2-D mesh (gmsh .msh or any meshio format) in metres, big-end bore centred at the "
+        "origin, physical groups big_end_bore (required) and clamp [-]"))
+    clamp_group: str = Field(default="clamp", description=(
+        "Physical group held fixed in mesh_file; falls back to small_end_bore [-]"))
+    thickness: float | None = _length(
+        "Plane-stress thickness of an imported mesh; default bearing width [m]", 2.0)
+    compliance_file: Path | None = Field(default=None, description=(
+        "Compliance matrix (.npz with angle_deg and compliance_m_per_N, or .csv) [-]"))
+    inertia_file: Path | None = Field(default=None, description=(
+        ".npz with angle_deg and inertia_base_m (n, 4): inertia base fields [-]"))
+    stress_angles: list[float] = Field(default_factory=list, description=(
+        "Crank angles of the stress analysis; empty: peak load and 360 [deg]"))
+
+    @model_validator(mode="after")
+    def _check_model_inputs(self) -> HousingSection:
+        if self.model == "mesh" and self.mesh_file is None:
+            raise ValueError("housing.mesh_file is required with model = 'mesh' (a 2-D .msh "
+                             "file in metres)")
+        if self.model == "compliance" and self.compliance_file is None:
+            raise ValueError("housing.compliance_file is required with model = 'compliance' "
+                             "(.npz or .csv)")
+        for angle in self.stress_angles:
+            if not 0.0 <= angle <= 720.0:
+                raise ValueError(f"housing.stress_angles contains {angle!r}: out of range "
+                                 "(allowed: >= 0 and <= 720 deg)")
+        return self
+
+    def bore_diameter(self, bearing_diameter: float) -> float:
+        """Housing bore d_b = d + 2 × shell thickness [m]."""
+        shell = self.shell_thickness if self.shell_thickness is not None else 0.03 * (
+            bearing_diameter)
+        return bearing_diameter + 2.0 * shell
+
+    def rod_geometry(self, bearing_diameter: float, rod_length: float | None) -> RodGeometry:
+        """The built-in rod's outline [m]; CaseError naming the field when it does not close."""
+        d_b = self.bore_diameter(bearing_diameter)
+        small_bore = _pick(self.small_end_bore_diameter, 0.45 * bearing_diameter)
+        small_width = _pick(self.shank_width_small_end, 0.30 * d_b)
+        centre = _pick(self.centre_distance,
+                       rod_length if rod_length is not None else 2.8 * bearing_diameter)
+        geometry = RodGeometry(
+            bore_radius=0.5 * d_b,
+            head_outer_radius=0.5 * d_b + _pick(self.big_end_wall_thickness, 0.20 * d_b),
+            cap_outer_radius=0.5 * d_b + _pick(self.cap_thickness, 0.16 * d_b),
+            split_angle=math.radians(self.split_angle),
+            shank_width_big_end=_pick(self.shank_width_big_end, 0.45 * d_b),
+            shank_width_small_end=small_width,
+            centre_distance=centre,
+            small_end_bore_radius=0.5 * small_bore,
+            small_end_outer_radius=0.5 * _pick(self.small_end_outer_diameter, 1.45 * small_bore),
+            fillet_radius=_pick(self.fillet_radius, 0.3 * small_width),
+        )
+        problems = geometry.closure_problems()
+        if problems:
+            name, value, allowed = problems[0]
+            raise CaseError(f"housing.{name} = {value:.6g}: the built-in rod does not close "
+                            f"(allowed: {allowed})")
+        return geometry
+
+    def thicknesses(self, bearing_width: float) -> dict[str, float]:
+        """Plane-stress thickness per region (cap, head, shank, small_end) [m]."""
+        head = _pick(self.head_thickness, bearing_width)
+        return {"cap": head, "head": head,
+                "shank": _pick(self.shank_thickness, 0.5 * head),
+                "small_end": _pick(self.small_end_thickness, 0.8 * head)}
+
+    def default_element_size(self, geometry: RodGeometry) -> float:
+        """Largest element edge [m] (``element_size`` or a third of the thinner wall)."""
+        wall = min(geometry.head_outer_radius, geometry.cap_outer_radius) - geometry.bore_radius
+        return _pick(self.element_size, wall / 3.0)
+
+
+def _pick(value: float | None, default: float) -> float:
+    return default if value is None else value

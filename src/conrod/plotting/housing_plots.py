@@ -1,0 +1,129 @@
+"""Figures of the elastic housing: the mesh, the deformed bore under unit cosine loads
+(raw and rigid-body corrected), the inertia deformation at TDC and BDC, and von Mises maps.
+One function per figure; each returns a matplotlib Figure."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.tri import Triangulation
+
+from conrod.elastic.stresses import StressField
+
+MICRO = 1.0e6
+
+
+def _triangulation(structure) -> Triangulation:
+    mesh = structure.model.fe_mesh.mesh
+    corners = mesh.doflocs[:, : int(mesh.t.max()) + 1]
+    return Triangulation(corners[0], corners[1], mesh.t.T)
+
+
+def housing_mesh_figure(structure) -> Figure:
+    """The FE mesh (corner nodes) with the big-end bore and the clamped nodes highlighted."""
+    figure = Figure(figsize=(11.0, 4.6))
+    axes = figure.subplots()
+    axes.triplot(_triangulation(structure), lw=0.3, color="0.55")
+    mesh = structure.model.fe_mesh.mesh
+    bore = mesh.facets[:, structure.model.fe_mesh.boundaries["big_end_bore"]]
+    for a, b in bore.T:
+        axes.plot(mesh.doflocs[0, [a, b]], mesh.doflocs[1, [a, b]], color="tab:red", lw=1.6)
+    clamp = structure.model.basis.doflocs[:, structure.model.clamp_dofs]
+    axes.plot(clamp[0], clamp[1], ".", ms=2.5, color="tab:blue", label="clamped nodes")
+    axes.plot([], [], color="tab:red", label="big-end bore (film nodes)")
+    axes.set_aspect("equal")
+    axes.set_xlabel("x_rod (towards the small end) [m]")
+    axes.set_ylabel("y_rod [m]")
+    n_el, n_dof = mesh.t.shape[1], structure.model.n_dofs
+    axes.set_title(f"Housing mesh: {n_el} six-node triangles, {n_dof} unknowns")
+    axes.legend(loc="upper right", fontsize=8)
+    return figure
+
+
+def _bore_outline(axes, angles, radius, displacement, scale, **style) -> None:
+    closed = np.append(angles, angles[0])
+    r = radius + scale * np.append(displacement, displacement[0])
+    axes.plot(r * np.cos(closed), r * np.sin(closed), **style)
+
+
+def _magnification(radius: float, fields: list[np.ndarray]) -> float:
+    """Scale that draws the largest |u| as 15 % of the radius [-] (rounded)."""
+    largest = max(max(float(np.abs(f).max()) for f in fields), 1e-30)
+    scale = 0.15 * radius / largest
+    return float(10 ** np.floor(np.log10(scale)) * (5 if scale / 10 ** np.floor(
+        np.log10(scale)) >= 5 else 2 if scale / 10 ** np.floor(np.log10(scale)) >= 2 else 1))
+
+
+def bore_deformation_figure(housing, directions_deg=(0.0, 90.0, 180.0, 270.0),
+                            load: float = 1.0e4) -> Figure:
+    """Magnified deformed bore under a cosine load of ``load`` [N] (±90°) in four
+    directions θ_W: raw (clamped model) and rigid-body corrected, each with its own scale."""
+    from conrod.elastic.stresses import cosine_forces
+
+    figure = Figure(figsize=(10.0, 10.0))
+    panels = figure.subplots(2, 2).ravel()
+    raw_all = [housing.pressure_deformation(cosine_forces(housing.angles, load * np.array(
+        [np.cos(np.radians(d)), np.sin(np.radians(d))])), corrected=False) for d in directions_deg]
+    corrected_all = [housing.correct(raw) for raw in raw_all]
+    raw_scale = _magnification(housing.radius, raw_all)
+    corrected_scale = _magnification(housing.radius, corrected_all)
+    for axes, direction, raw, corrected in zip(panels, directions_deg, raw_all, corrected_all,
+                                               strict=True):
+        _bore_outline(axes, housing.angles, housing.radius, np.zeros_like(raw), 0.0,
+                      color="0.7", lw=1.0, label="undeformed")
+        _bore_outline(axes, housing.angles, housing.radius, raw, raw_scale, color="tab:orange",
+                      label=f"raw (clamped) × {raw_scale:.0f}")
+        _bore_outline(axes, housing.angles, housing.radius, corrected, corrected_scale,
+                      color="tab:blue", label=f"corrected ({housing.correction}) × "
+                      f"{corrected_scale:.0f}")
+        theta = np.radians(direction)
+        axes.annotate("", xy=(0.6 * housing.radius * np.cos(theta),
+                              0.6 * housing.radius * np.sin(theta)), xytext=(0, 0),
+                      arrowprops={"arrowstyle": "->", "color": "k"})
+        axes.set_aspect("equal")
+        axes.set_title(f"load towards θ = {direction:.0f}°: corrected range "
+                       f"{np.ptp(corrected) * MICRO:.1f} µm", fontsize=9)
+        axes.set_xticks([])
+        axes.set_yticks([])
+    panels[0].legend(fontsize=7, loc="lower left")
+    figure.suptitle(f"Bore under a {load / 1e3:.0f} kN cosine load (±90°); x_rod to the "
+                    "right, towards the small end")
+    return figure
+
+
+def inertia_deformation_figure(housing) -> Figure:
+    """Radial bore displacement from the rod's own inertia at TDC (φ = 0) and BDC (φ = 180°),
+    raw and corrected, against θ."""
+    figure = Figure(figsize=(9.0, 4.5))
+    axes = figure.subplots()
+    theta_deg = np.degrees(housing.angles)
+    for crank_deg, color in ((0.0, "tab:red"), (180.0, "tab:blue")):
+        phi = np.radians(crank_deg)
+        axes.plot(theta_deg, housing.inertia_deformation(phi, corrected=False) * MICRO,
+                  "--", color=color, label=f"φ = {crank_deg:.0f}° raw")
+        axes.plot(theta_deg, housing.inertia_deformation(phi) * MICRO, color=color,
+                  label=f"φ = {crank_deg:.0f}° corrected")
+    axes.set_xlabel("shell angle θ [deg] (0 = towards the small end)")
+    axes.set_ylabel("radial displacement, outward + [µm]")
+    axes.set_xlim(0, 360)
+    axes.grid(alpha=0.3)
+    axes.legend(fontsize=8)
+    axes.set_title("Inertia deformation of the bore (superposition of base fields)")
+    return figure
+
+
+def von_mises_figure(structure, field: StressField, title: str) -> Figure:
+    """Von Mises stress per element [MPa] with the maximum marked."""
+    figure = Figure(figsize=(11.0, 4.6))
+    axes = figure.subplots()
+    image = axes.tripcolor(_triangulation(structure), facecolors=field.von_mises / 1e6,
+                           cmap="inferno", shading="flat")
+    x, y = field.maximum_location
+    axes.plot(x, y, "c*", ms=12, label=f"max {field.maximum / 1e6:.0f} MPa")
+    figure.colorbar(image, ax=axes, label="von Mises [MPa]")
+    axes.set_aspect("equal")
+    axes.set_xlabel("x_rod [m]")
+    axes.set_ylabel("y_rod [m]")
+    axes.set_title(title)
+    axes.legend(loc="upper right", fontsize=8)
+    return figure

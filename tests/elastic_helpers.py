@@ -1,0 +1,47 @@
+"""Meshes and cases shared by the elastic-housing tests."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from conrod.cases.case import Case
+from conrod.elastic.mesh_io import write_housing_mesh
+from conrod.elastic.mesher import annulus_mesh
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+def ring_lines(n_theta: int, ring: int) -> np.ndarray:
+    """Line cells (n_theta, 2) around ring ``ring`` of :func:`annulus_mesh` numbering."""
+    first = ring * n_theta + np.arange(n_theta)
+    return np.column_stack([first, ring * n_theta + (np.arange(n_theta) + 1) % n_theta])
+
+
+def write_ring_msh(path: Path, inner: float, outer: float, n_theta: int, n_radial: int) -> Path:
+    """A thick ring as gmsh 2.2 with big_end_bore (inner) and clamp (outer) groups."""
+    points, triangles = annulus_mesh(inner, outer, n_theta, n_radial)
+    write_housing_mesh(path, points, triangles, {
+        "big_end_bore": ring_lines(n_theta, 0), "clamp": ring_lines(n_theta, n_radial)})
+    return path
+
+
+def kamaz_case(housing: dict | None = None, n_theta: int = 72, **solver) -> Case:
+    """The KamAZ-740 example with a built-in housing and the given film grid."""
+    data = tomllib.loads((EXAMPLES / "kamaz_740_truck_diesel.toml").read_text())
+    data["housing"] = {"model": "builtin", **(housing or {})}
+    data["solver"] = {**data.get("solver", {}), "n_theta": n_theta, **solver}
+    return Case.from_dict(data, base_dir=EXAMPLES)
+
+
+def lame_bore_displacement(inner: float, outer: float, pressure: float, youngs: float,
+                           poisson: float) -> float:
+    """Plane-stress Lamé ring, outer radius held, inner pressure: u_r(inner) [m].
+
+    u = A r + B / r with u(outer) = 0 and σ_r(inner) = −p (Timoshenko & Goodier §28).
+    """
+    a_coefficient = -pressure * (1.0 - poisson**2) / (
+        youngs * ((1.0 + poisson) + (1.0 - poisson) * outer**2 / inner**2))
+    return a_coefficient * (inner - outer**2 / inner)
