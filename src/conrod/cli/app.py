@@ -23,7 +23,7 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-COMMAND_MODULES = ("loads", "steady", "run", "mechanism")
+COMMAND_MODULES = ("loads", "steady", "run", "mechanism", "sweep")
 """Modules in :mod:`conrod.cli` that each define ``register(app)``."""
 
 F = TypeVar("F", bound=Callable[..., Any])
