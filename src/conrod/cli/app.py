@@ -23,7 +23,7 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-COMMAND_MODULES = ("loads", "steady", "run", "mechanism", "sweep")
+COMMAND_MODULES = ("loads", "steady", "run", "mechanism", "sweep", "report")
 """Modules in :mod:`conrod.cli` that each define ``register(app)``."""
 
 F = TypeVar("F", bound=Callable[..., Any])
