@@ -167,3 +167,28 @@ def test_a_failing_variant_is_a_row_not_a_crash(tmp_path, monkeypatch):
 
     frame = rows_to_frame([record_row(0, variant.axes, record, False)])
     assert frame.loc[0, "status"] == "failed" and "372.0 deg" in frame.loc[0, "error"]
+
+
+def test_cli_rerun_prints_best_and_worst(swept):
+    out, table, _ = swept
+    _register_commands()
+    result = CliRunner().invoke(app, ["sweep", str(STUDY), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "9 of 9 variants finished (9 from earlier runs)" in result.output
+    best = table.loc[table["h_min_m"].idxmax()]
+    line = next(x for x in result.output.splitlines() if "h_min_m" in x)
+    assert f"{best['h_min_m']:.4g}" in line
+
+
+def test_plot_sweep(swept, tmp_path):
+    out, _, _ = swept
+    _register_commands()
+    target = tmp_path / "h.png"
+    result = CliRunner().invoke(app, ["plot-sweep", str(out), "--x", "bearing.radial_clearance",
+                                      "--y", "h_min_m", "--hue", "engine.speed",
+                                      "--out", str(target)])
+    assert result.exit_code == 0, result.output
+    assert target.read_bytes().startswith(b"\x89PNG")
+    bad = CliRunner().invoke(app, ["plot-sweep", str(out), "--x", "bearing.radial_clearance",
+                                   "--y", "hmin_m"])
+    assert bad.exit_code == 2 and "did you mean 'h_min_m'" in bad.output

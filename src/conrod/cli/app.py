@@ -23,7 +23,7 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-COMMAND_MODULES = ("loads", "steady", "run", "mechanism", "sweep", "report")
+COMMAND_MODULES = ("loads", "steady", "run", "mechanism", "sweep", "report", "plot_sweep")
 """Modules in :mod:`conrod.cli` that each define ``register(app)``."""
 
 F = TypeVar("F", bound=Callable[..., Any])
