@@ -84,6 +84,7 @@ def big_study(n: int) -> tuple[float, float, int]:
 
 def main() -> None:
     quick = "--quick" in sys.argv
+    load_before = os.getloadavg()[0]
     lines = ["# Sweep benchmarks", "",
              f"{platform.processor() or platform.machine()}, {os.cpu_count()} cores "
              "(shared with other jobs while measured: ±30 %), "
@@ -105,6 +106,9 @@ def main() -> None:
               f"| {n} short-bearing variants, local cluster on all cores | {total:.0f} s | "
               f"{validated:.0f} s | {failed} | ≤ {TARGET_BIG_S:.0f} s for 1,000 |"]
     print(lines[-1], flush=True)
+    lines += ["", f"1-minute load average of the machine: {load_before:.1f} at the start, "
+              f"{os.getloadavg()[0]:.1f} at the end (2 cores: above 2 the workers share them "
+              "with other jobs, and the speed-up 1 → 2 workers is bounded accordingly)."]
     if not quick:
         (ROOT / "benchmarks" / "sweep_benchmarks.md").write_text("\n".join(lines) + "\n",
                                                                   encoding="utf-8")
