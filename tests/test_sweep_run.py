@@ -118,7 +118,8 @@ def test_killed_worker_loses_no_variant(tmp_path):
             on_record=kill_one)
     assert killed
     assert (table["status"] == "ok").all() and len(table) == 9
-    assert len([p for p in variants_dir(tmp_path).iterdir()]) == 9
+    assert _finished(tmp_path) == 9
+    assert len(list(variants_dir(tmp_path).iterdir())) == 9  # no temporary folder left
 
 
 def test_interrupted_sweep_keeps_finished_variants(tmp_path):
@@ -192,3 +193,24 @@ def test_plot_sweep(swept, tmp_path):
     bad = CliRunner().invoke(app, ["plot-sweep", str(out), "--x", "bearing.radial_clearance",
                                    "--y", "hmin_m"])
     assert bad.exit_code == 2 and "did you mean 'h_min_m'" in bad.output
+
+
+def test_mechanism_study_equals_the_mechanism_sweep(tmp_path):
+    """command = "mechanism": the seed-003 clearance-joint runs through the same machinery;
+    each row equals impact_statistics of the mechanism sweep at that operating point."""
+    from conrod.mechanism.setup import mechanism_case
+    from conrod.mechanism.sweep import impact_statistics
+
+    case_file = REPO / "examples" / "seed003_worn_rod_bearings.toml"
+    study = Study.from_dict({"base": str(case_file), "command": "mechanism",
+                             "override": {"clearance": {"cycles": 2}},
+                             "axis": [{"key": "engine.speed", "values": [3000.0]},
+                                      {"key": "clearance.load_scale", "values": [0.5, 1.0]}]})
+    table = Sweep(study, tmp_path, workers=1).run()
+    assert (table["status"] == "ok").all() and len(table) == 2
+    base = mechanism_case(study.variants()[0].case())
+    for _, row in table.iterrows():
+        stats = impact_statistics(base, row["engine.speed"], row["clearance.load_scale"])
+        assert row["max_impact_velocity_big_end_m_s"] == stats[0, 0]
+        assert row["max_impact_velocity_small_end_m_s"] == stats[0, 1]
+        assert row["impacts_per_cycle_big_end"] == stats[2, 0]

@@ -138,6 +138,8 @@ def test_hash_follows_content_and_version_not_formatting(tmp_path, monkeypatch):
     reformatted = Study.from_toml(study_file(tmp_path, axis, base=copy)).variants()
     assert [v.key for v in original] == [v.key for v in reformatted]
     assert original[0].key != original[1].key
+    case = original[0].case()
+    assert variant_module.variant_hash(case, "mechanism") != variant_module.variant_hash(case)
     monkeypatch.setattr(variant_module, "__version__", "99.0")
     assert Study.from_toml(study_file(tmp_path, axis)).variants()[0].key != original[0].key
 

@@ -90,6 +90,7 @@ class Sweep:
                     on_record(record)
                 if progress is not None:
                     progress(done, total)
+            remove_stale(self.out)  # temporary folders of workers that died mid-variant
         rows = [record_row(v.index, v.axes, records[v.key], v.key in cached) for v in variants]
         frame = rows_to_frame(rows)
         write_parquet(frame, self.out / TABLE_FILE)
@@ -103,14 +104,14 @@ class Sweep:
             for v in variants:
                 future = client.submit(run_variant, v.case_data, str(v.case_file.resolve()),
                                        v.key, v.axes, str(self.out.resolve()), self.figures,
-                                       key=f"conrod-variant-{v.key}", pure=False)
+                                       v.command, key=f"conrod-variant-{v.key}", pure=False)
                 futures[future] = v
             for future in as_completed(futures):
                 yield _result(future, futures[future])
 
     @contextlib.contextmanager
     def _client(self) -> Iterator[Any]:
-        from distributed import Client, LocalCluster
+        from distributed import Client
 
         if self.scheduler is not None:
             try:
@@ -121,18 +122,27 @@ class Sweep:
             with client:
                 yield client
             return
-        n = self.workers or os.cpu_count() or 1
-        with LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                          dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
-                Client(cluster) as client:
+        with local_client(self.workers or os.cpu_count() or 1) as client:
             yield client
 
     def _description(self, variants: list[Variant]) -> dict[str, Any]:
         spec = self.study.spec
         return {"title": spec.title, "study_file": str(self.study.path or ""),
-                "mode": spec.mode, "axes": [a.key for a in spec.axis],
+                "command": spec.command, "mode": spec.mode, "axes": [a.key for a in spec.axis],
                 "override": spec.override, "variants": len(variants),
                 "base_case": str(self.study.base_file(variants[0].axes).resolve())}
+
+
+@contextlib.contextmanager
+def local_client(workers: int) -> Iterator[Any]:
+    """A Dask client of a local cluster: ``workers`` single-threaded worker processes, no
+    dashboard, quiet logs; closed on exit."""
+    from distributed import Client, LocalCluster
+
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                      dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
+            Client(cluster) as client:
+        yield client
 
 
 def _result(future: Any, variant: Variant) -> dict[str, Any]:

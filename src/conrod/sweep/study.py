@@ -22,6 +22,9 @@
     key = "case"                                     # whole case files as an axis
     files = ["a.toml", "b.toml"]
 
+``command = "mechanism"`` makes every variant a ``conrod mechanism`` run (clearance joints,
+impacts) instead of the orbit of ``conrod run``.
+
 Every variant is resolved and validated (:meth:`Study.variants`) before anything runs;
 a bad key or value raises :class:`CaseError` naming the axis, the key and the value.
 """
@@ -85,6 +88,9 @@ class StudySection(Section):
 
     base: str | None = Field(default=None, description="Base case file, relative to the study [-]")
     mode: Literal["product", "zip"] = Field(default="product", description="How axes combine [-]")
+    command: Literal["run", "mechanism"] = Field(
+        default="run", description="What a variant computes: the orbit of 'conrod run' or the "
+        "clearance-joint mechanism of 'conrod mechanism' [-]")
     title: str = Field(default="", description="Free text shown on reports [-]")
     override: dict[str, Any] = Field(
         default_factory=dict, description="Case keys set in every variant (nested tables) [-]"
@@ -158,5 +164,6 @@ class Study:
 
     def variants(self) -> list[Variant]:
         """Every variant resolved and validated; the first bad one raises :class:`CaseError`."""
-        return [resolve_variant(self.base_file(point), point, self.spec.override, index)
+        return [resolve_variant(self.base_file(point), point, self.spec.override, index,
+                                self.spec.command)
                 for index, point in enumerate(self.points())]

@@ -24,6 +24,8 @@ CHARACTERISTICS = {
     "max_contact_force_N": "min",
     "max_wear_shell_m": "min",
     "max_wear_journal_m": "min",
+    "max_impact_velocity_big_end_m_s": "min",
+    "max_impact_velocity_small_end_m_s": "min",
 }
 """Characteristic column → which end is best (``"max"`` or ``"min"``)."""
 

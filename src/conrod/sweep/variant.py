@@ -32,7 +32,8 @@ class Variant:
     axes : dict  Axis key → value (case-file axis: the file name).
     case_data : dict  The case as a TOML-like dict (base file + override + axis values).
     case_file : Path  The file the variant starts from (relative names resolve next to it).
-    key : str  Hash of the resolved case and the conrod version (folder name).
+    key : str  Hash of the resolved case, the command and the conrod version (folder name).
+    command : str  ``"run"`` (orbit) or ``"mechanism"`` (clearance joints).
     """
 
     index: int
@@ -40,6 +41,7 @@ class Variant:
     case_data: dict[str, Any] = field(repr=False)
     case_file: Path
     key: str
+    command: str = "run"
 
     def case(self):
         """The validated :class:`conrod.cases.case.Case` of this variant."""
@@ -79,14 +81,14 @@ def _merge(target: dict[str, Any], extra: dict[str, Any]) -> None:
 
 
 def resolve_variant(case_file: Path, axes: dict[str, Any], override: dict[str, Any],
-                    index: int) -> Variant:
+                    index: int, command: str = "run") -> Variant:
     """Build and validate one variant; :class:`CaseError` names the axis, key and value."""
     from conrod.sweep.study import CASE_AXIS
 
     data = copy.deepcopy(_read_case_file(Path(case_file).resolve()))
     try:
         _merge(data, override)
-        _validate(data, case_file)
+        _validate(data, case_file, command)
     except CaseError as error:
         raise CaseError(f"study override on {case_file.name}: {error}") from None
     for key, value in axes.items():
@@ -94,31 +96,40 @@ def resolve_variant(case_file: Path, axes: dict[str, Any], override: dict[str, A
             continue
         try:
             set_dotted(data, key, value)
-            _validate(data, case_file)
+            _validate(data, case_file, command)
         except CaseError as error:
             raise CaseError(f"axis {key!r} = {value!r} (variant {index + 1}): {error}") from None
-    case = _validate(data, case_file)
+    case = _validate(data, case_file, command)
     shown = {k: (str(v) if k == CASE_AXIS else v) for k, v in axes.items()}
-    return Variant(index, shown, data, Path(case_file), variant_hash(case))
+    return Variant(index, shown, data, Path(case_file), variant_hash(case, command), command)
 
 
-def _validate(data: dict[str, Any], case_file: Path):
-    """The case of ``data`` checked as ``conrod run`` would (loads read, sections present)."""
+def _validate(data: dict[str, Any], case_file: Path, command: str):
+    """The case of ``data`` checked as the command would (loads read, sections present)."""
     from conrod.cases.case import Case
-    from conrod.simulation import Simulation
 
     case = Case.from_dict(data, base_dir=Path(case_file).resolve().parent, path=case_file)
-    Simulation(case)
+    if command == "mechanism":
+        from conrod.mechanism.setup import mechanism_case
+
+        mechanism_case(case)
+    else:
+        from conrod.simulation import Simulation
+
+        Simulation(case)
     return case
 
 
-def variant_hash(case) -> str:
-    """SHA-256 (first :data:`HASH_LENGTH` hex digits) of the case content and conrod version."""
+def variant_hash(case, command: str = "run") -> str:
+    """SHA-256 (first :data:`HASH_LENGTH` hex digits) of the case content, the command and
+    the conrod version."""
     content = case.model_dump(mode="json")
     files = {name: _file_digest(case.resolve(name)) for name in _strings(content)
              if _is_data_file(case, name)}
-    text = json.dumps({"case": content, "files": files, "conrod": __version__},
-                      sort_keys=True, default=str)
+    identity = {"case": content, "files": files, "conrod": __version__}
+    if command != "run":
+        identity["command"] = command
+    text = json.dumps(identity, sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()[:HASH_LENGTH]
 
 

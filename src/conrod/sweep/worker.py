@@ -49,23 +49,53 @@ class _TablesOnly:
         return write_wear_tables(self._contact, Path(out_dir))
 
 
+def write_mechanism_results(results, summary: dict[str, Any], out_dir: Path, *,
+                            figures: bool) -> None:
+    """Write one mechanism variant with the writer of ``conrod mechanism`` (with figures), or
+    its ``mechanism.csv`` and ``summary.json`` only."""
+    from conrod.cli.mechanism_command import mechanism_table, write_run_outputs
+    from conrod.io.atomic import write_csv, write_json
+
+    if figures:
+        write_run_outputs(results, summary, out_dir)
+        return
+    write_csv(out_dir / "mechanism.csv", mechanism_table(results))
+    write_json(out_dir / "summary.json", summary)
+
+
+def compute_into(case, command: str, out_dir: Path, figures: bool) -> None:
+    """Run the command's computation on ``case`` and write its files into ``out_dir``."""
+    if command == "mechanism":
+        from conrod.mechanism.setup import mechanism_case
+        from conrod.mechanism.simulation import simulate
+
+        base = mechanism_case(case)
+        results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)
+        summary = {"speed_rpm": base.speed_rpm, "load_scale": base.load_scale,
+                   **results.summary()}
+        write_mechanism_results(results, summary, out_dir, figures=figures)
+        return
+    from conrod.simulation import Simulation
+
+    write_variant_results(Simulation(case).run(), out_dir, figures=figures)
+
+
 def run_variant(case_data: dict[str, Any], case_file: str, key: str, axes: dict[str, Any],
-                out: str, figures: bool = False) -> dict[str, Any]:
+                out: str, figures: bool = False, command: str = "run") -> dict[str, Any]:
     """Compute one variant and store it under ``out/variants/<key>/``; return its record."""
     from conrod.cases.case import Case
-    from conrod.simulation import Simulation
     from conrod.sweep.store import commit_variant, new_variant_folder
 
     start = time.perf_counter()
     record: dict[str, Any] = {"hash": key, "axes": axes, "case_file": case_file,
-                              "conrod_version": __version__, "case": case_data}
+                              "command": command, "conrod_version": __version__,
+                              "case": case_data}
     tmp = None
     try:
         case = Case.from_dict(case_data, base_dir=Path(case_file).resolve().parent,
                               path=Path(case_file))
-        results = Simulation(case).run()
         tmp = new_variant_folder(Path(out), key)
-        write_variant_results(results, tmp, figures=figures)
+        compute_into(case, command, tmp, figures)
         record.update(status=STATUS_OK, error="", summary=_summary(tmp))
         record["wall_time_s"] = time.perf_counter() - start
         commit_variant(tmp, record)
