@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import textwrap
 from pathlib import Path
 
@@ -150,3 +151,15 @@ def test_shipped_study_is_valid():
     clearances = sorted({v.axes["bearing.radial_clearance"] for v in variants})
     assert np.allclose(clearances, [20e-6, 25e-6, 30e-6])
     assert all(v.case().solver.integrator == "quasi_static" for v in variants)
+
+
+def test_editing_the_case_file_changes_the_hash_in_the_same_session(tmp_path):
+    case = tmp_path / "case.toml"
+    text = BASE.read_text(encoding="utf-8")
+    case.write_text(text, encoding="utf-8")
+    axis = '[[axis]]\nkey = "lubricant.viscosity"\nvalues = [0.0065]\n'
+    before = Study.from_toml(study_file(tmp_path, axis, base=case)).variants()[0].key
+    case.write_text(text.replace("rod_mass = 0.65", "rod_mass = 0.70"), encoding="utf-8")
+    os.utime(case, ns=(0, 10**18))  # a new modification time even on coarse clocks
+    after = Study.from_toml(study_file(tmp_path, axis, base=case)).variants()[0].key
+    assert before != after

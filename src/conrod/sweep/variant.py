@@ -51,8 +51,17 @@ class Variant:
                               path=self.case_file)
 
 
-@functools.lru_cache(maxsize=64)
 def _read_case_file(path: Path) -> dict[str, Any]:
+    """The parsed case file (cached while its size and modification time stay the same)."""
+    try:
+        stat = path.stat()
+    except OSError as error:
+        raise CaseError(f"case file {str(path)!r}: cannot be read ({error.strerror})") from None
+    return _parse_case_file(path, stat.st_mtime_ns, stat.st_size)
+
+
+@functools.lru_cache(maxsize=64)
+def _parse_case_file(path: Path, mtime_ns: int, size: int) -> dict[str, Any]:
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))
     except OSError as error:
@@ -152,6 +161,11 @@ def _is_data_file(case, name: str) -> bool:
         return False
 
 
-@functools.lru_cache(maxsize=256)
 def _file_digest(path: Path) -> str:
+    stat = path.stat()
+    return _digest(path, stat.st_mtime_ns, stat.st_size)
+
+
+@functools.lru_cache(maxsize=256)
+def _digest(path: Path, mtime_ns: int, size: int) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
