@@ -23,6 +23,9 @@ td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: now
 figure { margin: 1em 0 1.6em 0; page-break-inside: avoid; }
 figure img { max-width: 100%; border: 1px solid #dde; }
 figcaption { font-size: .88em; color: #333; margin-top: .3em; }
+section.two figure { display: inline-block; width: 48.5%; vertical-align: top;
+                     margin-right: 1%; }
+div.wide { overflow-x: auto; }
 p.meta { color: #555; font-size: .85em; }
 caption { caption-side: bottom; text-align: left; font-size: .85em; color: #333; }
 .failed { color: #a00; }
@@ -54,6 +57,7 @@ class Section:
 
     title: str
     blocks: list[str | Table | Image] = field(default_factory=list)
+    two_columns: bool = False
 
 
 def render_page(title: str, subtitle: str, sections: list[Section]) -> str:
@@ -70,7 +74,8 @@ def render_page(title: str, subtitle: str, sections: list[Section]) -> str:
 
 
 def _section(section: Section, counter: list[int]) -> str:
-    parts = [f"<section><h2>{html.escape(section.title)}</h2>"]
+    kind = " class=\"two\"" if section.two_columns else ""
+    parts = [f"<section{kind}><h2>{html.escape(section.title)}</h2>"]
     for block in section.blocks:
         if isinstance(block, Table):
             parts.append(_table(block))
@@ -84,7 +89,7 @@ def _section(section: Section, counter: list[int]) -> str:
 
 
 def _table(table: Table) -> str:
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in table.columns)
+    head = "".join(f"<th>{_breakable(c)}</th>" for c in table.columns)
     rows = []
     for row in table.rows:
         cells = "".join(
@@ -93,7 +98,13 @@ def _table(table: Table) -> str:
             for column, cell in zip(table.columns, row, strict=True))
         rows.append(f"<tr>{cells}</tr>")
     caption = f"<caption>{html.escape(table.caption)}</caption>" if table.caption else ""
-    return f"<table>{caption}<thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
+    return (f"<div class=\"wide\"><table>{caption}<thead><tr>{head}</tr></thead>"
+            f"<tbody>{''.join(rows)}</tbody></table></div>")
+
+
+def _breakable(name: str) -> str:
+    """A column name that may wrap after '_' and '.' (long names with units)."""
+    return html.escape(name).replace("_", "_<wbr>").replace(".", ".<wbr>")
 
 
 def _figure(image: Image, number: int) -> str:

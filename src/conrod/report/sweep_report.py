@@ -64,9 +64,11 @@ def _study_section(frame: pd.DataFrame, study: dict, axes: list[str]) -> Section
 
 
 def _best_worst_section(frame: pd.DataFrame) -> Section:
+    found = best_and_worst(frame)
     rows = [[r["characteristic"], f"{r['best']:.4g}", r["best_variant"], f"{r['worst']:.4g}",
-             r["worst_variant"]] for r in best_and_worst(frame)]
-    best = ", ".join(f"{k}: {v}imum" for k, v in CHARACTERISTICS.items())
+             r["worst_variant"]] for r in found]
+    best = ", ".join(f"{r['characteristic']}: {CHARACTERISTICS[r['characteristic']]}imum"
+                     for r in found)
     return Section("Best and worst variants", [Table(
         ["characteristic (unit in the name)", "best", "variant", "worst", "variant "], rows,
         f"Among the finished variants; best is the {best}.", numeric=("best", "worst"))])
@@ -80,7 +82,7 @@ def _trend_section(frame: pd.DataFrame, axes: list[str]) -> Section:
     x = numeric[0] if numeric else axes[0]
     hue = next((a for a in axes if a != x), None)
     units = {key: unit_of(key) for key in axes}
-    section = Section("Trends")
+    section = Section("Trends", two_columns=True)
     for column in TREND_COLUMNS:
         if column not in frame or frame[column].isna().all():
             continue
