@@ -99,23 +99,48 @@ def test_sweep_variant_equals_conrod_run(swept, tmp_path, index):
     assert by_hand == swept_one
 
 
-def test_killed_worker_loses_no_variant(tmp_path):
-    """One of two workers is killed (SIGKILL) after the first finished variant; Dask
-    reschedules its work and the sweep still ends with 9 finished variants."""
+@pytest.fixture(scope="module")
+def two_workers():
+    """A local cluster of two worker processes and a client on it."""
     from distributed import Client, LocalCluster
 
     with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None,
                       silence_logs=50) as cluster, Client(cluster) as client:
-        pids = list(client.run(os.getpid).values())
-        killed = []
+        yield cluster, client
 
-        def kill_one(record):
-            if not killed:
-                os.kill(pids[0], signal.SIGKILL)
-                killed.append(record["hash"])
 
-        table = Sweep(STUDY, tmp_path, scheduler=cluster.scheduler_address).run(
-            on_record=kill_one)
+def test_film_table_cache_is_safe_under_concurrent_workers(two_workers, tmp_path):
+    """Workers building the same disk-cached film table at once: every one gets the same
+    table, the cache holds one complete file and no temporary file is left."""
+    from conrod.film.base import BearingGeometry
+    from conrod.film.short_bearing import ShortBearingFilm
+    from conrod.film.table import TabulatedFilm
+
+    _, client = two_workers
+    base = ShortBearingFilm(BearingGeometry(diameter=0.05, width=0.02, radial_clearance=25e-6))
+    futures = [client.submit(TabulatedFilm, base, n_eps=6, n_direction=12,
+                             cache_dir=str(tmp_path), pure=False) for _ in range(6)]
+    tables = [future.result().tables for future in futures]
+    assert [p.suffix for p in tmp_path.iterdir()] == [".npz"]
+    reference = TabulatedFilm(base, n_eps=6, n_direction=12, use_cache=False).tables
+    for table in tables:
+        for name, values in reference.items():
+            assert np.array_equal(table[name], values)
+
+
+def test_killed_worker_loses_no_variant(two_workers, tmp_path):
+    """One of two workers is killed (SIGKILL) after the first finished variant; Dask
+    reschedules its work and the sweep still ends with 9 finished variants."""
+    cluster, client = two_workers
+    pids = list(client.run(os.getpid).values())
+    killed = []
+
+    def kill_one(record):
+        if not killed:
+            os.kill(pids[0], signal.SIGKILL)
+            killed.append(record["hash"])
+
+    table = Sweep(STUDY, tmp_path, scheduler=cluster.scheduler_address).run(on_record=kill_one)
     assert killed
     assert (table["status"] == "ok").all() and len(table) == 9
     assert _finished(tmp_path) == 9
