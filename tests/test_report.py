@@ -106,7 +106,8 @@ def test_run_report_in_a_browser(run_folder, tmp_path):
     (html_file,) = write_report(run_folder, tmp_path / "run.html", case_file=CASE)
     html = html_file.read_text(encoding="utf-8")
     assert_self_contained(html)
-    for heading in ("Summary", "Case inputs", "Load on the bearing", "Journal-centre orbit",
+    for heading in ("Summary", "Case inputs", "Engine load diagrams", "Load on the bearing",
+                    "Journal-centre orbit",
                     "Minimum film thickness and maximum pressure", "Friction and oil flow",
                     "Contact and wear"):
         assert f"<h2>{heading}</h2>" in html
@@ -162,7 +163,9 @@ def test_variant_folder_without_figures_gets_drawn_figures(sweep_folder, tmp_pat
     variant = next(p for p in (sweep_folder / "variants").iterdir())
     html = build_report(variant)
     assert "Sweep variant: bearing.radial_clearance" in html
-    assert html.count("<img ") == 5  # load, orbit, h_min/p_max, friction/flow, contact/wear
+    # engine loads (polar, over the cycle, wear diagram) from the variant's case; bearing
+    # load, orbit, h_min/p_max, friction/flow, contact/wear drawn from its tables
+    assert html.count("<img ") == 8
 
 
 def test_pdf(run_folder, tmp_path):

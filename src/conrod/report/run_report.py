@@ -130,6 +130,9 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
         sections[0].blocks.insert(0, "Sweep variant: " + ", ".join(
             f"{k} = {v}" for k, v in record["axes"].items()))
     sections.append(inputs_section(case_file, case_data, tuple(record.get("axes", {}))))
+    engine_figures = engine_load_images(case_file, case_data)
+    if engine_figures:
+        sections.append(Section("Engine load diagrams", engine_figures))
     if cycle is not None:
         sections.append(Section("Load on the bearing", [Image(
             "Load diagram", "Load pressing the journal on the shell in the film frame, in kN: "
@@ -152,8 +155,45 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
             ["file", "title", "caption"],
             [[t["file"], t.get("title", ""), t.get("caption", "")] for t in manifest["tables"]],
             "Tables written into the results folder.")]))
-    title = summary.get("title") or f"conrod results: {folder.name}"
+    title = (case_data or {}).get("title") or f"conrod results: {folder.name}"
     return title, sections
+
+
+def engine_load_images(case_file: Path | None, case_data: dict | None) -> list[Image]:
+    """Polar load diagram, loads over the cycle and wear diagram of an ``[engine]`` case."""
+    from conrod.cases.case import Case
+    from conrod.errors import ConrodError
+    from conrod.loads.engine_loads import compute_engine_loads
+    from conrod.plotting import loads_plots
+    from conrod.plotting.report_plots import png_bytes
+
+    try:
+        if case_data is not None:
+            base = case_file.resolve().parent if case_file else None
+            case = Case.from_dict(case_data, base_dir=base, path=case_file)
+        elif case_file is not None:
+            case = Case.from_toml(case_file)
+        else:
+            return []
+        if case.engine is None:
+            return []
+        loads = compute_engine_loads(case)
+    except ConrodError:
+        return []
+    return [
+        Image("Polar load diagram of the crankpin", "Rod force on the crankpin in the crank "
+              "frame in kN (tangential against radial), poles O and O' shifted by the "
+              "rotating-mass force, labels give the crank angle in degrees; right: the low "
+              "loads enlarged.", png_bytes(loads_plots.polar_load_diagram(loads))),
+        Image("Big-end load over the cycle", "Load magnitude with its mean (top) and gas, "
+              "radial and tangential forces (bottom) in kN against crank angle in degrees "
+              "from firing TDC.", png_bytes(loads_plots.load_vs_crank_angle(loads))),
+        Image("Wear diagram of the crankpin", "Relative wear of the journal in the crank "
+              "frame (strips proportional to the load, ±60° about each load direction; "
+              "dimensionless, scaled to the largest) around the crankpin, angles in degrees "
+              "from the outward crank radius; the arrow marks the oil-hole direction.",
+              png_bytes(loads_plots.wear_diagram_figure(loads))),
+    ]
 
 
 def _file_image(folder: Path, name: str, entry: tuple) -> Image:
