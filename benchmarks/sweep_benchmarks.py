@@ -54,7 +54,7 @@ def throughput(workers: int, solver: dict, n: int) -> tuple[float, int]:
 
     from conrod.sweep import Sweep
 
-    with LocalCluster(n_workers=workers, threads_per_worker=1, dashboard_address=None,
+    with LocalCluster(n_workers=workers, threads_per_worker=1, dashboard_address=":0",
                       silence_logs=50) as cluster, Client(cluster):
         address = cluster.scheduler_address
         with tempfile.TemporaryDirectory() as out:

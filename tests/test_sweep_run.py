@@ -104,7 +104,7 @@ def two_workers():
     """A local cluster of two worker processes and a client on it."""
     from distributed import Client, LocalCluster
 
-    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None,
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=":0",
                       silence_logs=50) as cluster, Client(cluster) as client:
         yield cluster, client
 
@@ -239,3 +239,22 @@ def test_mechanism_study_equals_the_mechanism_sweep(tmp_path):
         assert row["max_impact_velocity_big_end_m_s"] == stats[0, 0]
         assert row["max_impact_velocity_small_end_m_s"] == stats[0, 1]
         assert row["impacts_per_cycle_big_end"] == stats[2, 0]
+
+
+def test_local_cluster_starts_when_the_default_dashboard_port_is_taken():
+    """Another Dask cluster on the machine holds port 8787: ours still starts, no warning."""
+    import socket
+
+    from conrod.sweep.runner import local_client
+
+    holder = socket.socket()
+    try:
+        holder.bind(("0.0.0.0", 8787))
+        holder.listen()
+    except OSError:
+        pass  # already taken by someone else: the same situation
+    try:
+        with local_client(1) as client:
+            assert client.submit(sum, [1, 2], pure=False).result() == 3
+    finally:
+        holder.close()

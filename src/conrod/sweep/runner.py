@@ -135,12 +135,13 @@ class Sweep:
 
 @contextlib.contextmanager
 def local_client(workers: int) -> Iterator[Any]:
-    """A Dask client of a local cluster: ``workers`` single-threaded worker processes, no
-    dashboard, quiet logs; closed on exit."""
+    """A Dask client of a local cluster: ``workers`` single-threaded worker processes, quiet
+    logs, closed on exit. The scheduler's web server takes a free port (``:0``): with the
+    default 8787 a second cluster on the machine fails to start."""
     from distributed import Client, LocalCluster
 
     with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                      dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
+                      dashboard_address=":0", silence_logs=logging.ERROR) as cluster, \
             Client(cluster) as client:
         yield client
 
