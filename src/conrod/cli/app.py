@@ -23,7 +23,9 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-COMMAND_MODULES = ("loads", "steady", "run", "mechanism", "housing", "stress")
+COMMAND_MODULES = (
+    "loads", "steady", "run", "mechanism", "housing", "stress", "sweep", "report", "plot_sweep",
+)
 """Modules in :mod:`conrod.cli` that each define ``register(app)``."""
 
 F = TypeVar("F", bound=Callable[..., Any])

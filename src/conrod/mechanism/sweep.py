@@ -7,14 +7,14 @@ The most informative diagnostic regime is the one where the worn joint knocks ha
 
 with v_floor = 1 mm/s so that a silent other joint does not give an infinite ratio.
 Runs are independent and deterministic (≈ 0.3–0.6 s each, compiled); they run one after
-the other or, with ``jobs`` > 1, in worker processes with the same result.
+the other or, with ``jobs`` > 1, on a local Dask cluster with the same result. A study file
+with ``command = "mechanism"`` runs the same kind of sweep through ``conrod sweep`` (any case
+keys as axes, cached variant folders, ``sweep.parquet``).
 """
 
 from __future__ import annotations
 
-import multiprocessing
 from collections.abc import Callable, Iterable
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass
 
 import numpy as np
@@ -93,16 +93,22 @@ def run_sweep(
 ) -> SweepResults:
     """Run every (speed, load) pair, speed varying slowest; ``progress(done, total)``.
 
-    ``jobs`` > 1 runs the modes in that many worker processes; the table is the same
-    (each run is deterministic and lands in its own row).
+    ``jobs`` > 1 runs the modes on a local Dask cluster of that many worker processes (the
+    machinery of :mod:`conrod.sweep`); the table is the same (each run is deterministic and
+    lands in its own row).
     """
+    from distributed import as_completed
+
     loads = [float(load) for load in load_scales]
     pairs = [(float(speed), load) for speed in speeds_rpm for load in loads]
     rows = np.zeros((len(pairs), 3, 2))
     if jobs > 1:
-        context = multiprocessing.get_context("spawn")
-        with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
-            futures = [pool.submit(impact_statistics, base, *pair) for pair in pairs]
+        from conrod.sweep.runner import local_client
+
+        with local_client(jobs) as client:
+            futures = client.map(impact_statistics, [base] * len(pairs),
+                                 [pair[0] for pair in pairs], [pair[1] for pair in pairs],
+                                 pure=False)
             for done, _ in enumerate(as_completed(futures), start=1):
                 if progress is not None:
                     progress(done, len(pairs))
