@@ -38,7 +38,7 @@ ROWS = [
 def time_row(film: str, integrator: str, overrides: dict) -> tuple[str, str, str]:
     """(build time, time per cycle, result) of one configuration."""
     from conrod import Case, Simulation
-    from conrod.dynamics import initial_state, integrate_cycle
+    from conrod.orbit import initial_state, integrate_cycle
 
     case = Case.from_toml(CASE)
     start = time.perf_counter()

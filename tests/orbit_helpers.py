@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from conrod.cases.solver import SolverSection
-from conrod.dynamics import OrbitProblem
+from conrod.orbit import OrbitProblem
 from conrod.film.base import BearingGeometry
 from conrod.film.short_bearing import ShortBearingFilm
 from conrod.loads.cycle import LoadCycle

@@ -17,9 +17,9 @@ import numpy as np
 import pytest
 
 from conrod.cases.solver import SolverSection
-from conrod.dynamics.characteristics import cycle_characteristics
-from conrod.dynamics.periodic import periodic_orbit
-from conrod.dynamics.problem import OrbitProblem
+from conrod.orbit.characteristics import cycle_characteristics
+from conrod.orbit.periodic import periodic_orbit
+from conrod.orbit.problem import OrbitProblem
 from conrod.film.base import BearingGeometry, Groove
 from conrod.film.mass_conserving import MassConservingFilm
 from conrod.film.reynolds import ReynoldsFilm

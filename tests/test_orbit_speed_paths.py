@@ -9,9 +9,9 @@ import math
 import numpy as np
 import pytest
 
-import conrod.dynamics.quasi_static as qs
-from conrod.dynamics import OrbitState
-from conrod.dynamics import squeeze_velocity as sv
+import conrod.orbit.quasi_static as qs
+from conrod.orbit import OrbitState
+from conrod.orbit import squeeze_velocity as sv
 from conrod.film.base import BearingGeometry, FilmState, Groove
 from conrod.film.reynolds import ReynoldsFilm
 from orbit_helpers import SPEED, engine_like_load, geometry, load_cycle, short_problem
@@ -154,7 +154,7 @@ SHORT_STATES = [  # x, y [m], W_x, W_y [N], ω_j, ω_b [rad/s]
 
 @pytest.mark.parametrize("state", SHORT_STATES)
 def test_short_velocity_equals_newton_and_balances_the_load(state):
-    from conrod.dynamics.short_velocity import newton_short_velocity, short_velocity
+    from conrod.orbit.short_velocity import newton_short_velocity, short_velocity
     from conrod.film.short_bearing_kernel import short_bearing_force
 
     x, y, wx, wy, wj, wb = state
@@ -170,7 +170,7 @@ def test_short_velocity_equals_newton_and_balances_the_load(state):
 
 def test_short_velocity_without_load_is_the_half_speed_whirl():
     """No load, no film force: ė = ω̄ × e (SPEC pitfall: the whirl carries nothing)."""
-    from conrod.dynamics.short_velocity import short_velocity
+    from conrod.orbit.short_velocity import short_velocity
 
     vx, vy, *_ = short_velocity(10e-6, -4e-6, 0.0, 0.0, SPEED, 30.0, *SHORT, 1.0)
     mean = 0.5 * (SPEED + 30.0)
@@ -181,7 +181,7 @@ def test_short_velocity_without_load_is_the_half_speed_whirl():
 def test_short_unit_force_direction_derivative_and_homogeneity(eps):
     """dg/dα in closed form (arc-end terms vanish with the pressure) against central
     differences of g; F(v_s) = |v_s| F(v̂_s) in the ω̄ frame (both used by the inversion)."""
-    from conrod.dynamics.short_velocity import unit_force_direction
+    from conrod.orbit.short_velocity import unit_force_direction
     from conrod.film.short_bearing_kernel import short_bearing_force
 
     h = 1e-3
@@ -202,7 +202,7 @@ def test_short_unit_force_direction_derivative_and_homogeneity(eps):
 
 def test_short_force_angle_is_monotone_and_brackets_the_root():
     """The inversion's bracket: φ(α) increases (dφ/dα > 0) and |φ − α − π/2| < π/2."""
-    from conrod.dynamics.short_velocity import unit_force_direction
+    from conrod.orbit.short_velocity import unit_force_direction
 
     for eps in (0.0, 0.5, 0.98, 0.9999):
         for alpha in np.linspace(-math.pi, math.pi, 721):

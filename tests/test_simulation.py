@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from conrod import Case, Simulation
-from conrod.dynamics.heat_balance import effective_temperature
+from conrod.orbit.heat_balance import effective_temperature
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmState
 from conrod.film.short_bearing import ShortBearingFilm

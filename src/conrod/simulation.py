@@ -22,10 +22,10 @@ from typing import Any
 from conrod.cases.case import Case
 from conrod.contact.analysis import analyse_contact
 from conrod.contact.asperity import kernel_parameters
-from conrod.dynamics.characteristics import cycle_characteristics
-from conrod.dynamics.heat_balance import effective_temperature, relaxed_update
-from conrod.dynamics.periodic import PeriodicOrbit, periodic_orbit
-from conrod.dynamics.problem import OrbitProblem
+from conrod.orbit.characteristics import cycle_characteristics
+from conrod.orbit.heat_balance import effective_temperature, relaxed_update
+from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
+from conrod.orbit.problem import OrbitProblem
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmState
 from conrod.film.factory import build_film_model

@@ -5,7 +5,7 @@ Viscosity is either constant (``viscosity``) or given by the Vogel law
 .. math:: μ(T) = a \\exp\\left(\\frac{b}{T + c}\\right),  T in °C,
 
 with ``vogel_a`` [Pa s], ``vogel_b`` [°C], ``vogel_c`` [°C]. The effective film temperature
-comes from the heat balance of :mod:`conrod.dynamics.heat_balance`, starting from
+comes from the heat balance of :mod:`conrod.orbit.heat_balance`, starting from
 ``supply_temperature`` [°C].
 """
 

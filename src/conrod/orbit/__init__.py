@@ -1,8 +1,8 @@
 """Journal-centre orbit over the cycle: equations of motion, integrators, hard contact,
 periodicity loop and heat balance (issue 4, SPEC S3; seed 000 §3, seed 004 §4.1–4.2)."""
 
-from conrod.dynamics.periodic import PeriodicOrbit, integrate_cycle, periodic_orbit
-from conrod.dynamics.problem import OrbitProblem, OrbitState, initial_state
+from conrod.orbit.periodic import PeriodicOrbit, integrate_cycle, periodic_orbit
+from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
 
 __all__ = [
     "OrbitProblem", "OrbitState", "PeriodicOrbit", "initial_state", "integrate_cycle",

@@ -18,9 +18,9 @@ import numba as nb
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from conrod.dynamics.contact import contact_acceleration, contact_normal_force
-from conrod.dynamics.problem import OrbitProblem, OrbitState, load_table, periodic_sample
-from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.orbit.contact import contact_acceleration, contact_normal_force
+from conrod.orbit.problem import OrbitProblem, OrbitState, load_table, periodic_sample
+from conrod.orbit.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
 from conrod.film.short_bearing_kernel import short_bearing_force
 

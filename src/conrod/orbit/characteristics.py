@@ -16,8 +16,8 @@ import math
 
 import numpy as np
 
-from conrod.dynamics.problem import OrbitProblem
-from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.orbit.problem import OrbitProblem
+from conrod.orbit.trajectory import CycleTrajectory
 from conrod.film.base import FilmResult, FilmState
 from conrod.results.cycle_results import CycleResults
 

@@ -13,11 +13,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from conrod.dynamics.adaptive import adaptive_cycle
-from conrod.dynamics.problem import OrbitProblem, OrbitState, initial_state
-from conrod.dynamics.quasi_static import quasi_static_cycle
-from conrod.dynamics.rk2 import rk2_cycle
-from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.orbit.adaptive import adaptive_cycle
+from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
+from conrod.orbit.quasi_static import quasi_static_cycle
+from conrod.orbit.rk2 import rk2_cycle
+from conrod.orbit.trajectory import CycleTrajectory
 from conrod.errors import CaseError
 
 

@@ -3,8 +3,8 @@ solves the force balance F_film(e, ė) + W = 0 at every instant, and only the po
 integrated (Heun, fixed step ``[solver] quasi_static_step_deg``).
 
 The velocity comes, in compiled Heun loops, from Booker's reduction to a 1-D direction
-solve for the short bearing (:mod:`conrod.dynamics.short_velocity`) and for a rigid
-Reynolds film without supply/cavitation pressure (:mod:`conrod.dynamics.squeeze_velocity`),
+solve for the short bearing (:mod:`conrod.orbit.short_velocity`) and for a rigid
+Reynolds film without supply/cavitation pressure (:mod:`conrod.orbit.squeeze_velocity`),
 and from the table's exact inverse for the table and mobility films; otherwise from the
 film model's ``journal_velocity`` or a damped Newton solve on ``force``.
 On the contact circle the outward normal velocity is removed (seed 004 eqs 4.1.5–4.1.8) and
@@ -18,20 +18,20 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import project_onto_circle, remove_normal_velocity
-from conrod.dynamics.problem import FilmHistory, OrbitProblem, OrbitState
-from conrod.dynamics.short_velocity import (
+from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
+from conrod.orbit.problem import FilmHistory, OrbitProblem, OrbitState
+from conrod.orbit.short_velocity import (
     NEWTON_ITERATIONS,
     newton_short_velocity,
     short_bearing_cycle,
 )
-from conrod.dynamics.squeeze_velocity import (
+from conrod.orbit.squeeze_velocity import (
     squeeze_applies,
     squeeze_cycle,
     table_applies,
     table_cycle,
 )
-from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.orbit.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
 from conrod.film.table_kernel import table_force
@@ -101,7 +101,7 @@ def quasi_static_cycle(
     problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float
 ) -> CycleTrajectory:
     """One cycle of the massless orbit from ``state`` (only its position is used)."""
-    from conrod.dynamics.rk2 import _step_grid
+    from conrod.orbit.rk2 import _step_grid
 
     phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
     load_x, load_y = problem.loads.load(phi)

@@ -14,9 +14,9 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import contact_acceleration
-from conrod.dynamics.problem import FilmHistory, OrbitProblem, OrbitState
-from conrod.dynamics.trajectory import CycleTrajectory
+from conrod.orbit.contact import contact_acceleration
+from conrod.orbit.problem import FilmHistory, OrbitProblem, OrbitState
+from conrod.orbit.trajectory import CycleTrajectory
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmState
 from conrod.film.short_bearing_kernel import short_bearing_force

@@ -15,7 +15,7 @@ warm-started from the previous solve), then |v_s| = s_0|W|/|F(s_0 v̂(β))| and
 
 The film solve is the compiled projected multigrid of :mod:`conrod.film.reynolds_multigrid`
 on the same grid, masks and mid-plane symmetry as :class:`~conrod.film.reynolds.ReynoldsFilm`,
-warm-started from the last field; the Heun loop of :mod:`conrod.dynamics.quasi_static`
+warm-started from the last field; the Heun loop of :mod:`conrod.orbit.quasi_static`
 runs compiled around it.
 
 [1] J.F. Booker, "Dynamically loaded journal bearings: mobility method of solution",
@@ -29,7 +29,7 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import constrain_and_record, project_onto_circle
+from conrod.orbit.contact import constrain_and_record, project_onto_circle
 from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve
 from conrod.film.table_kernel import mobility_velocity
 
@@ -195,7 +195,7 @@ def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, co
 def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
                            record_every, pressure, cos_t, sin_t, g, clearance, contact_radius,
                            speed, tolerance, max_cycles, beta, slope, whirl_factor):
-    """Compiled Heun loop of :func:`conrod.dynamics.quasi_static.quasi_static_cycle` with
+    """Compiled Heun loop of :func:`conrod.orbit.quasi_static.quasi_static_cycle` with
     :func:`squeeze_velocity`: rows (x, y, vx, vy, 0, 0, contact) every ``record_every``
     steps, end state (x, y, vx, vy, β, slope) and the worst angle residual [rad].
     ``whirl_factor`` κ = sin Δθ/Δθ: the discrete wedge term of ``ReynoldsFilm`` (central

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from conrod.dynamics.problem import OrbitState
+from conrod.orbit.problem import OrbitState
 
 
 @dataclass

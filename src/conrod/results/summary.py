@@ -15,7 +15,7 @@ def summarise(
 ) -> RunSummary:
     """Minimum h_min and maximum p_max with their angles, cycle means, diagnostics.
 
-    ``orbit``: :class:`conrod.dynamics.PeriodicOrbit`; ``problem``: the final
+    ``orbit``: :class:`conrod.orbit.PeriodicOrbit`; ``problem``: the final
     :class:`OrbitProblem`; ``solver``: the ``[solver]`` section used.
     """
     i_h, i_p = int(np.argmin(cycle.h_min)), int(np.argmax(cycle.p_max))
