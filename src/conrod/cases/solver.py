@@ -10,9 +10,8 @@ from typing import Literal
 from pydantic import Field
 
 from conrod.cases.base import Section
+from conrod.registry import FilmName, IntegratorName
 
-FilmName = Literal["short", "mobility", "reynolds", "mass_conserving", "table"]
-IntegratorName = Literal["adaptive", "rk2", "quasi_static"]
 AdaptiveMethod = Literal["Radau", "BDF", "LSODA"]
 
 

@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
+from conrod.film.capabilities import CompiledKernel
 from conrod.film.table import TabulatedFilm
 from conrod.film.table_kernel import inverse_direction, mobility_velocity, unit_force
 
@@ -74,6 +75,11 @@ class MobilityFilm:
         )
 
     @classmethod
+    def from_settings(cls, geometry: BearingGeometry, settings: Any) -> MobilityFilm:
+        """Map of a Reynolds film on the ``[solver]`` grid ``n_theta`` × ``n_z``."""
+        return cls(geometry, n_theta=int(settings.n_theta), n_z=int(settings.n_z))
+
+    @classmethod
     def short_bearing(cls, geometry: BearingGeometry, **kwargs: Any) -> MobilityFilm:
         """Booker's short-bearing mobility (closed-form squeeze force, densely tabulated)."""
         from conrod.film.short_bearing import ShortBearingFilm
@@ -89,6 +95,10 @@ class MobilityFilm:
     def initial_history(self) -> None:
         """Memoryless."""
         return None
+
+    def compiled_kernel(self) -> CompiledKernel:
+        """The map's compiled force and exact massless inverse (those of its table)."""
+        return self.table.compiled_kernel()
 
     def force(self, state: FilmState) -> tuple[float, float]:
         """Film force on the journal (F_x, F_y) [N] from the mobility map (forward use)."""

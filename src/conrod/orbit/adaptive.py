@@ -18,11 +18,10 @@ import numba as nb
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from conrod.errors import ConvergenceError
 from conrod.orbit.contact import contact_acceleration, contact_normal_force
 from conrod.orbit.problem import OrbitProblem, OrbitState, load_table, periodic_sample
 from conrod.orbit.trajectory import CycleTrajectory
-from conrod.errors import ConvergenceError
-from conrod.film.short_bearing_kernel import short_bearing_force
 
 FALLBACK_METHODS = ("Radau", "BDF", "LSODA")
 """Methods tried in turn when the chosen one fails on a segment (step-size collapse) [-]."""
@@ -31,17 +30,15 @@ MAX_PHASE_CHANGES = 5000
 """Most contact entries + exits per cycle before giving up (chattering) [-]."""
 
 
-@nb.njit(cache=True)
-def free_rhs_short_bearing(phi, u, angles, table, cycle, viscosity, radius, width, clearance,
-                           omega, mass_x, mass_y):
-    """Compiled free-phase right-hand side du/dφ for the short bearing (same as
-    :meth:`_Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω))."""
+@nb.njit  # function-typed argument: specialised per film and process, not cached
+def free_rhs_compiled(force, params, phi, u, angles, table, cycle, viscosity, clearance,
+                      omega, mass_x, mass_y):
+    """Compiled free-phase right-hand side du/dφ for a film with a compiled ``force`` (same
+    as :meth:`_Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω))."""
     row = periodic_sample(phi, angles, table, cycle)
     c_omega = clearance * omega
-    fx, fy = short_bearing_force(
-        u[0] * clearance, u[1] * clearance, u[2] * c_omega, u[3] * c_omega,
-        row[2] + row[3], viscosity, radius, width, clearance,
-    )
+    fx, fy = force(u[0] * clearance, u[1] * clearance, u[2] * c_omega, u[3] * c_omega,
+                   row[2] + row[3], viscosity, params)
     scale = c_omega * omega
     out = np.empty(4)
     out[0], out[1] = u[2], u[3]
@@ -53,9 +50,11 @@ def free_rhs_short_bearing(phi, u, angles, table, cycle, viscosity, radius, widt
 class _Phases:
     """Right-hand sides and events of the free and the contact phase."""
 
-    def __init__(self, problem: OrbitProblem):
+    def __init__(self, problem: OrbitProblem, state: OrbitState):
         self.p = problem
-        self.force = problem.force_function()
+        self.session = problem.session(state.film_memory)
+        self.force = problem.force_function(self.session)
+        self.kernel = problem.compiled_force
         self.c = problem.clearance
         self.rc = problem.contact_radius
         self.omega = problem.crank_speed
@@ -72,12 +71,11 @@ class _Phases:
         return wx + fx, wy + fy, (wj - wb) * self.radius
 
     def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:
-        if self.p.is_short_bearing:
-            g = self.p.film.geometry
-            return free_rhs_short_bearing(
-                float(phi), np.asarray(u, dtype=float), self.angles, self.table,
-                float(self.loads.cycle), float(self.p.viscosity), g.radius, g.width, self.c,
-                float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
+        if self.kernel is not None:
+            return free_rhs_compiled(
+                self.kernel.force, self.kernel.params, float(phi), np.asarray(u, dtype=float),
+                self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),
+                self.c, float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
             )
         c, w = self.c, self.omega
         x, y, vx, vy = u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w
@@ -124,7 +122,7 @@ def adaptive_cycle(
     problem: OrbitProblem, state: OrbitState, settings, output_step_deg: float
 ) -> CycleTrajectory:
     """One cycle from ``state`` at φ = 0 with ``settings`` = the ``[solver]`` section."""
-    phases = _Phases(problem)
+    phases = _Phases(problem, state)
     phi_out = problem.output_angles(output_step_deg)
     table = np.zeros((phi_out.size, 7))
     end = problem.loads.cycle
@@ -185,10 +183,11 @@ def _scaled(state: OrbitState, c: float, w: float, phases: _Phases) -> np.ndarra
 
 
 def _state(phases: _Phases, u: np.ndarray, contact: bool) -> OrbitState:
+    memory = phases.session.snapshot()
     if contact:
-        return OrbitState(*phases.on_circle(u), True)
+        return OrbitState(*phases.on_circle(u), True, memory)
     c, w = phases.c, phases.omega
-    return OrbitState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, False)
+    return OrbitState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, False, memory)
 
 
 def _switch(phases: _Phases, phi: float, u: np.ndarray, contact: bool):

@@ -33,49 +33,15 @@ from __future__ import annotations
 import math
 
 import numba as nb
-import numpy as np
+
+from conrod.film.massless import (  # noqa: F401  (the contact-circle rules)
+    constrain_and_record,
+    project_onto_circle,
+    remove_normal_velocity,
+)
 
 FRICTION_REGULARISATION_SPEED = 1.0e-4
 """Sliding speed below which dry friction is regularised (tanh) [m/s]."""
-
-
-@nb.njit(cache=True)
-def project_onto_circle(x: float, y: float, radius: float) -> tuple[float, float, bool]:
-    """Seed eqs 4.1.1–4.1.3: (x, y)/Z if Z = |e|/radius > 1; returns (x, y, projected)."""
-    z = math.hypot(x, y) / radius
-    if z > 1.0:
-        return x / z, y / z, True
-    return x, y, False
-
-
-@nb.njit(cache=True)
-def constrain_and_record(
-    x: float, y: float, vx: float, vy: float, contact_radius: float,
-    step: int, record_every: int, out: np.ndarray,
-) -> tuple[float, float]:
-    """Shared step of the compiled massless Heun loops: on the contact circle drop an outward
-    normal velocity (eqs 4.1.5–4.1.8); every ``record_every`` steps store the row
-    (x, y, v_x, v_y, ·, ·, contact) in ``out``. Returns the admissible (v_x, v_y) [m/s]."""
-    contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
-    if contact and x * vx + y * vy > 0.0:
-        vx, vy = remove_normal_velocity(x, y, vx, vy)
-    if step % record_every == 0 and step // record_every < out.shape[0]:
-        row = step // record_every
-        out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
-        out[row, 6] = 1.0 if contact else 0.0
-    return vx, vy
-
-
-@nb.njit(cache=True)
-def remove_normal_velocity(x: float, y: float, vx: float, vy: float) -> tuple[float, float]:
-    """Seed eqs 4.1.5–4.1.8: keep only the tangential velocity V_k t̂ [m/s]."""
-    e = math.hypot(x, y)
-    if e == 0.0:
-        return vx, vy
-    nx = x / e
-    ny = y / e
-    v_k = vy * nx - vx * ny
-    return -v_k * ny, v_k * nx
 
 
 @nb.njit(cache=True)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -21,8 +22,8 @@ class CycleTrajectory:
     in_contact : ndarray  Journal on the contact circle [-].
     end_state : OrbitState  State at the end of the cycle (start of the next).
     steps : int  Integrator steps taken [-].
-    film_history : list of ndarray or None  Film memory (mass-conserving film fraction ϑ)
-        at each output angle, for films with memory [-].
+    film_memory : list or None  Film memory (warm start, mass-conserving film fraction ϑ)
+        at each output angle, for films with memory that a Python loop carried.
     """
 
     crank_angle: np.ndarray
@@ -35,7 +36,7 @@ class CycleTrajectory:
     in_contact: np.ndarray
     end_state: OrbitState
     steps: int = 0
-    film_history: list[np.ndarray] | None = None
+    film_memory: list[Any] | None = None
 
     @classmethod
     def from_table(

@@ -7,13 +7,13 @@ Every field documents its unit in brackets. No plotting and no I/O here
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, fields
 from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
 
 
-@dataclass
+@dataclass(frozen=True)
 class CycleResults:
     """Characteristics of the periodic orbit at each output crank angle (seed 002 Table 1)."""
 
@@ -83,7 +83,7 @@ class CycleResults:
         return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
-@dataclass
+@dataclass(frozen=True)
 class RunSummary:
     """Cycle characteristics (seed 002 Table 1 'cycle' columns) and run diagnostics."""
 
@@ -125,7 +125,7 @@ class RunSummary:
     """Heat-balance iterations performed [-]."""
     max_contact_force: float = 0.0
     """Largest hard-contact force over the cycle [N]."""
-    warnings: list[str] = field(default_factory=list)
+    warnings: tuple[str, ...] = ()
     """Human-readable warnings (non-periodic orbit, ...) [-]."""
 
     def as_json_items(self) -> dict[str, Any]:
@@ -167,7 +167,7 @@ class ContactAnalysis(Protocol):
         ...
 
 
-@dataclass
+@dataclass(frozen=True)
 class RunResults:
     """Everything ``Simulation(case).run()`` returns."""
 

@@ -11,12 +11,13 @@ from conrod.results.cycle_results import CycleResults, RunSummary
 
 def summarise(
     cycle: CycleResults, orbit, problem, solver, temperature: float | None,
-    cycles: int, thermal_iterations: int,
+    cycles: int, thermal_iterations: int, integrator: str | None = None,
 ) -> RunSummary:
     """Minimum h_min and maximum p_max with their angles, cycle means, diagnostics.
 
     ``orbit``: :class:`conrod.orbit.PeriodicOrbit`; ``problem``: the final
-    :class:`OrbitProblem`; ``solver``: the ``[solver]`` section used.
+    :class:`OrbitProblem`; ``solver``: the ``[solver]`` section used; ``integrator``: name
+    of the integrator (default: the one of ``solver``).
     """
     i_h, i_p = int(np.argmin(cycle.h_min)), int(np.argmax(cycle.p_max))
     warnings = []
@@ -37,7 +38,7 @@ def summarise(
         effective_temperature=temperature, viscosity=problem.viscosity, cycles=cycles,
         periodicity_error=float(error) if math.isfinite(error) else 1.0,
         periodic=bool(orbit.periodic), film_model=str(problem.film.name),
-        integrator=str(solver.integrator), wall_time=0.0,
+        integrator=str(integrator or solver.integrator), wall_time=0.0,
         thermal_iterations=thermal_iterations,
-        max_contact_force=float(cycle.contact_force.max()), warnings=warnings,
+        max_contact_force=float(cycle.contact_force.max()), warnings=tuple(warnings),
     )

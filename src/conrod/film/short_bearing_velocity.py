@@ -32,7 +32,7 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.orbit.contact import constrain_and_record, project_onto_circle
+from conrod.film.massless import constrain_and_record, project_onto_circle
 from conrod.film.short_bearing_kernel import (
     ECCENTRICITY_LIMIT,
     _active_arc_integrals,
