@@ -89,8 +89,10 @@ class WornShellFilm(FilmWrapper):
         self._deformation = np.ascontiguousarray(self.profile(theta, z), dtype=float)
 
     def adjust_state(self, state):
-        """The state with the worn-shell field δ(θ, z) [m]."""
-        return replace(state, deformation=self._deformation)
+        """The state with the worn-shell field δ(θ, z) [m] added to its own deformation."""
+        own = state.deformation
+        worn = self._deformation if own is None else own + self._deformation
+        return replace(state, deformation=worn)
 
 
 def _default_simulate(case, profile: Profile):
