@@ -1,4 +1,4 @@
-"""``conrod run CASE.toml --out DIR``: periodic orbit, characteristics, figures (issue 4)."""
+"""``conrod run CASE.toml --out DIR``: periodic orbit, characteristics, figures, manifest."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ from typing import Annotated
 import typer
 
 from conrod.cli.app import exits_cleanly
+from conrod.registry import FILM_NAMES, INTEGRATOR_NAMES
 
 PROGRESS_AFTER_S = 1.0
 """A progress bar appears on runs longer than this [s]."""
@@ -49,17 +50,18 @@ def register(app: typer.Typer) -> None:
         case_file: Annotated[Path, typer.Argument(help="Case file (TOML).")],
         out: Annotated[Path, typer.Option("--out", help="Results folder.")] = Path("results"),
         film: Annotated[str | None, typer.Option(
-            help="Film model: short|mobility|reynolds|mass_conserving|table.")] = None,
+            help=f"Film model: {'|'.join(FILM_NAMES)}.")] = None,
         integrator: Annotated[str | None, typer.Option(
-            help="adaptive|rk2|quasi_static.")] = None,
+            help=f"Orbit integrator: {'|'.join(INTEGRATOR_NAMES)}.")] = None,
         max_cycles: Annotated[int | None, typer.Option(help="Most cycles.")] = None,
         step_deg: Annotated[float | None, typer.Option(help="Fixed step of rk2 [deg].")] = None,
         grid: Annotated[str | None, typer.Option(help="Film grid NTHETAxNZ, e.g. 72x16.")] = None,
         figures: Annotated[bool, typer.Option(help="Write the figures.")] = True,
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
+        import conrod.plotting  # noqa: F401  (registers the figures)
         from conrod.cases.case import Case
-        from conrod.results.writers import write_run
+        from conrod.results.output import write_results
         from conrod.simulation import Simulation
 
         case = Case.from_toml(case_file)
@@ -71,7 +73,7 @@ def register(app: typer.Typer) -> None:
             results = simulation.run(progress=progress)
         finally:
             progress.close()
-        write_run(results, out, figures=figures)
+        write_results(results, out, figures=figures)
         s = results.summary
         typer.echo(
             f"h_min {s.h_min * 1e6:.3f} µm at {_deg(s.h_min_crank_angle)}°, "

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -161,12 +160,6 @@ class ContactResults:
             "hertz_stress_Pa": self.hertz_stress,
             "friction_work_cumulative_J": self.work.cumulative,
         }
-
-    def write_files(self, out_dir: str | Path) -> list[Path]:
-        """Write ``wear_journal.csv``, ``wear_shell.csv`` and the contact figures."""
-        from conrod.contact.output import write_contact_files
-
-        return write_contact_files(self, Path(out_dir))
 
 
 def _contact_from_asperity(case, cycle) -> tuple[np.ndarray, np.ndarray]:

@@ -74,6 +74,23 @@ class SweepResults:
         return out
 
 
+@dataclass(frozen=True)
+class SweepRun:
+    """A finished sweep and its wall-clock time (what ``conrod mechanism --sweep`` writes).
+
+    sweep : SweepResults  One row per operating mode.
+    wall_time : float  Wall-clock time of the sweep [s].
+    """
+
+    sweep: SweepResults
+    wall_time: float
+
+    def summary(self) -> dict:
+        """``sweep.json`` items: the most informative regime, runs, wall time [s]."""
+        return {"most_informative_regime": self.sweep.best(),
+                "runs": int(self.sweep.ratio.size), "wall_time_s": round(self.wall_time, 2)}
+
+
 def impact_statistics(base: MechanismCase, speed_rpm: float, load_scale: float) -> np.ndarray:
     """One operating mode: rows (max, mean velocity [m/s], impacts per cycle) × joints."""
     run = base.with_operating_point(speed_rpm, load_scale)

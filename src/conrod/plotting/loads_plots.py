@@ -31,7 +31,7 @@ def _label_angles(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, eve
         axes.annotate(f"{ai:.0f}°", (xi, yi), textcoords="offset points", xytext=(4, 3), fontsize=7)
 
 
-def polar_load_diagram(loads: EngineLoads) -> Figure:
+def plot_polar_load_diagram(loads: EngineLoads) -> Figure:
     """Polar diagram of the rod force S on the crankpin with poles O and O' (seed 001)."""
     tangential, outward, pole_shift = polar_diagram_points(
         loads.radial_force, loads.tangential_force, loads.rotating_inertia_force
@@ -90,7 +90,7 @@ def _zoom_on_low_loads(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray
     axes.grid(True, lw=0.3)
 
 
-def load_vs_crank_angle(loads: EngineLoads) -> Figure:
+def plot_load_over_crank_angle(loads: EngineLoads) -> Figure:
     """|R|(φ) with its mean, and the components R, T, gas force (unrolled polar diagram)."""
     figure = Figure(figsize=(9.0, 6.0))
     top, bottom = figure.subplots(2, 1, sharex=True)
@@ -114,7 +114,7 @@ def load_vs_crank_angle(loads: EngineLoads) -> Figure:
     return figure
 
 
-def wear_diagram_figure(loads: EngineLoads) -> Figure:
+def plot_wear_diagram(loads: EngineLoads) -> Figure:
     """Journal wear diagram (seed 001) in the crank frame with the oil-hole direction."""
     angle, wear = loads.wear()
     hole = loads.oil_hole_angle()
@@ -150,7 +150,7 @@ def wear_diagram_figure(loads: EngineLoads) -> Figure:
     return figure
 
 
-def conventions_figure() -> Figure:
+def plot_conventions() -> Figure:
     """Sketch of the engine, crank and rod frames, angles and force signs (for the docs)."""
     phi, lam, r = math.radians(50.0), 0.3, 1.0
     length = r / lam

@@ -2,7 +2,7 @@
 cycle :class:`RunSummary` and the bundle :class:`RunResults`.
 
 Every field documents its unit in brackets. No plotting and no I/O here
-(writers: :mod:`conrod.results.writers`, figures: :mod:`conrod.plotting.orbit_plots`).
+(tables: :mod:`conrod.results.tables`; figures are registered by the plotting package).
 """
 
 from __future__ import annotations
@@ -156,14 +156,16 @@ class RunSummary:
 
 @runtime_checkable
 class ContactAnalysis(Protocol):
-    """What :func:`conrod.contact.analysis.analyse_contact` returns (issue 5)."""
+    """What :func:`conrod.contact.analysis.analyse_contact` returns: items merged into
+    summary.json and columns refining cycle.csv (its own tables and figures are registered
+    in the output registry)."""
 
     def summary_items(self) -> dict[str, Any]:
         """Items merged into summary.json."""
         ...
 
-    def write_files(self, out_dir: Any) -> list[Any]:
-        """Write wear CSVs and figures into ``out_dir``; return the paths."""
+    def cycle_columns(self) -> dict[str, np.ndarray]:
+        """Per-angle columns added to cycle.csv [units in the names]."""
         ...
 
 
