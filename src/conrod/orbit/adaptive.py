@@ -12,6 +12,7 @@ Hard contact (seed 004 §4.1–4.2) is handled by phases located with events:
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numba as nb
@@ -30,11 +31,44 @@ MAX_PHASE_CHANGES = 5000
 """Most contact entries + exits per cycle before giving up (chattering) [-]."""
 
 
-@nb.njit  # function-typed argument: specialised per film and process, not cached
-def free_rhs_compiled(force, params, phi, u, angles, table, cycle, viscosity, clearance,
-                      omega, mass_x, mass_y):
-    """Compiled free-phase right-hand side du/dφ for a film with a compiled ``force`` (same
-    as :meth:`_Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω))."""
+def compiled_free_rhs(force, params):
+    """Compiled free-phase right-hand side du/dφ(φ, u, angles, table, cycle, μ, c, ω, m_x,
+    m_y) for a film with the compiled ``force`` and its ``params`` (same as
+    :meth:`_Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω)). Specialised per force
+    function, and per parameter values when they are hashable (frozen into the code): a
+    function- or tuple-typed argument would add microseconds of dispatch to each of the
+    thousands of calls per cycle from solve_ivp."""
+    try:
+        return _frozen_rhs(force, params)
+    except TypeError:  # parameters holding arrays: passed on each call
+        rhs = _rhs_with_params(force)
+        return lambda *args: rhs(params, *args)
+
+
+@functools.cache
+def _frozen_rhs(force, params):
+    @nb.njit
+    def free_rhs(phi, u, angles, table, cycle, viscosity, clearance, omega, mass_x, mass_y):
+        return _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance,
+                         omega, mass_x, mass_y)
+
+    return free_rhs
+
+
+@functools.cache
+def _rhs_with_params(force):
+    @nb.njit
+    def free_rhs(params, phi, u, angles, table, cycle, viscosity, clearance, omega, mass_x,
+                 mass_y):
+        return _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance,
+                         omega, mass_x, mass_y)
+
+    return free_rhs
+
+
+@nb.njit
+def _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance, omega,
+              mass_x, mass_y):
     row = periodic_sample(phi, angles, table, cycle)
     c_omega = clearance * omega
     fx, fy = force(u[0] * clearance, u[1] * clearance, u[2] * c_omega, u[3] * c_omega,
@@ -55,6 +89,8 @@ class _Phases:
         self.session = problem.session(state.film_memory)
         self.force = problem.force_function(self.session)
         self.kernel = problem.compiled_force
+        self.compiled_rhs = (compiled_free_rhs(self.kernel.force, self.kernel.params)
+                             if self.kernel is not None else None)
         self.c = problem.clearance
         self.rc = problem.contact_radius
         self.omega = problem.crank_speed
@@ -72,8 +108,8 @@ class _Phases:
 
     def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:
         if self.kernel is not None:
-            return free_rhs_compiled(
-                self.kernel.force, self.kernel.params, float(phi), np.asarray(u, dtype=float),
+            return self.compiled_rhs(
+                float(phi), np.asarray(u, dtype=float),
                 self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),
                 self.c, float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
             )

@@ -13,6 +13,7 @@ to the journal, hence its R − P signs.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
@@ -128,10 +129,10 @@ class OrbitProblem:
     def _film_force(self, session: FilmSession | None) -> ForceFunction:
         mu, kernel = self.viscosity, self.compiled_force
         if kernel is not None:
-            force, params = kernel.force, kernel.params
+            force = bound_force(kernel.force, kernel.params)
 
             def compiled(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
-                return force(x, y, vx, vy, wj + wb, mu, params)
+                return force(x, y, vx, vy, wj + wb, mu)
 
             return compiled
         held = session if session is not None else self.session()
@@ -146,6 +147,24 @@ class OrbitProblem:
         """Output crank angles over one cycle from 0, last point excluded [rad]."""
         count = max(int(round(np.degrees(self.loads.cycle) / step_deg)), 4)
         return np.linspace(0.0, self.loads.cycle, count, endpoint=False)
+
+
+def bound_force(force, params):
+    """``force(x, y, v_x, v_y, ω_j + ω_b, μ)`` [N] of a compiled kernel with its ``params``
+    frozen into the code when they are hashable (no tuple dispatch on each Python call)."""
+    try:
+        return _frozen_force(force, params)
+    except TypeError:  # parameters holding arrays
+        return lambda x, y, vx, vy, omega_sum, mu: force(x, y, vx, vy, omega_sum, mu, params)
+
+
+@functools.cache
+def _frozen_force(force, params):
+    @nb.njit
+    def bound(x, y, vx, vy, omega_sum, viscosity):
+        return force(x, y, vx, vy, omega_sum, viscosity, params)
+
+    return bound
 
 
 def _with_asperity(film_force: ForceFunction, clearance: float, params) -> ForceFunction:
