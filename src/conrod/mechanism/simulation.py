@@ -15,6 +15,7 @@ import numpy as np
 from numba import njit
 
 from conrod.errors import ConvergenceError
+from conrod.loads.kinematics import piston_displacement
 from conrod.mechanism import integrator as rk
 from conrod.mechanism import kernel as k
 from conrod.mechanism.model import Mechanism, seed_initial_state
@@ -48,9 +49,10 @@ class RunSettings:
 
 
 def rigid_piston_position(crank_angle: np.ndarray, crank_radius: float, rod_length: float):
-    """Exact slider-crank pin position x = r cos α + √(L² − r² sin² α) [m]."""
-    return crank_radius * np.cos(crank_angle) + np.sqrt(
-        rod_length**2 - (crank_radius * np.sin(crank_angle)) ** 2)
+    """Exact slider-crank pin position from the crank centre x = r cos α + √(L² − r² sin² α)
+    = r + L − s(α) [m], s the piston displacement of the loads stage
+    (:func:`conrod.loads.kinematics.piston_displacement`)."""
+    return crank_radius + rod_length - piston_displacement(crank_angle, crank_radius, rod_length)
 
 
 def error_scale(mechanism: Mechanism, tolerance: float) -> np.ndarray:
