@@ -7,7 +7,7 @@ Every field documents its unit in brackets. No plotting and no I/O here
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
@@ -77,10 +77,6 @@ class CycleResults:
     def crank_angle_deg(self) -> np.ndarray:
         """Crank angle [deg]."""
         return np.degrees(self.crank_angle)
-
-    def as_columns(self) -> dict[str, np.ndarray]:
-        """All fields as name → array (SI units, names without unit suffix)."""
-        return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
 @dataclass(frozen=True)
