@@ -101,7 +101,7 @@ class Simulation:
         return compute_engine_loads(self.case).to_load_cycle()
 
     def masses(self) -> tuple[float, float]:
-        """Moving masses along film x and y [kg] (the rod-frame model of Kolchin & Demidov).
+        """Moving masses along film x and y [kg] ([D0] §3.2).
 
         ``[solver] mass_x/mass_y`` when given. For engine loads (rod frame, x towards the
         small end): along the rod the piston plus the whole rod, across it the big-end share

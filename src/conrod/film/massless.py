@@ -3,7 +3,7 @@
 A massless journal moves with the velocity that balances film force and load,
 F(e, ė) + W = 0, and only its position is integrated (Heun, fixed step). The journal centre
 may not leave the contact circle of radius r_c (hard contact, eqs 4.1.1–4.1.8 of the
-contact model of Klimenko [1]): a position outside is projected back onto it and an
+contact model of [D4]): a position outside is projected back onto it and an
 outward normal velocity is removed.
 
 * :func:`project_onto_circle`, :func:`remove_normal_velocity`, :func:`constrain_and_record`
@@ -14,7 +14,7 @@ outward normal velocity is removed.
 * :func:`table_cycle` — the loop of the tabulated and mobility films, whose velocity is the
   table's exact inverse.
 
-[1] see ``docs/references.md``.
+[D4] Contact of the surfaces, dry friction (ch. 4); see ``docs/references.md``.
 """
 
 from __future__ import annotations
