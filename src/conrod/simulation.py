@@ -69,7 +69,9 @@ class Simulation:
         case.require("run", "bearing", "lubricant")
         if loads is None and case.engine is None and case.load is None:
             raise CaseError("run needs either [engine] or [load] (a load table) in the case file")
-        if case.bearing.radial_clearance is None:
+        bearing, lubricant = case.bearing, case.lubricant
+        assert bearing is not None and lubricant is not None  # checked by require()
+        if bearing.radial_clearance is None:
             raise CaseError("bearing.radial_clearance: required by 'run' [m]")
         if housing is not None:
             raise CaseError("housing: an elastic housing is not available in this version "
@@ -77,6 +79,7 @@ class Simulation:
         names = {"film": film if isinstance(film, str) else None,
                  "integrator": integrator if isinstance(integrator, str) else None}
         self.case = case
+        self._bearing, self._lubricant = bearing, lubricant
         self.solver = _solver_with(case, {**overrides, **names})
         self._film = None if film is None or isinstance(film, str) else film
         self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
@@ -85,7 +88,7 @@ class Simulation:
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
         """Bearing geometry with supply features from ``[bearing]``."""
-        return self.case.bearing.geometry()
+        return self._bearing.geometry()
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (given, engine loads or the load table)."""
@@ -131,7 +134,7 @@ class Simulation:
 
     def problem(self, viscosity: float | None = None) -> OrbitProblem:
         """Orbit problem at ``viscosity`` [Pa s] (default: at the supply temperature)."""
-        lubricant = self.case.lubricant
+        lubricant = self._lubricant
         mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
         mass_x, mass_y = self.masses()
         return OrbitProblem(
@@ -163,7 +166,7 @@ class Simulation:
                        ) -> _ThermalOrbit:
         """Orbit, its characteristics and the effective temperature, iterated when μ
         depends on T (heat balance); the characteristics are solved once per orbit."""
-        lubricant, s = self.case.lubricant, self.solver
+        lubricant, s = self._lubricant, self.solver
         temperature = lubricant.supply_temperature
         viscosity, cycles, state = problem.viscosity, 0, None
         iterations = s.thermal_iterations if lubricant.temperature_dependent else 0
@@ -174,9 +177,8 @@ class Simulation:
             cycles += orbit.cycles
             cycle = cycle_characteristics(current, orbit.last)
             target = _heat_balance_temperature(cycle, lubricant)
-            done = (target is None or iteration == iterations
-                    or abs(target - temperature) <= s.thermal_tolerance)
-            if done:
+            if (target is None or iteration == iterations
+                    or abs(target - temperature) <= s.thermal_tolerance):
                 return _ThermalOrbit(orbit, current, cycle, target, cycles, iteration)
             temperature = relaxed_update(temperature, target)
             viscosity = lubricant.viscosity_at(temperature)
@@ -206,6 +208,8 @@ class _ThermalOrbit:
 
 def default_film(case: Case) -> FilmModel:
     """The film model of ``[solver] film`` for the case's bearing."""
+    if case.bearing is None:
+        raise CaseError("[bearing]: required for a film model")
     return build_film_model(case.solver, case.bearing.geometry())
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -21,8 +21,8 @@ class _Progress:
     def __init__(self, max_cycles: int):
         self.max_cycles = max_cycles
         self.start = time.perf_counter()
-        self.bar = None
-        self.task = None
+        self.bar: Any = None
+        self.task: Any = None
 
     def __call__(self, stage: str, cycle: int, error: float) -> None:
         if self.bar is None and time.perf_counter() - self.start > PROGRESS_AFTER_S:
@@ -65,9 +65,9 @@ def register(app: typer.Typer) -> None:
         from conrod.simulation import Simulation
 
         case = Case.from_toml(case_file)
-        overrides = dict(film=film, integrator=integrator, max_cycles=max_cycles,
-                         step_deg=step_deg, **_grid(grid))
-        simulation = Simulation(case, **overrides)
+        n_theta, n_z = _grid(grid)
+        simulation = Simulation(case, film=film, integrator=integrator, max_cycles=max_cycles,
+                                step_deg=step_deg, n_theta=n_theta, n_z=n_z)
         progress = _Progress(simulation.solver.max_cycles)
         try:
             results = simulation.run(progress=progress)
@@ -90,13 +90,13 @@ def _deg(angle: float) -> str:
     return f"{math.degrees(angle):.0f}"
 
 
-def _grid(grid: str | None) -> dict[str, int]:
+def _grid(grid: str | None) -> tuple[int | None, int | None]:
     from conrod.errors import CaseError
 
     if grid is None:
-        return {}
+        return None, None
     try:
         n_theta, n_z = (int(v) for v in grid.lower().split("x"))
     except ValueError:
         raise CaseError(f"--grid = {grid!r}: expected NTHETAxNZ, e.g. 72x16") from None
-    return {"n_theta": n_theta, "n_z": n_z}
+    return n_theta, n_z

@@ -85,7 +85,8 @@ class WornShellFilm(FilmWrapper):
                 "the worn shell profile (allowed: a film honouring a deformation field, "
                 "'reynolds' or 'mass_conserving')"
             )
-        theta, z = self.base.grid()
+        film: Any = self.base
+        theta, z = film.grid()
         self._deformation = np.ascontiguousarray(self.profile(theta, z), dtype=float)
 
     def adjust_state(self, state):

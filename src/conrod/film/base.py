@@ -164,9 +164,15 @@ class FilmResult:
 class FilmModel(Protocol):
     """What the orbit solver may assume about a film model — and nothing more."""
 
-    name: str
-    """Short identifier: 'short', 'reynolds', 'mass_conserving', 'mobility', 'table'."""
-    geometry: BearingGeometry
+    @property
+    def name(self) -> str:
+        """Short identifier: 'short', 'reynolds', 'mass_conserving', 'mobility', 'table'."""
+        ...
+
+    @property
+    def geometry(self) -> BearingGeometry:
+        """Bearing geometry and oil supply."""
+        ...
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """Full result for one state."""

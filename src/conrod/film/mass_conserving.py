@@ -186,7 +186,8 @@ class MassConservingFilm:
         ϑ ← clip(ϑ + dt ∂ϑ/∂t, 0, 1), first order in time (transport limit
         dt |ω_j + ω_b|/2 ≤ Δθ)."""
         result, memory = self.solve_with_memory(state, memory)
-        fraction = np.clip(memory.fraction + dt * result.history_rate, 0.0, 1.0)
+        rate = result.history_rate if result.history_rate is not None else 0.0
+        fraction = np.clip(memory.fraction + dt * rate, 0.0, 1.0)
         return replace(memory, fraction=fraction)
 
     def fields(self, state: FilmState) -> FilmFields:

@@ -107,7 +107,7 @@ class _Phases:
         return wx + fx, wy + fy, (wj - wb) * self.radius
 
     def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:
-        if self.kernel is not None:
+        if self.compiled_rhs is not None:
             return self.compiled_rhs(
                 float(phi), np.asarray(u, dtype=float),
                 self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),

@@ -25,9 +25,9 @@ class FilmSession:
     """
 
     def __init__(self, film: FilmModel, memory: Any = None):
-        self.film = film
+        self.film: Any = film
         self.has_memory = isinstance(film, HasMemory)
-        if self.has_memory and memory is None:
+        if isinstance(film, HasMemory) and memory is None:
             memory = film.initial_memory()
         self.memory = memory if self.has_memory else None
 
