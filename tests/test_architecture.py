@@ -90,3 +90,15 @@ def test_a_result_type_without_registered_outputs_is_refused(tmp_path):
     with pytest.raises(TypeError, match="no tables registered"):
         write_results(object(), tmp_path)
     assert not any(tmp_path.iterdir())
+
+
+def test_no_internal_process_labels_in_user_text():
+    """Sources are cited (docs/references.md), never internal issue or spec labels."""
+    label = re.compile(r"\b[Ii]ssue \d|\bSPEC\b|\b[Ss]eed[ -]?00\d")
+    roots = [PACKAGE, ROOT / "docs", ROOT / "examples", ROOT / "README.md"]
+    paths = [p for root in roots for p in ([root] if root.is_file() else root.rglob("*"))
+             if p.suffix in (".py", ".md", ".toml")]
+    hits = [f"{p.relative_to(ROOT)}:{n}" for p in paths
+            for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
+            if label.search(line)]
+    assert hits == []

@@ -1,4 +1,4 @@
-"""The orchestrator: ``Simulation(case).run() -> RunResults`` (issue 4, SPEC S3).
+"""The orchestrator: ``Simulation(case).run() -> RunResults``.
 
 .. code-block:: python
 
@@ -141,7 +141,7 @@ class Simulation:
             self.film_model(), self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, self.solver.contact_film_thickness,
             _asperity_parameters(self.case),
-        )
+)
 
     # -- run --------------------------------------------------------------------------
     def run(self, progress: ProgressCallback | None = None) -> RunResults:
@@ -157,13 +157,13 @@ class Simulation:
             pressure_at_p_max=pressure, pressure_grid=grid,
             previous_cycle_eccentricity=_previous(orbit),
             contact=analyse_contact(self.case, cycle),
-        )
+)
         wall_time = time.perf_counter() - start
         return dataclasses.replace(results,
                                    summary=dataclasses.replace(summary, wall_time=wall_time))
 
     def _thermal_orbit(self, problem: OrbitProblem, progress: ProgressCallback | None
-                       ) -> _ThermalOrbit:
+) -> _ThermalOrbit:
         """Orbit, its characteristics and the effective temperature, iterated when μ
         depends on T (heat balance); the characteristics are solved once per orbit."""
         lubricant, s = self._lubricant, self.solver
@@ -232,7 +232,7 @@ def _heat_balance_temperature(cycle: CycleResults, lubricant) -> float | None:
     return effective_temperature(
         float(cycle.friction_power.mean()), float(cycle.side_flow.mean()),
         lubricant.supply_temperature, lubricant.density, lubricant.specific_heat,
-    )
+)
 
 
 def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None = None):
@@ -244,7 +244,7 @@ def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list 
         float(cycle.eccentricity_x[i]), float(cycle.eccentricity_y[i]),
         float(cycle.velocity_x[i]), float(cycle.velocity_y[i]),
         float(cycle.journal_speed[i]), float(cycle.shell_speed[i]), problem.viscosity,
-    )
+)
     session = problem.session(film_memory[i] if film_memory else None)
     field = session.solve(state, with_pressure=True).pressure
     if field is None:

@@ -30,7 +30,7 @@ def register(app: typer.Typer) -> None:
         step: Annotated[
             float, typer.Option("--step", help="Crank-angle step [deg]; divides 720")
         ] = 1.0,
-    ) -> None:
+) -> None:
         """Engine loads on the big-end bearing: table, summary, polar and wear diagrams."""
         case = Case.from_toml(case_file)
         case.require("loads", "engine", "bearing")
@@ -42,7 +42,7 @@ def register(app: typer.Typer) -> None:
             f"{summary['peak_load_crank_angle_deg']:.1f} deg, "
             f"mean {summary['mean_load_N'] / 1e3:.2f} kN, "
             f"oil hole at {summary['oil_hole_angle_deg']:.1f} deg -> {out}"
-        )
+)
 
 
 def _write(loads, out: Path) -> None:

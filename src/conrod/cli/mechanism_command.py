@@ -60,8 +60,8 @@ def register(app: typer.Typer) -> None:
             "repeatable")] = None,
         jobs: Annotated[int, typer.Option(
             "--jobs", min=1, help="Worker processes for --sweep (1 = in this process)")] = 1,
-    ) -> None:
-        """Slider-crank with clearances in both rod bearings: gaps, forces, impacts (seed 003)."""
+) -> None:
+        """Slider-crank with clearances in both rod bearings: gaps, forces, impacts ([D3])."""
         case = Case.from_toml(case_file)
         base = mechanism_case(case)
         if sweep:

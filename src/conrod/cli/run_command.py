@@ -57,7 +57,7 @@ def register(app: typer.Typer) -> None:
         step_deg: Annotated[float | None, typer.Option(help="Fixed step of rk2 [deg].")] = None,
         grid: Annotated[str | None, typer.Option(help="Film grid NTHETAxNZ, e.g. 72x16.")] = None,
         figures: Annotated[bool, typer.Option(help="Write the figures.")] = True,
-    ) -> None:
+) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
         import conrod.plotting  # noqa: F401  (registers the figures)
         from conrod.cases.case import Case
@@ -79,7 +79,7 @@ def register(app: typer.Typer) -> None:
             f"h_min {s.h_min * 1e6:.3f} µm at {_deg(s.h_min_crank_angle)}°, "
             f"p_max {s.p_max / 1e6:.2f} MPa at {_deg(s.p_max_crank_angle)}°, "
             f"{s.cycles} cycles, {s.wall_time:.2f} s → {out}"
-        )
+)
         for warning in s.warnings:
             typer.echo(f"warning: {warning}", err=True)
 

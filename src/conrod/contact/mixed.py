@@ -3,7 +3,7 @@ friction, behind the same :class:`conrod.film.base.FilmModel` interface.
 
 The orbit solver's generic path calls ``film.force(state)``; wrapping its film as
 ``MixedLubricationFilm(film, params, μ_dry)`` makes the film and the asperities share the
-load (SPEC S4, "so that the transition is smooth"):
+load, so that the transition from film to contact is smooth:
 
 .. math:: F = F_{film} + F_a - μ_{dry} |F_a|\\, s\\, \\hat t, \\qquad
           s = \\tanh(V_s / v_{reg}),\\quad V_s = \\mathbf v·\\hat t + (ω_j - ω_b) R,
@@ -73,7 +73,7 @@ class MixedLubricationFilm(FilmWrapper):
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             state.journal_speed - state.shell_speed, self.geometry.radial_clearance,
             self.asperity_parameters, self.friction_coefficient,
-        )
+)
 
     def adjust_force(self, state: FilmState, fx: float, fy: float) -> tuple[float, float]:
         """Film + asperity + boundary-friction force on the journal (F_x, F_y) [N]."""

@@ -1,6 +1,6 @@
 """Running-in (optional): evolve the shell profile with its wear over many cycles, feeding
 the worn profile back into the film thickness as the additive field δ(θ, z) of
-:class:`conrod.film.base.FilmState` (SPEC S4, issue 5).
+:class:`conrod.film.base.FilmState`.
 
 The cycles are lumped into ``stages``: each stage runs the periodic orbit with the current
 worn profile, takes the shell wear per cycle from :func:`analyse_contact`, and advances the
@@ -84,7 +84,7 @@ class WornShellFilm(FilmWrapper):
                 f"solver.film = {self.base.name!r}: running-in needs a film model that uses "
                 "the worn shell profile (allowed: a film honouring a deformation field, "
                 "'reynolds' or 'mass_conserving')"
-            )
+)
         film: Any = self.base
         theta, z = film.grid()
         self._deformation = np.ascontiguousarray(self.profile(theta, z), dtype=float)

@@ -1,4 +1,4 @@
-"""The one interface every oil-film model implements (SPEC S2, issue 3).
+"""The one interface every oil-film model implements.
 
 Frame and signs (see ``docs/conventions.md``)
 ----------------------------------------------
@@ -207,7 +207,7 @@ def film_thickness(
         geometry.radial_clearance
         - eccentricity_x * np.cos(theta)
         - eccentricity_y * np.sin(theta)
-    )
+)
     if deformation is None:
         return rigid
     return rigid[:, None] + deformation

@@ -110,7 +110,7 @@ class HasMemory(Protocol):
 
     def solve_with_memory(
         self, state: FilmState, memory: Any, *, with_pressure: bool = False
-    ) -> tuple[FilmResult, Any]:
+) -> tuple[FilmResult, Any]:
         """Result for ``state`` starting from ``memory`` and the memory after the solve."""
         ...
 
@@ -130,7 +130,7 @@ def refuse_deformation(state: FilmState, name: str) -> None:
         raise CaseError(
             f"film = {name!r} cannot take a deformation field δ(θ, z) (allowed: a film "
             "model that honours it: 'reynolds' or 'mass_conserving')"
-        )
+)
 
 
 def film_memory(film: Any) -> Any:

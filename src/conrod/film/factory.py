@@ -60,7 +60,7 @@ class GroovedShortBearingFilm:
         groove = central_groove_width(geometry)
         land_geometry = dataclasses.replace(
             geometry, width=0.5 * (geometry.width - groove), grooves=(), feed_holes=()
-        )
+)
         from conrod.film.short_bearing import ShortBearingFilm
 
         return cls(geometry, ShortBearingFilm(land_geometry), groove)
@@ -79,7 +79,7 @@ class GroovedShortBearingFilm:
             friction_torque_journal=2.0 * r.friction_torque_journal,
             friction_torque_shell=2.0 * r.friction_torque_shell,
             friction_power=2.0 * r.friction_power, side_flow=leakage, supply_flow=leakage,
-        )
+)
         if with_pressure and r.pressure is not None:
             result.pressure = np.concatenate([r.pressure, r.pressure], axis=1)
         return result

@@ -124,7 +124,7 @@ class MassConservingFilm:
         if self.n_theta < 8 or self.n_z < 2:
             raise CaseError(
                 f"grid {self.n_theta}x{self.n_z}: out of range (allowed: n_theta >= 8, n_z >= 2)"
-            )
+)
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
         theta = self.film_grid.theta
@@ -167,7 +167,7 @@ class MassConservingFilm:
 
     def solve_with_memory(
         self, state: FilmState, memory: MassConservingMemory, *, with_pressure: bool = False
-    ) -> tuple[FilmResult, MassConservingMemory]:
+) -> tuple[FilmResult, MassConservingMemory]:
         """:meth:`solve` with the film fraction and warm start of ``memory`` (the state's
         ``history`` is not read), and the memory with the new pressure."""
         result, pressure = self._solve_transient(state, memory.fraction, memory.pressure,
@@ -175,7 +175,7 @@ class MassConservingFilm:
         return result, replace(memory, pressure=pressure)
 
     def force_with_memory(self, state: FilmState, memory: MassConservingMemory
-                          ) -> tuple[float, float, MassConservingMemory]:
+) -> tuple[float, float, MassConservingMemory]:
         """Film force (F_x, F_y) [N] with the fraction and warm start of ``memory``."""
         result, memory = self.solve_with_memory(state, memory)
         return result.force_x, result.force_y, memory
@@ -206,7 +206,7 @@ class MassConservingFilm:
             self._cos_theta, self._sin_theta, self.n_z + 1, g.radial_clearance,
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             deformation, dx, dz, mu, g.radius * (state.journal_speed + state.shell_speed),
-        )
+)
         if not float(h.min()) > 0.0:
             raise CaseError(f"film thickness min = {float(h.min()):.3g} m: out of range "
                             "(allowed: > 0 m); the journal touches the shell")
@@ -214,7 +214,7 @@ class MassConservingFilm:
             h=h, a_east=a_east, a_north=a_north, couette_east=couette, squeeze=squeeze,
             edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed.copy(),
             has_deformation=state.deformation is not None,
-        )
+)
 
     # ------------------------------------------------------------------ transient
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
@@ -225,7 +225,7 @@ class MassConservingFilm:
     def _solve_transient(
         self, state: FilmState, history: np.ndarray | None, warm: np.ndarray | None,
         with_pressure: bool,
-    ) -> tuple[FilmResult, np.ndarray]:
+) -> tuple[FilmResult, np.ndarray]:
         f = self.fields(state)
         fraction = self._fraction(history, f)
         pressure = self._start_pressure(f, fraction, warm)
@@ -256,7 +256,7 @@ class MassConservingFilm:
 
     def _solve_full_film(
         self, pressure: np.ndarray, active: np.ndarray, f: FilmFields, source: np.ndarray
-    ) -> tuple[int, float]:
+) -> tuple[int, float]:
         """Pressure on the full-film nodes (in place on p̃); returns (sweeps, change)."""
         p_cav = self.geometry.cavitation_pressure
         if self.method == "sor":
@@ -271,7 +271,7 @@ class MassConservingFilm:
         cycles, change = multigrid.solve_on_grid(
             gauge, f.h, -source, ~active, self.film_grid, p_cav, self.tolerance,
             self.max_iterations, symmetric,
-        )
+)
         pressure[:] = np.maximum(gauge - p_cav, 0.0)
         return cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS), change
 
@@ -279,7 +279,7 @@ class MassConservingFilm:
     def solve_steady(
         self, state: FilmState, *, with_pressure: bool = False, cavitation: str = "jfo",
         inlet_line: bool = True,
-    ) -> FilmResult:
+) -> FilmResult:
         """Steady film under Raimondi & Boyd's full-bearing conditions.
 
         A full-film ambient-pressure inlet line sits at the maximum gap θ = ψ + π
@@ -309,14 +309,14 @@ class MassConservingFilm:
             sweeps, change = elrod_adams_steady(
                 pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east, f.squeeze,
                 self._omega, self.tolerance, self.max_iterations,
-            )
+)
         else:
             source = convection(f.couette_east, fraction) + f.squeeze
             sweeps, change = projected_sor(
                 pressure, f.free.copy(), f.a_east, f.a_north, source,
                 -self.geometry.cavitation_pressure, self._omega, self.tolerance,
                 self.max_iterations,
-            )
+)
         self._check(sweeps, change, state)
         self.last_film_fraction = fraction
         result = self.characteristics(state, f, pressure, fraction)
@@ -348,12 +348,12 @@ class MassConservingFilm:
                 f"mass-conserving film did not converge in {sweeps} sweeps",
                 where=f"e = ({state.eccentricity_x:.3e}, {state.eccentricity_y:.3e}) m",
                 residual=change,
-            )
+)
 
     def characteristics(
         self, state: FilmState, f: FilmFields, pressure: np.ndarray, fraction: np.ndarray,
         inflows: tuple[float, float] | None = None,
-    ) -> FilmResult:
+) -> FilmResult:
         """Forces, torques, flows, extremes from the shifted pressure p̃ and ϑ."""
         from conrod.film.mass_conserving_results import film_characteristics
 

@@ -35,7 +35,7 @@ NEWTON_TOLERANCE = 1.0e-10
 
 @nb.njit(cache=True)
 def project_onto_circle(x: float, y: float, radius: float) -> tuple[float, float, bool]:
-    """Seed eqs 4.1.1–4.1.3: (x, y)/Z if Z = |e|/radius > 1; returns (x, y, projected)."""
+    """[D4] eqs 4.1.1–4.1.3: (x, y)/Z if Z = |e|/radius > 1; returns (x, y, projected)."""
     z = math.hypot(x, y) / radius
     if z > 1.0:
         return x / z, y / z, True
@@ -62,7 +62,7 @@ def constrain_and_record(
 
 @nb.njit(cache=True)
 def remove_normal_velocity(x: float, y: float, vx: float, vy: float) -> tuple[float, float]:
-    """Seed eqs 4.1.5–4.1.8: keep only the tangential velocity V_k t̂ [m/s]."""
+    """[D4] eqs 4.1.5–4.1.8: keep only the tangential velocity V_k t̂ [m/s]."""
     e = math.hypot(x, y)
     if e == 0.0:
         return vx, vy

@@ -1,4 +1,4 @@
-"""Finite-difference Reynolds film with Swift–Stieber cavitation (SPEC S2, seed 002 ch. 3).
+"""Finite-difference Reynolds film with Swift–Stieber cavitation ([D2] ch. 3).
 
 The pressure solves the Reynolds equation of :mod:`conrod.film.base` on a
 ``n_theta × (n_z + 1)``-node grid (:class:`~conrod.film.characteristics.FilmGrid`) with
@@ -10,7 +10,7 @@ The pressure solves the Reynolds equation of :mod:`conrod.film.base` on a
 * cavitation by projection p := max(p, p_cav) inside projected SOR
   (:mod:`conrod.film.reynolds_kernel`).
 
-Speed: a cold solve starts on up to three nested grids (coarse → fine, seed 002);
+Speed: a cold solve starts on up to three nested grids (coarse → fine, [D2]);
 a solve given a :class:`ReynoldsMemory` starts from its field (warm start), which is what
 makes a transient orbit cheap. The memory is explicit: the orbit integrator holds it
 (:class:`~conrod.film.capabilities.HasMemory`); ``solve``/``force`` alone are cold.
@@ -126,7 +126,7 @@ class ReynoldsFilm:
         if self.friction not in ("full_film", "film_fraction"):
             raise CaseError(
                 f"friction = {self.friction!r}: allowed 'full_film' or 'film_fraction'"
-            )
+)
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
         self._cos = np.cos(self.film_grid.theta)[:, None]
@@ -218,14 +218,14 @@ class ReynoldsFilm:
                 raise CaseError(
                     f"deformation shape = {np.shape(state.deformation)}: "
                     f"out of range (allowed: {h.shape} = (n_theta, n_z + 1))"
-                )
+)
             h = h + state.deformation
         smallest = float(h.min())
         if not smallest > 0.0:
             raise CaseError(
                 f"film thickness min = {smallest:.3g}: out of range (allowed: > 0 m); "
                 "the journal touches the shell"
-            )
+)
         h_rate = -state.velocity_x * self._cos - state.velocity_y * self._sin
         h_rate = np.repeat(h_rate, self.n_z + 1, axis=1)
         fixed = self._edges | self._supply
@@ -254,27 +254,27 @@ class ReynoldsFilm:
         a_east, a_north, source = kernel.assemble_coefficients(
             level.h, level.h_rate, g.radius, g.d_theta, g.d_z,
             state.journal_speed + state.shell_speed, state.viscosity,
-        )
+)
         pressure[level.fixed] = level.fixed_values[level.fixed]
         if self.method == "multigrid":
             cycles, change = multigrid.solve_on_grid(
                 pressure, level.h, source, level.fixed, g, self.geometry.cavitation_pressure,
                 tolerance, self.max_iterations, symmetric,
-            )
+)
             sweeps = cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS)
         else:
             omega = self.relaxation if self.relaxation is not None else optimal_relaxation(g)
             sweeps, change = kernel.sor_solve(
                 pressure, a_east, a_north, source, level.fixed,
                 self.geometry.cavitation_pressure, omega, tolerance, self.max_iterations,
-            )
+)
         if not change <= tolerance:
             raise ConvergenceError(
                 f"Reynolds {self.method} on {g.n_theta}x{g.n_z} after {sweeps} sweeps",
                 where=f"e = ({state.eccentricity_x:.4g}, {state.eccentricity_y:.4g}) m, "
                 f"v = ({state.velocity_x:.4g}, {state.velocity_y:.4g}) m/s",
                 residual=change,
-            )
+)
         return sweeps, change
 
     def _solve_pressure(self, problem: _Problem, state: FilmState,
@@ -308,7 +308,7 @@ class ReynoldsFilm:
         omega_sum = state.journal_speed + state.shell_speed
         a_east, a_north, source = kernel.assemble_coefficients(
             h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
-        )
+)
         inflow = kernel.node_imbalance(pressure, a_east, a_north, source) / (12.0 * state.viscosity)
         free = ~problem.fixed
         cavitated = free & (pressure <= g.cavitation_pressure)
@@ -340,4 +340,4 @@ class ReynoldsFilm:
                 pressure, free, g.cavitation_pressure, grid),
             friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
             extra=info,
-        )
+)

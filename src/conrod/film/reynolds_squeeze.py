@@ -1,4 +1,4 @@
-"""Massless journal velocity of a grid Reynolds film by Booker's reduction (issue 4 speed).
+"""Massless journal velocity of a grid Reynolds film by Booker's reduction.
 
 In the frame turning at ω̄ = (ω_j + ω_b)/2 the Reynolds right-hand side of
 :mod:`conrod.film.base` becomes a pure squeeze term,

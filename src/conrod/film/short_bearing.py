@@ -116,7 +116,7 @@ class ShortBearingFilm:
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             state.journal_speed + state.shell_speed, state.viscosity,
             g.radius, g.width, g.radial_clearance,
-        )
+)
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """All film characteristics for one state; refuses a deformation field."""
@@ -132,7 +132,7 @@ class ShortBearingFilm:
         omega_sum = state.journal_speed + state.shell_speed
         _, f_t, alpha, speed = short_bearing_polar(
             eps, e_rate / c, whirl, omega_sum, state.viscosity, g.radius, g.width, c
-        )
+)
         fx, fy = self.force(state)
         torque_j, torque_b = self._friction_torques(state, eps, f_t * eps * c)
         p_peak, p_angle = self._peak_pressure(state, eps, alpha, speed, psi)
@@ -146,26 +146,26 @@ class ShortBearingFilm:
             max_pressure=p_peak, max_pressure_angle=p_angle,
             cavitated_fraction=0.5 if speed > 0.0 else 0.0,
             friction_power=abs(torque_j * sliding) if sliding else 0.0,
-        )
+)
         if with_pressure:
             result.pressure = self.pressure_field(state)
         return result
 
     def _friction_torques(
         self, state: FilmState, eps: float, e_times_ft: float
-    ) -> tuple[float, float]:
+) -> tuple[float, float]:
         """Shear moments on journal and shell [N m] (full-film Couette + Poiseuille term)."""
         g = self.geometry
         couette = (
             state.viscosity * g.radius**3 * g.width * (state.journal_speed - state.shell_speed)
             * 2.0 * math.pi / (g.radial_clearance * math.sqrt(1.0 - eps * eps))
-        )
+)
         poiseuille = 0.5 * e_times_ft
         return -couette - poiseuille, couette - poiseuille
 
     def _peak_pressure(
         self, state: FilmState, eps: float, alpha: float, speed: float, psi: float
-    ) -> tuple[float, float]:
+) -> tuple[float, float]:
         """Maximum mid-plane pressure [Pa] and its shell angle [rad] (sampled + refined)."""
         if speed == 0.0:
             return 0.0, 0.0

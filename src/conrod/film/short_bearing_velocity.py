@@ -1,4 +1,4 @@
-"""Massless journal velocity of the short bearing by Booker's exact inversion (issue 4 speed).
+"""Massless journal velocity of the short bearing by Booker's exact inversion.
 
 In the frame turning at ω̄ = (ω_j + ω_b)/2 the short-bearing film of
 :mod:`conrod.film.short_bearing_kernel` is a pure squeeze film driven by

@@ -1,4 +1,4 @@
-"""Tabulated quasi-static film (seed 000 §3.3): precomputed squeeze-force maps, cached on disk.
+"""Tabulated quasi-static film ([D0] §3.3): precomputed squeeze-force maps, cached on disk.
 
 Any :class:`~conrod.film.base.FilmModel` (``base``) is solved once per table node for a pure
 squeeze state (ω_j = ω_b = 0) at eccentricity ε_j along +x and unit-direction velocity
@@ -213,7 +213,7 @@ class TabulatedFilm:
             state.journal_speed + state.shell_speed, state.viscosity, self.force_scale,
             self.geometry.radial_clearance, self.s_step,
             self.tables["log_magnitude"], self.tables["turning"],
-        )
+)
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """Interpolated characteristics (no pressure field: ``with_pressure`` is ignored)."""
@@ -243,7 +243,7 @@ class TabulatedFilm:
             cavitated_fraction=min(max(values["cavitated"], 0.0), 1.0),
             friction_power=abs((wedge - couette) * sliding),
             extra={"eccentricity_ratio": eps},
-        )
+)
 
     def _interpolate(self, eps: float, v_r: float, v_t: float) -> dict[str, float]:
         """Dimensionless force (radial, tangential) × |v_s| and the other quantities."""
@@ -262,7 +262,7 @@ class TabulatedFilm:
     # ------------------------------------------------------------- accuracy
     def interpolation_error(
         self, n_points: int = 24, *, eccentricity_max: float | None = None, seed: int = 0
-    ) -> dict[str, float]:
+) -> dict[str, float]:
         """Max and RMS of |F_table − F_base|/|F_base| at random off-grid states [-].
 
         States have random ε ∈ [0.02, eccentricity_max], squeeze direction, journal and

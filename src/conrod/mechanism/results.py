@@ -87,7 +87,7 @@ class MechanismResults:
     @property
     def statistics_cycles(self) -> int:
         """Cycles whose impacts enter the statistics: all but the first (start-up
-        transient from the seed's approximate initial state) when more than one [-]."""
+        transient from the approximate initial state of [D3]) when more than one [-]."""
         return max(self.cycles - 1, 1)
 
     def settled_impacts(self) -> Impacts:

@@ -1,7 +1,7 @@
 """Build a clearance-mechanism run from a case file (``[engine]`` + ``[clearance]``).
 
 Gas force P = π D_p²/4 · (p − p_ambient) from :func:`conrod.loads.pressure.build_pressure`
-(trace or seed-003 parametric model), scaled by ``load_scale``, tabulated over 4π.
+(trace or [D3] parametric model), scaled by ``load_scale``, tabulated over 4π.
 """
 
 from __future__ import annotations

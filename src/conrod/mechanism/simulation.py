@@ -67,7 +67,7 @@ def error_scale(mechanism: Mechanism, tolerance: float) -> np.ndarray:
 def simulate(
     mechanism: Mechanism, gas_table: np.ndarray, settings: RunSettings
 ) -> MechanismResults:
-    """Integrate ``settings.cycles`` cycles from the seed-003 initial state at firing TDC.
+    """Integrate ``settings.cycles`` cycles from the [D3] initial state at firing TDC.
 
     gas_table : ndarray  Gas force on the piston at equally spaced angles over [0, 4π) [N].
     Raises ConvergenceError when the integrator fails or exceeds its step budget.
@@ -124,7 +124,7 @@ def _assemble(mechanism, p, table, alpha, states, impacts, settings, steps, reje
 @njit(cache=True)
 def free_play_outline(p, block, angles, clearance_max):
     """Radius [m] of the free-play region of the journal centre at ``angles`` [rad] from
-    the rod axis (δ = 0 by bisection; p(ϕ) − D/2 for the seed geometry)."""
+    the rod axis (δ = 0 by bisection; p(ϕ) − D/2 for [D3] geometry)."""
     radii = np.empty(angles.shape[0])
     for i in range(angles.shape[0]):
         c, s = math.cos(angles[i]), math.sin(angles[i])

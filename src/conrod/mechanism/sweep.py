@@ -1,4 +1,4 @@
-"""Sweep of operating modes (speed × load) ranking them by diagnostic value (seed 003).
+"""Sweep of operating modes (speed × load) ranking them by diagnostic value ([D3]).
 
 The most informative diagnostic regime is the one where the worn joint knocks hardest
 **relative to** the other joint: the ratio

@@ -1,5 +1,5 @@
 """Journal-centre orbit over the cycle: equations of motion, integrators, hard contact,
-periodicity loop and heat balance (issue 4, SPEC S3; seed 000 §3, seed 004 §4.1–4.2)."""
+periodicity loop and heat balance ([D0] §3, [D4] §4.1–4.2)."""
 
 from conrod.orbit.periodic import PeriodicOrbit, integrate_cycle, periodic_orbit
 from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state

@@ -1,8 +1,8 @@
-"""Adaptive, implicit orbit integration (seed 002: BDF with steps ≤ 1° crank angle).
+"""Adaptive, implicit orbit integration ([D2]: BDF with steps ≤ 1° crank angle).
 
 SciPy ``solve_ivp`` (Radau by default, BDF or LSODA on request) integrates the scaled state
 u = (x/c, y/c, v_x/(cω), v_y/(cω)) over the crank angle φ with ``max_step`` ≤ 1°.
-Hard contact (seed 004 §4.1–4.2) is handled by phases located with events:
+Hard contact ([D4] §4.1–4.2) is handled by phases located with events:
 
 * free phase until Z = |e|/r_c − 1 crosses zero upwards (event, not a step crossing);
   at entry the normal velocity is removed (eqs 4.1.5–4.1.8: perfectly plastic impact);
@@ -112,14 +112,14 @@ class _Phases:
                 float(phi), np.asarray(u, dtype=float),
                 self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),
                 self.c, float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
-            )
+)
         c, w = self.c, self.omega
         x, y, vx, vy = u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w
         big_x, big_y, _ = self.forces(phi, x, y, vx, vy)
         scale = c * w * w
         return np.array(
             [u[2], u[3], big_x / (self.p.mass_x * scale), big_y / (self.p.mass_y * scale)]
-        )
+)
 
     def hit(self, phi: float, u: np.ndarray) -> float:
         return math.hypot(u[0], u[1]) * self.c / self.rc - 1.0
@@ -136,7 +136,7 @@ class _Phases:
         ax, ay, _, _ = contact_acceleration(
             x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
             self.p.dry_friction, self.rc, surface, True,
-        )
+)
         tangential = -ax * math.sin(w[0]) + ay * math.cos(w[0])
         return np.array([w[1] * self.c / self.rc, tangential / (self.c * self.omega**2)])
 
@@ -147,7 +147,7 @@ class _Phases:
         p_c, s = contact_normal_force(
             x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
             self.p.dry_friction, self.rc, surface,
-        )
+)
         return (p_c, s) if with_sign else p_c
 
     def leave(self, phi: float, w: np.ndarray) -> float:
@@ -187,7 +187,7 @@ def adaptive_cycle(
         if last:
             return CycleTrajectory.from_table(
                 phi_out, table, _state(phases, sol.y[:, -1], contact), steps
-            )
+)
         phi = phi_end
         current, contact = _switch(phases, phi, sol.y[:, -1], contact)
     raise ConvergenceError("contact chattering: too many contact entries/exits",
@@ -204,7 +204,7 @@ def _solve_segment(rhs, phi, end, current, event, settings):
             rhs, (phi, end), current, method=method, events=event, dense_output=True,
             max_step=math.radians(settings.max_step_deg),
             rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
-        )
+)
         if sol.status >= 0:
             return sol
     return sol

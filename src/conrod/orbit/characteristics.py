@@ -1,4 +1,4 @@
-"""Hydromechanical characteristics along the orbit (seed 002 Table 1 columns).
+"""Hydromechanical characteristics along the orbit ([D2] Table 1 columns).
 
 At each output angle the film model is solved once for the orbit state, giving h_min and
 its shell angle, p_max, friction torque, side and supply flow. Derived here:
@@ -98,4 +98,4 @@ def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory) -> Cycle
         contact_angle=contact_angle, journal_rotation=rotation,
         sliding_speed=tangential_speed + relative * problem.film.geometry.radius,
         in_contact=traj.in_contact, **film,
-    )
+)

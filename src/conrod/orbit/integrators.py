@@ -44,7 +44,7 @@ class AdaptiveIntegrator:
                 f"solver.integrator = 'adaptive': the {problem.film.name} film carries a "
                 "history field that is advanced in lock-step with a fixed step (allowed: rk2, "
                 "quasi_static)"
-            )
+)
         return adaptive_cycle(problem, state, settings, settings.output_step_deg)
 
 

@@ -1,4 +1,4 @@
-"""Repeat cycles from the concentric start until the orbit is periodic (SPEC S3).
+"""Repeat cycles from the concentric start until the orbit is periodic.
 
 Periodicity error of cycle k: max over the output angles of |e_k(φ) − e_{k−1}(φ)|/c [-].
 The orbit is periodic when it is at most ``[solver] periodicity_tolerance``; if it is not

@@ -1,13 +1,13 @@
-"""The orbit problem: film model, load cycle, masses and contact circle (seed 000 §3.1).
+"""The orbit problem: film model, load cycle, masses and contact circle ([D0] §3.1).
 
 Equation of motion of the journal centre relative to the shell in the film frame, with the
-crank angle φ as independent variable (dt = dφ/ω, seed 000 eqs 3.1.3–3.1.6):
+crank angle φ as independent variable (dt = dφ/ω, [D0] eqs 3.1.3–3.1.6):
 
 .. math:: \\frac{dx}{dφ} = \\frac{v_x}{ω},\\quad
           \\frac{dv_x}{dφ} = \\frac{W_x(φ) + F_x(x, y, v_x, v_y)}{m_x ω}
 
 (likewise for y), W the load pressing the journal on the shell, F the film force on the
-journal (F + W = 0 at equilibrium). The seed writes the same with the bearing centre relative
+journal (F + W = 0 at equilibrium). [D0] writes the same with the bearing centre relative
 to the journal, hence its R − P signs.
 """
 
@@ -107,7 +107,7 @@ class OrbitProblem:
         return OrbitProblem(
             self.film, self.loads, viscosity, self.mass_x, self.mass_y,
             self.dry_friction, self.contact_film_thickness, self.asperity,
-        )
+)
 
     @property
     def has_film_content(self) -> bool:
@@ -199,5 +199,5 @@ def load_table(loads: LoadCycle) -> tuple[np.ndarray, np.ndarray]:
 
 
 def initial_state() -> OrbitState:
-    """Concentric start x = y = ẋ = ẏ = 0 (seed 000 eq. 3.5.1)."""
+    """Concentric start x = y = ẋ = ẏ = 0 ([D0] eq. 3.5.1)."""
     return OrbitState()

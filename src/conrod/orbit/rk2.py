@@ -1,11 +1,11 @@
-"""Seed 000's second-order Runge–Kutta (Heun) at a fixed crank-angle step, with the seed 004
+"""[D0]'s second-order Runge–Kutta (Heun) at a fixed crank-angle step, with the [D4]
 contact treatment: projection x := x/Z after a step and removal of the normal velocity
 (eqs 4.1.1–4.1.8), constrained motion along the circle while the journal presses on it.
 A film declaring a compiled force and radial damping
 (:class:`~conrod.film.capabilities.CompiledKernel`) runs fully compiled.
 
 The film is stiff (damping time m/B ≪ 1° of crank angle), so this explicit scheme needs a
-small step (``[solver] step_deg``, 0.01° by default); it is kept for fidelity to the seed and
+small step (``[solver] step_deg``, 0.01° by default); it is kept for fidelity to [D4] and
 as an independent check of the adaptive integrator.
 """
 
@@ -26,7 +26,7 @@ from conrod.orbit.trajectory import CycleTrajectory
 
 @nb.njit(cache=True)
 def _settle_contact(x, y, vx, vy, radius, pressing):
-    """Contact bookkeeping after a step (seed eqs 4.1.1–4.1.8); returns state and flag.
+    """Contact bookkeeping after a step ([D4] eqs 4.1.1–4.1.8); returns state and flag.
 
     Beyond the circle: project and remove the outward normal velocity (plastic impact).
     While the journal was pressing on the shell (P_c > 0 at the step start) it stays on
@@ -69,7 +69,7 @@ def rk2_compiled_cycle(
         ax, ay, pc, pf = contact_acceleration(
             x, y, vx, vy, load_x[k] + fx, load_y[k] + fy, mass_x, mass_y, dry_friction,
             contact_radius, (wj - wb) * radius, contact,
-        )
+)
         if k % record_every == 0 and k // record_every < out.shape[0]:
             row = k // record_every
             out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
@@ -81,7 +81,7 @@ def rk2_compiled_cycle(
         ax2, ay2, _, _ = contact_acceleration(
             xp, yp, vxp, vyp, load_x[k + 1] + fx, load_y[k + 1] + fy, mass_x, mass_y,
             dry_friction, contact_radius, (wj - wb) * radius, contact,
-        )
+)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, contact_radius, pc > 0.0)
@@ -94,7 +94,7 @@ def _step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
         raise CaseError(
             f"solver.step_deg = {step_deg!r}: must divide solver.output_step_deg = "
             f"{output_step_deg!r} (allowed: output_step_deg / k, k = 1, 2, ...) [deg]"
-        )
+)
     n_out = len(problem.output_angles(output_step_deg))
     n_steps = n_out * record_every
     phi = np.linspace(0.0, problem.loads.cycle, n_steps + 1)
@@ -118,24 +118,24 @@ def rk2_cycle(
             kernel.force, kernel.radial_damping, kernel.params, start, dt, load_x, load_y,
             wj, wb, record_every, problem.viscosity, g.radius, g.radial_clearance,
             problem.mass_x, problem.mass_y, problem.dry_friction, problem.contact_radius,
-        )
+)
         if stiffness > 2.0:
             raise ConvergenceError(
                 f"rk2 step too large for the film stiffness: Δt·B/m = {stiffness:.3g} > 2 "
                 f"(explicit Heun unstable); use solver.step_deg ≤ {step_deg * 1.9 / stiffness:.2g}"
                 " deg or the adaptive integrator",
                 where=f"step {step_deg} deg", residual=stiffness,
-            )
+)
     else:
         session = problem.session(state.film_memory)
         table, end = _rk2_generic_cycle(
             problem, start, dt, load_x, load_y, wj, wb, record_every, session
-        )
+)
     if not np.all(np.isfinite(table)):
         raise ConvergenceError(
             "rk2 orbit diverged (film too stiff for the step; reduce solver.step_deg)",
             where=f"step {step_deg} deg",
-        )
+)
     memory = session.snapshot() if session is not None else None
     end_state = OrbitState(end[0], end[1], end[2], end[3], bool(end[4] > 0.5), memory)
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state, len(phi) - 1)
@@ -156,7 +156,7 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
         return contact_acceleration(
             x, y, vx, vy, load_x[k] + fx, load_y[k] + fy, problem.mass_x, problem.mass_y,
             problem.dry_friction, problem.contact_radius, (wj[k] - wb[k]) * radius, contact,
-        )
+)
 
     for k in range(n_steps):
         ax, ay, pc, pf = acceleration(k, x, y, vx, vy)

@@ -41,11 +41,11 @@ class CycleTrajectory:
     @classmethod
     def from_table(
         cls, crank_angle: np.ndarray, table: np.ndarray, end_state: OrbitState, steps: int
-    ) -> CycleTrajectory:
+) -> CycleTrajectory:
         """Build from rows (x, y, vx, vy, P_c, P_f, in_contact)."""
         return cls(
             crank_angle=crank_angle, x=table[:, 0].copy(), y=table[:, 1].copy(),
             vx=table[:, 2].copy(), vy=table[:, 3].copy(), contact_force=table[:, 4].copy(),
             friction_force=table[:, 5].copy(), in_contact=table[:, 6] > 0.5,
             end_state=end_state, steps=steps,
-        )
+)

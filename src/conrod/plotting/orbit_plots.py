@@ -1,8 +1,8 @@
-"""Figures of ``conrod run`` (issue 4): one function per figure, each returns a Figure.
+"""Figures of ``conrod run``: one function per figure, each returns a Figure.
 
 * :func:`plot_orbit` — journal-centre orbit inside the clearance circle, crank-angle labels;
   the cycle before the last is dashed, and a non-periodic orbit is flagged in the title;
-* :func:`plot_film_thickness_and_pressure` — h_min(φ) and p_max(φ) (seed 000 Fig. 3.5.2);
+* :func:`plot_film_thickness_and_pressure` — h_min(φ) and p_max(φ) ([D0] Fig. 3.5.2);
 * :func:`plot_friction_and_flow` — friction power and side/supply flow over the cycle;
 * :func:`plot_pressure_map` — film pressure p(θ, z) at the crank angle of the largest p_max.
 """
@@ -50,7 +50,7 @@ def plot_orbit(results: RunResults) -> Figure:
 
 
 def plot_film_thickness_and_pressure(results: RunResults) -> Figure:
-    """h_min(φ) [µm] and p_max(φ) [MPa] over the cycle (seed 000 Fig. 3.5.2)."""
+    """h_min(φ) [µm] and p_max(φ) [MPa] over the cycle ([D0] Fig. 3.5.2)."""
     cycle = results.cycle
     fig = Figure(figsize=(8.0, 5.5))
     top, bottom = fig.subplots(2, 1, sharex=True)

@@ -29,7 +29,7 @@ def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
                    "Film pressure p [MPa] over shell angle θ [deg] and axial position z [mm] "
                    "at the crank angle of the largest p_max.",
                    lambda: orbit_plots.plot_pressure_map(results)),
-    )
+)
     return own + (figures(results.contact) if results.contact is not None else ())
 
 
@@ -51,7 +51,7 @@ def _contact_figures(contact: ContactResults) -> tuple[FigureSpec, ...]:
                    "Largest Hertz stress [MPa] each journal and shell element sees over the "
                    "cycle, against the surface angle [deg].",
                    lambda: contact_plots.plot_contact_stress_surfaces(contact)),
-    )
+)
 
 
 @figures.register
@@ -67,7 +67,7 @@ def _loads_figures(loads: EngineLoads) -> tuple[FigureSpec, ...]:
                    "Load-weighted wear intensity around the crank pin [kN] and the oil-hole "
                    "angle [deg].",
                    lambda: loads_plots.plot_wear_diagram(loads)),
-    )
+)
 
 
 @figures.register
@@ -84,7 +84,7 @@ def _mechanism_figures(run: MechanismRun) -> tuple[FigureSpec, ...]:
         FigureSpec("impact_velocities.png", "Impact velocities",
                    "Impact velocity [m/s] of every impact against crank angle [deg].",
                    lambda: mechanism_plots.plot_impacts(results)),
-    )
+)
 
 
 @figures.register
@@ -94,4 +94,4 @@ def _sweep_figures(run: SweepRun) -> tuple[FigureSpec, ...]:
                    "Ratio of the worn joint's largest impact velocity to the other's [-] over "
                    "crank speed [rpm] and load scale [-].",
                    lambda: mechanism_plots.plot_sweep_map(run.sweep)),
-    )
+)

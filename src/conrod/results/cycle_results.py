@@ -1,4 +1,4 @@
-"""Typed results of one orbit run (issue 4): per-angle :class:`CycleResults`,
+"""Typed results of one orbit run: per-angle :class:`CycleResults`,
 cycle :class:`RunSummary` and the bundle :class:`RunResults`.
 
 Every field documents its unit in brackets. No plotting and no I/O here
@@ -15,7 +15,7 @@ import numpy as np
 
 @dataclass(frozen=True)
 class CycleResults:
-    """Characteristics of the periodic orbit at each output crank angle (seed 002 Table 1)."""
+    """Characteristics of the periodic orbit at each output crank angle ([D2] Table 1)."""
 
     crank_angle: np.ndarray
     """Crank angle φ of each output point, 0 at firing TDC [rad]."""
@@ -58,9 +58,9 @@ class CycleResults:
     shell_speed: np.ndarray
     """Shell angular velocity ω_b in the film frame [rad/s]."""
     contact_force: np.ndarray
-    """Hard-contact normal force P_c ≥ 0 (seed 004 eq. 4.2.5) [N]."""
+    """Hard-contact normal force P_c ≥ 0 ([D4] eq. 4.2.5) [N]."""
     friction_force: np.ndarray
-    """Dry-friction force μ_dry P_c (seed 004 eq. 4.2.6) [N]."""
+    """Dry-friction force μ_dry P_c ([D4] eq. 4.2.6) [N]."""
     contact_angle: np.ndarray
     """Shell angle θ of the contact point, film frame (NaN-free: ψ of the centre) [rad]."""
     journal_rotation: np.ndarray
@@ -81,7 +81,7 @@ class CycleResults:
 
 @dataclass(frozen=True)
 class RunSummary:
-    """Cycle characteristics (seed 002 Table 1 'cycle' columns) and run diagnostics."""
+    """Cycle characteristics ([D2] Table 1 'cycle' columns) and run diagnostics."""
 
     h_min: float
     """Smallest h_min over the cycle [m]."""

@@ -1,4 +1,4 @@
-"""Cycle summary (seed 002 Table 1 'cycle' columns) from the per-angle results."""
+"""Cycle summary ([D2] Table 1 'cycle' columns) from the per-angle results."""
 
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ def summarise(
             f"orbit not periodic after {orbit.cycles} cycles: periodicity error "
             f"{orbit.periodicity_error:.3g} > tolerance {solver.periodicity_tolerance:.3g} "
             "(raise solver.max_cycles)"
-        )
+)
     error = orbit.periodicity_error
     return RunSummary(
         h_min=float(cycle.h_min[i_h]), h_min_crank_angle=float(cycle.crank_angle[i_h]),
@@ -41,4 +41,4 @@ def summarise(
         integrator=str(integrator or solver.integrator), wall_time=0.0,
         thermal_iterations=thermal_iterations,
         max_contact_force=float(cycle.contact_force.max()), warnings=tuple(warnings),
-    )
+)

@@ -101,7 +101,7 @@ def _run_tables(results: RunResults) -> tuple[TableSpec, ...]:
                   "Smallest h_min [m] and largest p_max [Pa] with their crank angles [deg], "
                   "cycle means, heat balance and run diagnostics.",
                   lambda: summary_items(results)),
-    )
+)
     return own + (tables(results.contact) if results.contact is not None else ())
 
 
@@ -126,7 +126,7 @@ def _contact_tables(contact: ContactResults) -> tuple[TableSpec, ...]:
                   "cycle, by element angle [deg].",
                   lambda: {"angle_deg": angle, "friction_work_J": wear.shell_work,
                            "wear_m": wear.shell_wear}),
-    )
+)
 
 
 @result_kind.register
@@ -153,7 +153,7 @@ def _loads_tables(loads: EngineLoads) -> tuple[TableSpec, ...]:
                   "Peak and mean bearing load [N] with crank angles [deg], oil-hole angle "
                   "[deg] and the inertia forces [N].",
                   loads.summary),
-    )
+)
 
 
 @result_kind.register
@@ -212,7 +212,7 @@ def _mechanism_tables(run: MechanismRun) -> tuple[TableSpec, ...]:
                   "Operating point, impacts per cycle, impact velocities [m/s], contact forces "
                   "[N], energy residual [J] and integrator statistics.",
                   run.summary),
-    )
+)
 
 
 @result_kind.register
@@ -231,7 +231,7 @@ def _sweep_tables(run: SweepRun) -> tuple[TableSpec, ...]:
                   "Operating mode with the largest impact-velocity ratio of the worn joint, "
                   "number of runs and wall time [s].",
                   run.summary),
-    )
+)
 
 
 @result_kind.register
