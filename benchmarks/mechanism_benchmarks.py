@@ -3,7 +3,7 @@ the in-house compiled integrator against SciPy's stiff/non-stiff solvers on the 
 
 Run:  python benchmarks/mechanism_benchmarks.py   (writes benchmarks/mechanism_benchmarks.md)
 
-Case: ``examples/seed003_worn_rod_bearings.toml`` (3000 rpm, load 0.5, 3 cycles).
+Case: ``examples/kulayev_worn_rod_bearings.toml`` (3000 rpm, load 0.5, 3 cycles).
 Times are wall-clock on whatever machine runs this (numba compiled and cached first).
 """
 
@@ -27,7 +27,7 @@ from conrod.mechanism.setup import mechanism_case
 from conrod.mechanism.simulation import error_scale, simulate
 from conrod.mechanism.sweep import run_sweep
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "seed003_worn_rod_bearings.toml"
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "kulayev_worn_rod_bearings.toml"
 OUTPUT = Path(__file__).with_suffix(".md")
 
 

@@ -1,10 +1,10 @@
-"""Time per periodic orbit cycle for each film model and integrator (issue 4 benchmarks).
+"""Time per periodic orbit cycle for each film model and integrator.
 
 Run from the repository root:  python benchmarks/orbit_benchmarks.py
 Writes benchmarks/orbit_benchmarks.md. Case: examples/passenger_car_diesel_2000rpm.toml
 (engine loads, rod frame). Each row times the second cycle, started from the end of a
 warm-up cycle (numba compilation and film tables excluded; build time reported separately).
-Targets of issue 4 in the last column.
+Targets in the last column.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ ROWS = [
     # film, integrator, overrides, target
     ("short", "quasi_static", {}, "≤ 5 ms"),
     ("short", "adaptive", {}, "≤ 5 ms"),
-    ("short", "rk2", {"step_deg": 0.0002}, "(seed fidelity)"),
+    ("short", "rk2", {"step_deg": 0.0002}, "(fidelity to [D0])"),
     ("mobility", "quasi_static", {}, "≤ 5 ms"),
     ("table", "quasi_static", {}, "≤ 10 ms"),
     ("table", "adaptive", {}, "(implicit, for comparison)"),
@@ -38,7 +38,7 @@ ROWS = [
 def time_row(film: str, integrator: str, overrides: dict) -> tuple[str, str, str]:
     """(build time, time per cycle, result) of one configuration."""
     from conrod import Case, Simulation
-    from conrod.dynamics import initial_state, integrate_cycle
+    from conrod.orbit import initial_state, integrate_cycle
 
     case = Case.from_toml(CASE)
     start = time.perf_counter()
@@ -72,7 +72,7 @@ def _fmt(seconds: float) -> str:
 
 def main() -> None:
     lines = [
-        "# Orbit benchmarks (issue 4)",
+        "# Orbit benchmarks",
         "",
         f"Case `{CASE.relative_to(ROOT)}`, time of the second cycle (after a warm-up cycle); "
         "machine: "

@@ -7,10 +7,10 @@ import math
 import numpy as np
 
 from conrod.cases.solver import SolverSection
-from conrod.dynamics import OrbitProblem
 from conrod.film.base import BearingGeometry
 from conrod.film.short_bearing import ShortBearingFilm
 from conrod.loads.cycle import LoadCycle
+from conrod.orbit import OrbitProblem
 
 SPEED = 2000.0 * 2.0 * math.pi / 60.0
 """Crank = journal speed of the test problems [rad/s]."""

@@ -39,6 +39,7 @@ def test_good_case_writes_all_outputs(tmp_path):
         "load_vs_crank_angle.png",
         "loads.csv",
         "loads_summary.json",
+        "manifest.json",
         "polar_load_diagram.png",
         "wear_diagram.png",
     ]

@@ -95,8 +95,11 @@ def test_hard_contact_summary_matches_seed_definitions(tmp_path):
 
 
 def test_write_files_tables_and_figures(tmp_path):
+    import conrod.plotting  # noqa: F401  (registers the figures)
+    from conrod.results.output import write_results
+
     result = analyse_contact(_case(surface_elements=90), _combustion_cycle())
-    paths = result.write_files(tmp_path)
+    paths = write_results(result, tmp_path)
     assert {p.name for p in paths} >= {"wear_journal.csv", "wear_shell.csv", "contact_cycle.png"}
     for name in ("wear_journal.csv", "wear_shell.csv"):
         with open(tmp_path / name, encoding="utf-8") as handle:

@@ -64,9 +64,9 @@ def test_polar_diagram_pole_shift_is_the_rotating_force():
 
 
 def test_conventions_figure_draws_the_three_frames():
-    from conrod.plotting.loads_plots import conventions_figure
+    from conrod.plotting.loads_plots import plot_conventions
 
-    figure = conventions_figure()
+    figure = plot_conventions()
     texts = " ".join(t.get_text() for t in figure.axes[0].texts)
     for label in ("X (engine)", "x rod", "y rod", "x crank", "θ on the shell"):
         assert label in texts

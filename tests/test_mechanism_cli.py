@@ -20,7 +20,7 @@ from conrod.errors import CaseError
 from conrod.mechanism.setup import mechanism_case
 from conrod.mechanism.sweep import parse_sweep_option, run_sweep
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "seed003_worn_rod_bearings.toml"
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "kulayev_worn_rod_bearings.toml"
 MECHANISM_COLUMNS = {"crank_angle_deg", "piston_position_m", "big_end_gap_m", "small_end_gap_m",
                      "big_end_force_N", "small_end_force_N"}
 SUMMARY_KEYS = {"max_impact_velocity_big_end_m_s", "max_impact_velocity_small_end_m_s",

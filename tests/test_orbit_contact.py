@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from conrod.dynamics import periodic_orbit
-from conrod.dynamics.contact import (
+from conrod.orbit import periodic_orbit
+from conrod.orbit.contact import (
     contact_acceleration,
     project_onto_circle,
     remove_normal_velocity,

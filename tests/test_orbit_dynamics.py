@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from conrod.dynamics import OrbitState, integrate_cycle, periodic_orbit
+from conrod.orbit import OrbitState, integrate_cycle, periodic_orbit
 from orbit_helpers import SPEED, engine_like_load, geometry, load_cycle, short_problem, solver
 
 

@@ -17,13 +17,13 @@ import numpy as np
 import pytest
 
 from conrod.cases.solver import SolverSection
-from conrod.dynamics.characteristics import cycle_characteristics
-from conrod.dynamics.periodic import periodic_orbit
-from conrod.dynamics.problem import OrbitProblem
 from conrod.film.base import BearingGeometry, Groove
 from conrod.film.mass_conserving import MassConservingFilm
 from conrod.film.reynolds import ReynoldsFilm
 from conrod.loads.cycle import LoadCycle
+from conrod.orbit.characteristics import cycle_characteristics
+from conrod.orbit.periodic import periodic_orbit
+from conrod.orbit.problem import OrbitProblem
 
 OMEGA = 200.0  # crank = journal speed [rad/s]
 
@@ -62,7 +62,7 @@ def test_jfo_orbit_is_periodic_and_agrees_with_reynolds():
     jfo, jfo_cycle, _ = orbit(MassConservingFilm(geometry, n_theta=24, n_z=4))
     reynolds, reynolds_cycle, _ = orbit(ReynoldsFilm(geometry, n_theta=24, n_z=4))
     assert jfo.periodic and reynolds.periodic
-    fraction = np.array([float(np.min(f)) for f in jfo.last.film_history])
+    fraction = np.array([float(np.min(m.fraction)) for m in jfo.last.film_memory])
     assert fraction.min() < 0.5  # the film really ruptures: this is not a Reynolds run
     assert jfo_cycle.h_min.min() == pytest.approx(reynolds_cycle.h_min.min(), rel=0.05)
     assert jfo_cycle.p_max.max() == pytest.approx(reynolds_cycle.p_max.max(), rel=0.10)
@@ -72,13 +72,10 @@ def test_jfo_orbit_is_periodic_and_agrees_with_reynolds():
 def test_pressure_map_uses_the_film_fraction_of_its_crank_angle():
     """The pressure map at the p_max angle must be the JFO field (with ϑ there): its maximum
     equals the cycle's p_max; a full film at the same velocity would overshoot (11.3 MPa)."""
-    from types import SimpleNamespace
-
-    from conrod.simulation import _attach_pressure_map
+    from conrod.simulation import _pressure_map
 
     film = MassConservingFilm(fed_bearing(), n_theta=24, n_z=4)
     result, cycle, _ = orbit(film)
     problem = OrbitProblem(film, rotating_load(), 0.02, 1.0, 1.0)
-    results = SimpleNamespace(cycle=cycle)
-    _attach_pressure_map(results, problem, result.last.film_history)
-    assert results.pressure_at_p_max.max() == pytest.approx(cycle.p_max.max(), rel=1e-6)
+    pressure_at_p_max, _ = _pressure_map(problem, cycle, result.last.film_memory)
+    assert pressure_at_p_max.max() == pytest.approx(cycle.p_max.max(), rel=1e-6)

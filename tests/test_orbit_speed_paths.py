@@ -9,11 +9,12 @@ import math
 import numpy as np
 import pytest
 
-import conrod.dynamics.quasi_static as qs
-from conrod.dynamics import OrbitState
-from conrod.dynamics import squeeze_velocity as sv
+import conrod.orbit.quasi_static as qs
+from conrod.film import reynolds_squeeze as sv
 from conrod.film.base import BearingGeometry, FilmState, Groove
+from conrod.film.capabilities import HasCompiledKernel
 from conrod.film.reynolds import ReynoldsFilm
+from conrod.orbit import OrbitState
 from orbit_helpers import SPEED, engine_like_load, geometry, load_cycle, short_problem
 
 MU = 0.01
@@ -75,7 +76,7 @@ def test_squeeze_velocity_equals_newton_and_balances_the_load(variant):
     if variant == "n_z=6":  # half grid with an odd interval count: full-grid solve
         film = ReynoldsFilm(geo, n_theta=48, n_z=6)
     problem = short_problem(load_cycle(np.cos, np.sin), film=film, viscosity=MU)
-    assert sv.squeeze_applies(problem)
+    assert problem.kernel is not None and problem.kernel.quasi_static_cycle is not None
     newton = qs._generic_newton(problem, 25e-6 * SPEED)
     for x, y, wx, wy, wj, wb in STATES:
         vx, vy, *_, miss = _squeeze_solve(film, x, y, wx, wy, wj, wb)
@@ -92,14 +93,13 @@ def test_reduction_not_used_where_it_is_not_exact():
                           supply_pressure=3e5)
     cavitating = BearingGeometry(0.05, 0.025, 25e-6, cavitation_pressure=-1e4)
     for geo in (fed, cavitating):
-        assert not sv.squeeze_applies(short_problem(loads, film=coarse_film(geometry=geo)))
-    assert not sv.squeeze_applies(short_problem(loads, film=coarse_film(method="sor")))
+        assert short_problem(loads, film=coarse_film(geometry=geo)).kernel is None
+    assert short_problem(loads, film=coarse_film(method="sor")).kernel is None
 
 
 def _orbit(problem, monkeypatch, fast: bool):
     if not fast:
-        monkeypatch.setattr(qs, "squeeze_applies", lambda p: False)
-        monkeypatch.setattr(qs, "table_applies", lambda p: False)
+        monkeypatch.setattr(qs, "compiled_kernel", lambda p: None)
     trajectory = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
     monkeypatch.undo()
     return np.array([trajectory.x, trajectory.y])
@@ -125,7 +125,7 @@ def test_compiled_table_orbit_balances_the_table_force_and_follows_reynolds(tmp_
     table = TabulatedFilm(base, cache_dir=tmp_path)
     loads = load_cycle(*engine_like_load())
     problem = short_problem(loads, film=table, viscosity=MU)
-    assert sv.table_applies(problem)
+    assert qs.compiled_applies(problem)
     run = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
     load_x, load_y = loads.load(run.crank_angle)
     for k in np.flatnonzero(run.contact_force == 0.0)[::7]:
@@ -154,8 +154,8 @@ SHORT_STATES = [  # x, y [m], W_x, W_y [N], ω_j, ω_b [rad/s]
 
 @pytest.mark.parametrize("state", SHORT_STATES)
 def test_short_velocity_equals_newton_and_balances_the_load(state):
-    from conrod.dynamics.short_velocity import newton_short_velocity, short_velocity
     from conrod.film.short_bearing_kernel import short_bearing_force
+    from conrod.film.short_bearing_velocity import newton_short_velocity, short_velocity
 
     x, y, wx, wy, wj, wb = state
     for guess in (0.0, 2.0, -3.0):  # cold starts from anywhere on the circle
@@ -170,7 +170,7 @@ def test_short_velocity_equals_newton_and_balances_the_load(state):
 
 def test_short_velocity_without_load_is_the_half_speed_whirl():
     """No load, no film force: ė = ω̄ × e (SPEC pitfall: the whirl carries nothing)."""
-    from conrod.dynamics.short_velocity import short_velocity
+    from conrod.film.short_bearing_velocity import short_velocity
 
     vx, vy, *_ = short_velocity(10e-6, -4e-6, 0.0, 0.0, SPEED, 30.0, *SHORT, 1.0)
     mean = 0.5 * (SPEED + 30.0)
@@ -181,8 +181,8 @@ def test_short_velocity_without_load_is_the_half_speed_whirl():
 def test_short_unit_force_direction_derivative_and_homogeneity(eps):
     """dg/dα in closed form (arc-end terms vanish with the pressure) against central
     differences of g; F(v_s) = |v_s| F(v̂_s) in the ω̄ frame (both used by the inversion)."""
-    from conrod.dynamics.short_velocity import unit_force_direction
     from conrod.film.short_bearing_kernel import short_bearing_force
+    from conrod.film.short_bearing_velocity import unit_force_direction
 
     h = 1e-3
     for alpha in np.linspace(-3.0, 3.0, 13):
@@ -202,7 +202,7 @@ def test_short_unit_force_direction_derivative_and_homogeneity(eps):
 
 def test_short_force_angle_is_monotone_and_brackets_the_root():
     """The inversion's bracket: φ(α) increases (dφ/dα > 0) and |φ − α − π/2| < π/2."""
-    from conrod.dynamics.short_velocity import unit_force_direction
+    from conrod.film.short_bearing_velocity import unit_force_direction
 
     for eps in (0.0, 0.5, 0.98, 0.9999):
         for alpha in np.linspace(-math.pi, math.pi, 721):
@@ -242,7 +242,7 @@ def test_mobility_orbit_unchanged_by_the_compiled_loop(monkeypatch):
     film = MobilityFilm.short_bearing(geometry(), n_eps=20, n_direction=32)
     loads = load_cycle(*engine_like_load(peak=1.0e5, base=2.0e4))
     problem = short_problem(loads, film=film, viscosity=0.001, contact_film_thickness=1e-6)
-    assert qs.mobility_applies(problem) and qs.compiled_applies(problem)
+    assert isinstance(film, HasCompiledKernel) and qs.compiled_applies(problem)
     fast = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
     slow = _python_loop(problem, monkeypatch)
     assert np.count_nonzero(slow.contact_force) > 3

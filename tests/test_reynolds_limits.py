@@ -158,8 +158,8 @@ def test_warm_start_matches_cold_and_is_cheaper():
     film = ReynoldsFilm(geometry(1.0), n_theta=72, n_z=16)
     first = FilmState(0.6 * C, 0.0, journal_speed=OMEGA, viscosity=MU)
     second = FilmState(0.61 * C, 0.01 * C, journal_speed=OMEGA, viscosity=MU)
-    film.solve(first)
-    warm = film.solve(second)
+    _, memory = film.solve_with_memory(first, film.initial_memory())  # warm start held
+    warm, _ = film.solve_with_memory(second, memory)  # by the caller, not the model
     cold = ReynoldsFilm(geometry(1.0), n_theta=72, n_z=16, warm_start=False).solve(second)
     assert warm.extra["warm_start"] == 1.0 and cold.extra["warm_start"] == 0.0
     assert warm.force_y == pytest.approx(cold.force_y, rel=2e-5)

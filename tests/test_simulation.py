@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 from conrod import Case, Simulation
-from conrod.dynamics.heat_balance import effective_temperature
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmState
 from conrod.film.short_bearing import ShortBearingFilm
+from conrod.orbit.heat_balance import effective_temperature
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 

@@ -18,7 +18,7 @@ HERE = Path(__file__).resolve().parent
 HEADER = """\
 # Ruston & Hornsby 6VEB-X Mk III big-end load, SYNTHESISED (not the published diagram).
 # Made by examples/data/make_ruston_hornsby_load.py from ruston_hornsby_engine_assumed.toml with
-# conrod's engine-load model (seed 003 pressure model, two-mass rod). All engine data ASSUMED;
+# conrod's engine-load model ([D3] pressure model, two-mass rod). All engine data ASSUMED;
 # the published load diagram (Campbell et al. 1967, Booker 1971) was not found in open sources.
 # Frame: connecting-rod (bearing) frame, x towards the small end; load pressing journal on shell.
 """

@@ -2,6 +2,9 @@
 
 Data flows one way: case file → loads → film model → orbit solver → contact/EHD →
 results → plots/report. See ``docs/conventions.md`` for frames and signs.
+
+Docstrings cite the five source documents as [D0]–[D4] (with their section or equation
+numbers) and the literature by author and year; the full list is ``docs/references.md``.
 """
 
 from conrod.cases import Case

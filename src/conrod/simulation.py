@@ -1,4 +1,4 @@
-"""The orchestrator: ``Simulation(case).run() -> RunResults`` (issue 4, SPEC S3).
+"""The orchestrator: ``Simulation(case).run() -> RunResults``.
 
 .. code-block:: python
 
@@ -15,21 +15,26 @@ film model (``[solver] film``) → periodic orbit from the concentric start → 
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from collections.abc import Callable
 from typing import Any
 
+import numpy as np
+
 from conrod.cases.case import Case
 from conrod.contact.analysis import analyse_contact
 from conrod.contact.asperity import kernel_parameters
-from conrod.dynamics.characteristics import cycle_characteristics
-from conrod.dynamics.heat_balance import effective_temperature, relaxed_update
-from conrod.dynamics.periodic import PeriodicOrbit, periodic_orbit
-from conrod.dynamics.problem import OrbitProblem
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmState
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
+from conrod.loads.forces import two_mass_split
+from conrod.orbit.characteristics import cycle_characteristics
+from conrod.orbit.heat_balance import effective_temperature, relaxed_update
+from conrod.orbit.integrators import Integrator
+from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
+from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
 from conrod.results.summary import summarise
 
@@ -45,32 +50,48 @@ class Simulation:
 
     case : Case  Validated case (needs ``[bearing]`` with ``radial_clearance``,
         ``[lubricant]`` and ``[engine]`` or ``[load]``).
-    overrides : keyword arguments replacing ``[solver]`` fields (e.g. ``film="reynolds"``,
-        ``integrator="rk2"``, ``max_cycles=2``); validated like the case file.
+    film : FilmModel, film name or None  The film model object to use, or a registered
+        name replacing ``[solver] film``; None: the case's.
+    loads : LoadCycle or None  Load and surface speeds over the cycle; None: from the
+        case's ``[engine]`` or ``[load]`` table.
+    integrator : Integrator, integrator name or None  Orbit integrator object
+        (:class:`~conrod.orbit.integrators.Integrator`) or a registered name replacing
+        ``[solver] integrator``; None: the case's.
+    housing : None  Elastic housing (bore deformation); reserved — a housing object is
+        refused until the elastic coupling exists.
+    overrides : keyword arguments replacing other ``[solver]`` fields (e.g. ``max_cycles=2``,
+        ``n_theta=72``); validated like the case file.
     """
 
-    def __init__(self, case: Case, **overrides: Any):
+    def __init__(self, case: Case, film: FilmModel | str | None = None,
+                 loads: LoadCycle | None = None, integrator: Integrator | str | None = None,
+                 housing: Any = None, **overrides: Any):
         case.require("run", "bearing", "lubricant")
-        if case.engine is None and case.load is None:
+        if loads is None and case.engine is None and case.load is None:
             raise CaseError("run needs either [engine] or [load] (a load table) in the case file")
-        if case.bearing.radial_clearance is None:
+        bearing, lubricant = case.bearing, case.lubricant
+        assert bearing is not None and lubricant is not None  # checked by require()
+        if bearing.radial_clearance is None:
             raise CaseError("bearing.radial_clearance: required by 'run' [m]")
+        if housing is not None:
+            raise CaseError("housing: an elastic housing is not available in this version "
+                            "(allowed: None, a rigid bore)")
+        names = {"film": film if isinstance(film, str) else None,
+                 "integrator": integrator if isinstance(integrator, str) else None}
         self.case = case
-        self.solver = _solver_with(case, overrides)
-        self._loads = self._read_loads()  # bad tables fail here, before any integration
+        self._bearing, self._lubricant = bearing, lubricant
+        self.solver = _solver_with(case, {**overrides, **names})
+        self._film = None if film is None or isinstance(film, str) else film
+        self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
+        self._loads = loads if loads is not None else self._read_loads()  # bad tables fail here
 
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
         """Bearing geometry with supply features from ``[bearing]``."""
-        bearing = self.case.bearing
-        for method in ("to_geometry", "geometry"):
-            build = getattr(bearing, method, None)
-            if callable(build):
-                return build()
-        return BearingGeometry(bearing.diameter, bearing.width, bearing.radial_clearance)
+        return self._bearing.geometry()
 
     def load_cycle(self) -> LoadCycle:
-        """Load and surface speeds over the cycle (engine loads or the load table)."""
+        """Load and surface speeds over the cycle (given, engine loads or the load table)."""
         return self._loads
 
     def _read_loads(self) -> LoadCycle:
@@ -83,73 +104,82 @@ class Simulation:
         return compute_engine_loads(self.case).to_load_cycle()
 
     def masses(self) -> tuple[float, float]:
-        """Moving masses along film x and y [kg] (seed 000 §3.2).
+        """Moving masses along film x and y [kg] ([D0] §3.2).
 
         ``[solver] mass_x/mass_y`` when given. For engine loads (rod frame, x towards the
-        small end): along the rod the piston plus the whole rod, across it the rod mass
-        reduced to the big end m_rod (L − L_1)/L (two-mass split). For table loads
+        small end): along the rod the piston plus the whole rod, across it the big-end share
+        of the two-mass rod (:func:`conrod.loads.forces.two_mass_split`). For table loads
         :data:`DEFAULT_TABLE_LOAD_MASS`.
         """
         s, engine = self.solver, self.case.engine
         if engine is not None:
             along = engine.piston_mass + engine.rod_mass
-            across = engine.rod_mass * (engine.rod_length - engine.rod_cg_from_big_end) / (
-                engine.rod_length
-            )
+            across = two_mass_split(engine.rod_mass, engine.rod_length,
+                                    engine.rod_cg_from_big_end).big_end
         else:
             along = across = DEFAULT_TABLE_LOAD_MASS
         mass_x = s.mass_x if s.mass_x is not None else along
         mass_y = s.mass_y if s.mass_y is not None else (s.mass_x or across)
         return mass_x, mass_y
 
-    def film(self) -> FilmModel:
-        """The film model of ``[solver] film``."""
+    def film_model(self) -> FilmModel:
+        """The film model: the one given, else the one of ``[solver] film``."""
+        if self._film is not None:
+            return self._film
         return build_film_model(self.solver, self.geometry())
+
+    def integrator(self) -> Integrator | str:
+        """The orbit integrator: the object given, else the name of ``[solver]``."""
+        return self._integrator if self._integrator is not None else self.solver.integrator
 
     def problem(self, viscosity: float | None = None) -> OrbitProblem:
         """Orbit problem at ``viscosity`` [Pa s] (default: at the supply temperature)."""
-        lubricant = self.case.lubricant
+        lubricant = self._lubricant
         mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
         mass_x, mass_y = self.masses()
         return OrbitProblem(
-            self.film(), self.load_cycle(), mu, mass_x, mass_y,
+            self.film_model(), self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, self.solver.contact_film_thickness,
             _asperity_parameters(self.case),
-        )
+)
 
     # -- run --------------------------------------------------------------------------
     def run(self, progress: ProgressCallback | None = None) -> RunResults:
         """Periodic orbit, heat balance, characteristics and contact post-processing."""
         start = time.perf_counter()
-        problem = self.problem()
-        orbit, cycles, iterations, temperature = self._thermal_orbit(problem, progress)
-        problem = problem.with_viscosity(orbit[1])
-        cycle = cycle_characteristics(problem, orbit[0].last)
-        summary = summarise(
-            cycle, orbit[0], problem, self.solver, temperature, cycles, iterations,
-        )
-        results = RunResults(cycle=cycle, summary=summary, clearance=problem.clearance)
-        _attach_pressure_map(results, problem, orbit[0].last.film_history)
-        results.previous_cycle_eccentricity = _previous(orbit[0])
-        results.contact = _contact_analysis(self.case, cycle)
-        summary.wall_time = time.perf_counter() - start
-        return results
+        thermal = self._thermal_orbit(self.problem(), progress)
+        orbit, problem, cycle = thermal.orbit, thermal.problem, thermal.cycle
+        summary = summarise(cycle, orbit, problem, self.solver, thermal.temperature,
+                            thermal.cycles, thermal.iterations, _name(self.integrator()))
+        pressure, grid = _pressure_map(problem, cycle, orbit.last.film_memory)
+        results = RunResults(
+            cycle=cycle, summary=summary, clearance=problem.clearance,
+            pressure_at_p_max=pressure, pressure_grid=grid,
+            previous_cycle_eccentricity=_previous(orbit),
+            contact=analyse_contact(self.case, cycle),
+)
+        wall_time = time.perf_counter() - start
+        return dataclasses.replace(results,
+                                   summary=dataclasses.replace(summary, wall_time=wall_time))
 
-    def _thermal_orbit(self, problem: OrbitProblem, progress: ProgressCallback | None):
-        """Orbit and effective temperature, iterated when μ depends on T (heat_balance)."""
-        lubricant, s = self.case.lubricant, self.solver
+    def _thermal_orbit(self, problem: OrbitProblem, progress: ProgressCallback | None
+) -> _ThermalOrbit:
+        """Orbit, its characteristics and the effective temperature, iterated when μ
+        depends on T (heat balance); the characteristics are solved once per orbit."""
+        lubricant, s = self._lubricant, self.solver
         temperature = lubricant.supply_temperature
         viscosity, cycles, state = problem.viscosity, 0, None
         iterations = s.thermal_iterations if lubricant.temperature_dependent else 0
         for iteration in range(iterations + 1):
             stage = "orbit" if iteration == 0 else f"heat balance {iteration}"
-            orbit = self._orbit(problem.with_viscosity(viscosity), state, stage, progress)
+            current = problem.with_viscosity(viscosity)
+            orbit = self._orbit(current, state, stage, progress)
             cycles += orbit.cycles
-            target = _heat_balance_temperature(problem.with_viscosity(viscosity), orbit, lubricant)
-            if target is None or iteration == iterations:
-                return (orbit, viscosity), cycles, iteration, target
-            if abs(target - temperature) <= s.thermal_tolerance:
-                return (orbit, viscosity), cycles, iteration, target
+            cycle = cycle_characteristics(current, orbit.last)
+            target = _heat_balance_temperature(cycle, lubricant)
+            if (target is None or iteration == iterations
+                    or abs(target - temperature) <= s.thermal_tolerance):
+                return _ThermalOrbit(orbit, current, cycle, target, cycles, iteration)
             temperature = relaxed_update(temperature, target)
             viscosity = lubricant.viscosity_at(temperature)
             state = orbit.last.end_state
@@ -160,7 +190,31 @@ class Simulation:
             if progress is not None:
                 progress(stage, cycle, error)
 
-        return periodic_orbit(problem, self.solver, start=state, on_cycle=on_cycle)
+        return periodic_orbit(problem, self.solver, integrator=self.integrator(),
+                              start=state, on_cycle=on_cycle)
+
+
+@dataclasses.dataclass(frozen=True)
+class _ThermalOrbit:
+    """The converged orbit of the heat balance and what was computed along with it."""
+
+    orbit: PeriodicOrbit
+    problem: OrbitProblem
+    cycle: CycleResults
+    temperature: float | None
+    cycles: int
+    iterations: int
+
+
+def default_film(case: Case) -> FilmModel:
+    """The film model of ``[solver] film`` for the case's bearing."""
+    if case.bearing is None:
+        raise CaseError("[bearing]: required for a film model")
+    return build_film_model(case.solver, case.bearing.geometry())
+
+
+def _name(choice: Integrator | str) -> str:
+    return choice if isinstance(choice, str) else choice.name
 
 
 def _solver_with(case: Case, overrides: dict[str, Any]):
@@ -173,39 +227,32 @@ def _solver_with(case: Case, overrides: dict[str, Any]):
     return validate_section(SolverSection, {**case.solver.model_dump(), **clean}, "solver")
 
 
-def _heat_balance_temperature(
-    problem: OrbitProblem, orbit: PeriodicOrbit, lubricant
-) -> float | None:
-    """T_eff [°C] from the mean friction power and side flow of ``orbit``."""
-    cycle = cycle_characteristics(problem, orbit.last)
+def _heat_balance_temperature(cycle: CycleResults, lubricant) -> float | None:
+    """T_eff [°C] from the mean friction power and side flow of the cycle."""
     return effective_temperature(
         float(cycle.friction_power.mean()), float(cycle.side_flow.mean()),
         lubricant.supply_temperature, lubricant.density, lubricant.specific_heat,
-    )
+)
 
 
-def _attach_pressure_map(
-    results: RunResults, problem: OrbitProblem, film_history: list | None = None
-) -> None:
-    """Pressure field at the crank angle of the largest p_max (with the film memory ϑ there,
-    for a mass-conserving film)."""
-    cycle: CycleResults = results.cycle
+def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None = None):
+    """(pressure field p(θ, z) [Pa], grid (θ [rad], z [m])) at the crank angle of the
+    largest p_max, with the film memory sampled there (film fraction ϑ of a
+    mass-conserving film); (None, None) for a film without a pressure field."""
     i = int(cycle.p_max.argmax())
     state = FilmState(
         float(cycle.eccentricity_x[i]), float(cycle.eccentricity_y[i]),
         float(cycle.velocity_x[i]), float(cycle.velocity_y[i]),
         float(cycle.journal_speed[i]), float(cycle.shell_speed[i]), problem.viscosity,
-        history=film_history[i] if film_history else None,
-    )
-    field = problem.film.solve(state, with_pressure=True).pressure
-    if field is not None:
-        results.pressure_at_p_max = field
-        results.pressure_grid = problem.film.grid()
+)
+    session = problem.session(film_memory[i] if film_memory else None)
+    field = session.solve(state, with_pressure=True).pressure
+    if field is None:
+        return None, None
+    return field, problem.film.grid()
 
 
-def _previous(orbit: PeriodicOrbit):
-    import numpy as np
-
+def _previous(orbit: PeriodicOrbit) -> np.ndarray | None:
     if orbit.previous is None:
         return None
     return np.vstack([orbit.previous.x, orbit.previous.y])
@@ -218,9 +265,4 @@ def _asperity_parameters(case: Case):
     return kernel_parameters(case)
 
 
-def _contact_analysis(case: Case, cycle: CycleResults):
-    """Contact post-processing: friction work, wear, Hertz stress (SPEC S4)."""
-    return analyse_contact(case, cycle)
-
-
-__all__ = ["Simulation"]
+__all__ = ["Simulation", "default_film"]

@@ -86,7 +86,7 @@ def _describe(root: type[BaseModel], error: Any, prefix: str) -> str:
         return (
             f"{dotted}: unknown key '{name}'{suggestion} "
             f"(valid keys here: {', '.join(valid)})"
-        )
+)
     if kind == "missing":
         unit = field_unit(model, name)
         return f"{dotted}: required field is missing" + (f" [{unit}]" if unit else "")

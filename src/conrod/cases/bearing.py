@@ -1,4 +1,4 @@
-"""``[bearing]`` section: journal-bearing geometry and oil-supply features (SPEC S2).
+"""``[bearing]`` section: journal-bearing geometry and oil-supply features.
 
 Angles of supply features are in degrees, measured on the shell in the film frame
 (θ from +x towards +y, see :mod:`conrod.film.base`); everything else is SI. Example::
@@ -66,13 +66,13 @@ class BearingSection(Section):
     width: float = Field(gt=0.0, le=5.0, description="Working shell width l' (axial length) [m]")
     radial_clearance: float | None = Field(
         default=None, gt=0.0, le=1.0e-2, description="Radial clearance c [m]"
-    )
+)
     supply_pressure: float = Field(
         default=0.0, ge=0.0, le=1.0e7, description="Gauge oil-supply pressure p_s [Pa]"
-    )
+)
     cavitation_pressure: float = Field(
         default=0.0, ge=-1.0e5, le=0.0, description="Gauge cavitation pressure p_cav [Pa]"
-    )
+)
     grooves: list[GrooveSection] = Field(default_factory=list,
                                          description="Oil grooves in the shell [-]")
     feed_holes: list[FeedHoleSection] = Field(default_factory=list,
@@ -89,7 +89,7 @@ class BearingSection(Section):
             feed_holes=tuple(h.to_feed_hole() for h in self.feed_holes),
             supply_pressure=self.supply_pressure,
             cavitation_pressure=self.cavitation_pressure,
-        )
+)
 
     def _check_features_inside_width(self) -> None:
         half = 0.5 * self.width

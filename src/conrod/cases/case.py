@@ -71,7 +71,7 @@ class Case(Section):
     @classmethod
     def from_dict(
         cls, data: dict, *, base_dir: str | os.PathLike[str] | None = None, path: Path | None = None
-    ) -> Case:
+) -> Case:
         """Validate a case given as a dict (as parsed from TOML)."""
         case = validate_section(cls, data)
         case._base_dir = Path(base_dir) if base_dir is not None else Path.cwd()
@@ -102,4 +102,4 @@ class Case(Section):
                 f"case file{where} lacks the section(s) "
                 + ", ".join(f"[{name}]" for name in missing)
                 + f" needed by '{command}'"
-            )
+)

@@ -1,6 +1,6 @@
-"""``[engine]`` and ``[engine.pressure_model]`` sections (SPEC S1, seed 003 §2).
+"""``[engine]`` and ``[engine.pressure_model]`` sections ([D3] §2).
 
-The keys named in issue 2 are fixed; later checks rely on them.
+The key names are fixed; later checks rely on them.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from conrod.cases.base import Section
 
 
 class PressureModelSection(Section):
-    """Parametric 4-stroke cylinder-pressure model of seed 003 (all pressures absolute)."""
+    """Parametric 4-stroke cylinder-pressure model of [D3] (all pressures absolute)."""
 
     compression_ratio: float = Field(gt=1.0, le=40.0, description="Compression ratio ε [-]")
     intake_pressure: float = Field(gt=0.0, le=1.0e7, description="Intake pressure p_a [Pa]")
@@ -22,12 +22,12 @@ class PressureModelSection(Section):
     exhaust_pressure: float = Field(gt=0.0, le=1.0e7, description="Exhaust pressure p_b [Pa]")
     max_pressure_duration: float = Field(
         ge=0.0, le=150.0, description="Duration θ of constant p_z after 15° ATDC [deg]"
-    )
+)
     compression_index: float = Field(gt=1.0, le=1.7, description="Polytropic index n1 [-]")
     expansion_index: float = Field(gt=1.0, le=1.7, description="Polytropic index n2 [-]")
     ambient_pressure: float = Field(
         default=1.0e5, gt=0.0, le=1.0e6, description="Ambient (crankcase) pressure [Pa]"
-    )
+)
 
 
 class EngineSection(Section):
@@ -37,36 +37,36 @@ class EngineSection(Section):
     stroke: float = Field(gt=0.0, le=4.0, description="Piston stroke S_p = 2 r [m]")
     rod_length: float = Field(
         gt=0.0, le=10.0, description="Rod length L, big-end to small-end centre [m]"
-    )
+)
     speed: float = Field(gt=0.0, le=30000.0, description="Crank speed n [rpm]")
     piston_mass: float = Field(gt=0.0, le=1.0e4, description="Piston, pin and rings m_p [kg]")
     rod_mass: float = Field(gt=0.0, le=1.0e4, description="Connecting-rod mass m_rod [kg]")
     rod_cg_from_big_end: float = Field(
         gt=0.0, le=10.0, description="Rod centre of mass from the big-end centre L_1 [m]"
-    )
+)
     rod_inertia: float | None = Field(
         default=None,
         gt=0.0,
         le=1.0e3,
         description="Rod moment of inertia about its centre of mass J_c [kg m^2]; "
         "three-mass rod model when given",
-    )
+)
     pressure_trace: Path | None = Field(
         default=None,
         description="CSV file with columns crank_angle_deg, pressure_Pa (absolute) over 0..720 [-]",
-    )
+)
     pressure_model: PressureModelSection | None = None
     ambient_pressure: float | None = Field(
         default=None,
         gt=0.0,
         le=1.0e6,
         description="Ambient (crankcase) pressure used with pressure_trace; default 1e5 [Pa]",
-    )
+)
     kinematics: Literal["exact", "series"] = Field(
         default="exact",
-        description="Piston acceleration of the two-mass model: exact or the seed-003 "
+        description="Piston acceleration of the two-mass model: exact or the [D3] "
         "series r ω²(cos φ + λ cos 2φ) [-]",
-    )
+)
 
     @model_validator(mode="after")
     def _check_geometry(self) -> EngineSection:
@@ -75,21 +75,21 @@ class EngineSection(Section):
             raise ValueError(
                 f"engine.rod_length = {self.rod_length!r} m must exceed the crank radius "
                 f"stroke/2 = {crank_radius:g} m (allowed: rod_length > {crank_radius:g} m)"
-            )
+)
         if self.rod_cg_from_big_end >= self.rod_length:
             raise ValueError(
                 f"engine.rod_cg_from_big_end = {self.rod_cg_from_big_end!r} m must lie on the rod "
                 f"(allowed: 0 < rod_cg_from_big_end < rod_length = {self.rod_length:g} m)"
-            )
+)
         if (self.pressure_trace is None) == (self.pressure_model is None):
             raise ValueError(
                 "engine: give exactly one of pressure_trace (CSV file) or [engine.pressure_model]"
-            )
+)
         if self.ambient_pressure is not None and self.pressure_model is not None:
             raise ValueError(
                 "engine.ambient_pressure is for pressure_trace; with [engine.pressure_model] "
                 "set engine.pressure_model.ambient_pressure instead"
-            )
+)
         return self
 
     @property

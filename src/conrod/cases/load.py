@@ -1,4 +1,4 @@
-"""``[load]`` section: a tabulated bearing load instead of ``[engine]`` (issue 4).
+"""``[load]`` section: a tabulated bearing load instead of ``[engine]``.
 
 The table (CSV) has the columns ``crank_angle_deg, load_x_N, load_y_N``: the load pressing
 the journal on the shell in the bearing (film) frame. Read by
@@ -21,15 +21,15 @@ class LoadTableSection(Section):
     table: Path = Field(description="CSV with columns crank_angle_deg, load_x_N, load_y_N [-]")
     speed: float = Field(
         gt=0.0, le=30000.0, description="Crank speed n mapping angle to time [rpm]"
-    )
+)
     cycle_deg: Literal[360, 720] = Field(default=720, description="Load cycle length [deg]")
     journal_speed: float | None = Field(
         default=None, ge=-1.0e4, le=1.0e4,
         description="Journal angular velocity ω_j, default: the crank speed [rad/s]",
-    )
+)
     shell_speed: float = Field(
         default=0.0, ge=-1.0e4, le=1.0e4, description="Shell angular velocity ω_b [rad/s]"
-    )
+)
     scale: float = Field(
         default=1.0, gt=0.0, le=1.0e6, description="Factor applied to the tabulated loads [-]"
-    )
+)

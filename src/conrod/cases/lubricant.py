@@ -1,11 +1,11 @@
-"""``[lubricant]`` section: oil properties (SPEC S2 'Viscosity', issue 4).
+"""``[lubricant]`` section: oil properties.
 
 Viscosity is either constant (``viscosity``) or given by the Vogel law
 
 .. math:: μ(T) = a \\exp\\left(\\frac{b}{T + c}\\right),  T in °C,
 
 with ``vogel_a`` [Pa s], ``vogel_b`` [°C], ``vogel_c`` [°C]. The effective film temperature
-comes from the heat balance of :mod:`conrod.dynamics.heat_balance`, starting from
+comes from the heat balance of :mod:`conrod.orbit.heat_balance`, starting from
 ``supply_temperature`` [°C].
 """
 
@@ -23,23 +23,23 @@ class LubricantSection(Section):
 
     viscosity: float | None = Field(
         default=None, gt=0.0, le=10.0, description="Dynamic viscosity μ (constant) [Pa s]"
-    )
+)
     vogel_a: float | None = Field(
         default=None, gt=0.0, le=10.0, description="Vogel law factor a in μ = a exp(b/(T+c)) [Pa s]"
-    )
+)
     vogel_b: float | None = Field(
         default=None, gt=0.0, le=1.0e5, description="Vogel law constant b [°C]"
-    )
+)
     vogel_c: float | None = Field(
         default=None, gt=-273.0, le=1.0e3, description="Vogel law constant c [°C]"
-    )
+)
     density: float = Field(default=860.0, gt=100.0, le=2000.0, description="Density ρ [kg/m^3]")
     specific_heat: float = Field(
         default=2000.0, gt=100.0, le=10000.0, description="Specific heat c_p [J/(kg K)]"
-    )
+)
     supply_temperature: float = Field(
         default=90.0, gt=-50.0, le=300.0, description="Oil supply (inlet) temperature [°C]"
-    )
+)
 
     @model_validator(mode="after")
     def _one_viscosity_source(self) -> LubricantSection:
@@ -51,12 +51,12 @@ class LubricantSection(Section):
             raise ValueError(
                 "lubricant: give exactly one of viscosity [Pa s] or the Vogel law "
                 "(vogel_a [Pa s], vogel_b [°C], vogel_c [°C])"
-            )
+)
         if has_vogel and self.supply_temperature + self.vogel_c <= 0.0:  # type: ignore[operator]
             raise ValueError(
                 f"lubricant.supply_temperature = {self.supply_temperature} °C must exceed "
                 f"-vogel_c = {-self.vogel_c:g} °C"  # type: ignore[operator]
-            )
+)
         return self
 
     @property

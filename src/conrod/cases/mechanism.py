@@ -1,6 +1,6 @@
-"""``[clearance]``, ``[clearance.big_end]`` and ``[clearance.small_end]`` (issue 6, seed 003).
+"""``[clearance]``, ``[clearance.big_end]`` and ``[clearance.small_end]`` ([D3]).
 
-The joint keys are fixed by issue 6; the seed-003 symbol of each is in its description.
+The joint keys are fixed; the [D3] symbol of each is in its description.
 ``[clearance]`` itself holds the numerics of the mechanism run (all optional).
 """
 
@@ -14,36 +14,36 @@ from conrod.cases.base import Section
 
 
 class JointClearanceSection(Section):
-    """One clearance joint with a worn elliptical shell (seed 003 symbols in brackets)."""
+    """One clearance joint with a worn elliptical shell ([D3] symbols in brackets)."""
 
     diameter: float = Field(gt=0.0, le=5.0, description="Journal/pin diameter D or d [m]")
     clearance_max: float = Field(
         gt=0.0, le=1.0e-2, description="Diametral clearance along the major axis Δmax [m]"
-    )
+)
     clearance_min: float = Field(
         gt=0.0, le=1.0e-2, description="Diametral clearance along the minor axis Δmin [m]"
-    )
+)
     ellipse_angle_deg: float = Field(
         default=0.0, ge=-180.0, le=180.0,
         description="Angle γ from the rod axis to the ellipse major axis, "
         "towards y_rod like the shell angle θ [deg]",
-    )
+)
     contact_stiffness: float = Field(
         default=1.0e13, gt=0.0, le=1.0e20, description="Contact stiffness c [N/m^exponent]"
-    )
+)
     contact_exponent: float = Field(
         default=1.5, ge=1.0, le=3.0, description="Contact force exponent α [-]"
-    )
+)
     damping_factor: float = Field(
         default=0.1, ge=0.0, le=2.0, description="Damping factor μ in β = 2μ√(c·m_eff) [-]"
-    )
+)
     friction_coefficient: float = Field(
         default=0.0, ge=0.0, le=1.0, description="Coulomb friction coefficient f₁₂ [-]"
-    )
+)
     damping_scale: float = Field(
         default=1.0, ge=0.0, le=10.0,
-        description="Extra factor on β; seed 003 uses 0.3 at the small end [-]",
-    )
+        description="Extra factor on β; [D3] uses 0.3 at the small end [-]",
+)
 
     @field_validator("clearance_min")
     @classmethod
@@ -63,35 +63,35 @@ class ClearanceSection(Section):
     cycles: int = Field(
         default=2, ge=1, le=50,
         description="Engine cycles integrated; results from the last one [-]",
-    )
+)
     tolerance: float = Field(
         default=1.0e-4, gt=0.0, le=1.0e-1,
         description="Local error per step relative to the smallest radial clearance [-]",
-    )
+)
     output_step_deg: float = Field(
         default=0.5, gt=0.0, le=10.0, description="Crank-angle spacing of the results [deg]"
-    )
+)
     max_step_deg: float = Field(
         default=0.25, gt=0.0, le=5.0, description="Largest integrator step [deg]"
-    )
+)
     impact_separation: float = Field(
         default=0.01, gt=0.0, le=1.0,
         description="Separation (fraction of the joint's smallest radial clearance) "
         "before a new contact entry counts as an impact [-]",
-    )
+)
     friction_velocity: float = Field(
         default=1.0e-3, gt=0.0, le=1.0,
         description="Sliding speed below which friction is smoothed v₀ [m/s]",
-    )
+)
     load_scale: float = Field(
         default=1.0, ge=0.0, le=5.0, description="Factor on the gas pressure (load) [-]"
-    )
+)
     contact_geometry: Literal["seed", "exact"] = Field(
         default="seed",
-        description="seed: penetration along the line of centres (seed 003); exact: "
+        description="seed: penetration along the line of centres ([D3]); exact: "
         "ellipse-circle contact along the contact normal [-]",
-    )
+)
     worn_joint: Literal["auto", "big_end", "small_end"] = Field(
         default="auto",
         description="Joint diagnosed in the sweep; auto = the larger clearance_max/diameter [-]",
-    )
+)

@@ -83,7 +83,7 @@ def register(app: typer.Typer) -> None:
         grid: str = typer.Option(None, help="NTHETAxNZ intervals, e.g. 144x32"),
         friction: Friction = FRICTION_OPTION,
         as_json: bool = typer.Option(False, "--json", help="Print JSON"),
-    ) -> None:
+) -> None:
         """Steady bearing characteristics under Raimondi & Boyd's full-bearing conditions."""
         cells = parse_grid(grid)
         if eccentricity is not None:

@@ -1,4 +1,4 @@
-"""Contact stage of the conrod pipeline (SPEC S4, seed 004): contact intervals, Hertz stress,
+"""Contact stage of the conrod pipeline ([D4]): contact intervals, Hertz stress,
 friction work and wear on journal and shell, Greenwood–Tripp asperity contact, running-in.
 
 Modules: :mod:`~conrod.contact.hertz`, :mod:`~conrod.contact.friction_work`,

@@ -1,9 +1,9 @@
 """Contact post-processing of a periodic orbit: contact intervals, Hertz stress, friction
-work, wear on journal and shell (issue 5, seed 004 §4.3–4.5).
+work, wear on journal and shell ([D4] §4.3–4.5).
 
 ``Simulation.run()`` calls :func:`analyse_contact` after the orbit (``docs/orbit.md``).
 With ``[contact] model = "hard"`` the contact force is the orbit's hard-contact force
-P_c (seed 004 eq. 4.2.5); with ``"greenwood_tripp"`` the asperity force recomputed from the
+P_c ([D4] eq. 4.2.5); with ``"greenwood_tripp"`` the asperity force recomputed from the
 orbit (the same compiled kernel the orbit used) is added, with boundary friction μ_dry × that
 force (both radial along the line of centres).
 """
@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -83,7 +82,7 @@ class ContactResults:
     wear: WearDistribution
     """Friction work and wear per element of journal and shell [J, m]."""
     nominal_specific_load: float
-    """P_c,max/(B·D) [Pa] (seed 004 eq. 4.4.1)."""
+    """P_c,max/(B·D) [Pa] ([D4] eq. 4.4.1)."""
     h_min: np.ndarray
     """Minimum film thickness from the orbit [m]."""
     p_max: np.ndarray
@@ -121,7 +120,7 @@ class ContactResults:
 
     @property
     def hertz_to_nominal_ratio(self) -> float | None:
-        """Hertz stress / nominal specific load at the largest contact force [-] (seed 2.37);
+        """Hertz stress / nominal specific load at the largest contact force [-] ([D4]: 2.37);
         None without contact."""
         if self.nominal_specific_load <= 0.0:
             return None
@@ -129,13 +128,13 @@ class ContactResults:
 
     @property
     def seed_friction_work(self) -> float:
-        """Seed 004 eq. 4.5.1, μ R Σ P_f Δφ with P_f = μ P_c: relative rotation taken equal
+        """[D4] eq. 4.5.1, μ R Σ P_f Δφ with P_f = μ P_c: relative rotation taken equal
         to the crank angle (ignores the rod swing) [J]."""
         step = cycle_length(self.crank_angle) / self.crank_angle.size
         return float(np.sum(self.friction_force) * self.journal_radius * step)
 
     def summary_items(self) -> dict[str, Any]:
-        """Items merged into summary.json (issue 5 CLI contract)."""
+        """Items merged into summary.json."""
         return {
             "contact_model": self.model,
             "contact_intervals_deg": [
@@ -162,18 +161,12 @@ class ContactResults:
             "friction_work_cumulative_J": self.work.cumulative,
         }
 
-    def write_files(self, out_dir: str | Path) -> list[Path]:
-        """Write ``wear_journal.csv``, ``wear_shell.csv`` and the contact figures."""
-        from conrod.contact.output import write_contact_files
-
-        return write_contact_files(self, Path(out_dir))
-
 
 def _contact_from_asperity(case, cycle) -> tuple[np.ndarray, np.ndarray]:
     bearing = case.bearing
     params = AsperityParameters.from_case(case).kernel_parameters(
         0.5 * bearing.diameter, bearing.width
-    )
+)
     ex = np.ascontiguousarray(cycle.eccentricity_x, dtype=float)
     ey = np.ascontiguousarray(cycle.eccentricity_y, dtype=float)
     fx, fy = asperity_force_array(ex, ey, float(bearing.radial_clearance), params)
@@ -213,18 +206,18 @@ def analyse_contact(case, cycle) -> ContactResults:
     modulus = contact_modulus(
         section.journal_elastic_modulus, section.journal_poisson_ratio,
         section.shell_elastic_modulus, section.shell_poisson_ratio,
-    )
+)
     shell_radius = radius + bearing.radial_clearance
     work = friction_work_distribution(
         crank_angle, friction, angle, np.asarray(cycle.journal_rotation, dtype=float),
         radius, section.surface_elements, cycle_rad,
-    )
+)
     peak_load = float(np.max(np.hypot(cycle.load_x, cycle.load_y)))
     stress = hertz_line_contact_pressure(force, width, radius, shell_radius, modulus)
     journal_stress, shell_stress = element_maximum(
         stress, angle, np.asarray(cycle.journal_rotation, dtype=float), crank_angle,
         section.surface_elements, cycle_rad,
-    )
+)
     return ContactResults(
         crank_angle=crank_angle,
         contact_force=force,
@@ -233,18 +226,18 @@ def analyse_contact(case, cycle) -> ContactResults:
         hertz_half_width=hertz_half_width(force, width, radius, shell_radius, modulus),
         intervals=contact_intervals(
             crank_angle, force, section.contact_threshold_ratio * peak_load, cycle_rad
-        ),
+),
         work=work,
         wear=wear_distribution(
             work, radius, width, section.wear_coefficient_journal, section.wear_coefficient_shell
-        ),
+),
         nominal_specific_load=float(
             nominal_specific_load(np.max(force), width, bearing.diameter)
-        ),
+),
         h_min=np.asarray(cycle.h_min, dtype=float),
         p_max=np.asarray(cycle.p_max, dtype=float),
         model=section.model,
         journal_stress=journal_stress,
         shell_stress=shell_stress,
         journal_radius=radius,
-    )
+)

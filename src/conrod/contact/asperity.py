@@ -1,4 +1,4 @@
-"""Greenwood–Tripp asperity contact for mixed lubrication (SPEC S4 'beyond the seed').
+"""Greenwood–Tripp asperity contact for mixed lubrication.
 
 Nominal asperity pressure between two rough surfaces at a mean gap h
 (Greenwood & Tripp 1970):
@@ -114,7 +114,7 @@ def roughness_constant(roughness: float, density: float, summit_radius: float) -
     """K = (16√2/15)·π·(ηβσ)²·√(σ/β) [-], σ [m], η [1/m²], β [m]."""
     return (16.0 * math.sqrt(2.0) / 15.0) * math.pi * (density * summit_radius * roughness) ** 2 * (
         math.sqrt(roughness / summit_radius)
-    )
+)
 
 
 def asperity_pressure(gap: np.ndarray | float, roughness: float, pressure_scale: float):
@@ -185,7 +185,7 @@ class AsperityParameters:
         modulus = contact_modulus(
             section.journal_elastic_modulus, section.journal_poisson_ratio,
             section.shell_elastic_modulus, section.shell_poisson_ratio,
-        )
+)
         return cls(section.roughness, section.asperity_density, section.asperity_radius, modulus)
 
     @property

@@ -1,5 +1,5 @@
 """Dry-friction work over the cycle and its distribution over surface elements of the
-journal and of the shell (seed 004 §4.5, eq. 4.5.1).
+journal and of the shell ([D4] §4.5, eq. 4.5.1).
 
 Work is friction force × sliding distance. At the contact point the journal surface
 slides over the shell by R·dψ (ψ = journal rotation relative to the shell,
@@ -9,9 +9,9 @@ is neglected). Over a step between two output angles the trapezoidal rule gives
 .. math:: ΔA_i = \\tfrac12 (P_{f,i} + P_{f,i+1}) \\, R \\, |ψ_{i+1} - ψ_i|,
           \\qquad A = \\sum_i ΔA_i .
 
-The seed writes A = μ_dry R Σ P_c Δφ, i.e. it takes the relative rotation equal to the
+[D4] writes A = μ_dry R Σ P_c Δφ, i.e. it takes the relative rotation equal to the
 crank-angle step (dψ = dφ) and P_f = μ_dry P_c. In the rod frame dψ = dφ − dβ, so the
-seed's form ignores the rod swing (|dβ/dφ| ≤ λ ≈ 0.3, zero on average over a cycle);
+[D4]'s form ignores the rod swing (|dβ/dφ| ≤ λ ≈ 0.3, zero on average over a cycle);
 for ψ = φ and a periodic cycle both sums are identical (:func:`seed_friction_work`).
 
 Distribution: during a step the contact point moves on the shell from θ_i to θ_{i+1}
@@ -77,7 +77,7 @@ def element_maximum(
     crank_angle: np.ndarray, elements: int, cycle: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Largest value (e.g. contact stress [Pa]) each journal and shell element sees over the
-    cycle while the contact point passes over it (seed 004 Fig. 4.4.1); (journal, shell)."""
+    cycle while the contact point passes over it ([D4] Fig. 4.4.1); (journal, shell)."""
     cycle = cycle_length(crank_angle) if cycle is None else cycle
     _, psi = close_cycle(crank_angle, journal_rotation, cycle)
     theta = np.unwrap(np.append(contact_angle, contact_angle[0]).astype(float))
@@ -170,6 +170,6 @@ def friction_work_distribution(
 
 def seed_friction_work(contact_force: np.ndarray, crank_step: float, friction_coefficient: float,
                        radius: float) -> float:
-    """Seed 004 eq. 4.5.1: A = μ_dry R Σ P_c Δφ [J] (contact force [N], crank step [rad],
+    """[D4] eq. 4.5.1: A = μ_dry R Σ P_c Δφ [J] (contact force [N], crank step [rad],
     μ_dry [-], radius [m])."""
     return float(friction_coefficient * radius * np.sum(contact_force) * crank_step)

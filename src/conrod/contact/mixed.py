@@ -3,7 +3,7 @@ friction, behind the same :class:`conrod.film.base.FilmModel` interface.
 
 The orbit solver's generic path calls ``film.force(state)``; wrapping its film as
 ``MixedLubricationFilm(film, params, μ_dry)`` makes the film and the asperities share the
-load (SPEC S4, "so that the transition is smooth"):
+load, so that the transition from film to contact is smooth:
 
 .. math:: F = F_{film} + F_a - μ_{dry} |F_a|\\, s\\, \\hat t, \\qquad
           s = \\tanh(V_s / v_{reg}),\\quad V_s = \\mathbf v·\\hat t + (ω_j - ω_b) R,
@@ -21,10 +21,10 @@ import math
 from dataclasses import dataclass
 
 import numba as nb
-import numpy as np
 
 from conrod.contact.asperity import asperity_force
-from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
+from conrod.film.base import FilmModel, FilmResult, FilmState
+from conrod.film.wrapper import FilmWrapper
 
 SLIDING_REGULARISATION_SPEED = 1.0e-4
 """Sliding speed below which boundary friction is regularised (tanh) [m/s]."""
@@ -54,10 +54,11 @@ def asperity_force_with_friction(
 
 
 @dataclass
-class MixedLubricationFilm:
+class MixedLubricationFilm(FilmWrapper):
     """A film model whose force includes Greenwood–Tripp asperity contact.
 
-    base : FilmModel  The oil-film model.
+    base : FilmModel  The oil-film model (its memory and deformation support are declared
+        through :class:`~conrod.film.wrapper.FilmWrapper`).
     asperity_parameters : tuple  (R [m], L [m], σ [m], K E' [Pa]) of
         :func:`conrod.contact.asperity.kernel_parameters`.
     friction_coefficient : float  Boundary (dry) friction coefficient μ_dry [-].
@@ -67,41 +68,21 @@ class MixedLubricationFilm:
     asperity_parameters: tuple[float, float, float, float]
     friction_coefficient: float = 0.1
 
-    @property
-    def name(self) -> str:
-        """Name of the base film model [-]."""
-        return self.base.name
-
-    @property
-    def geometry(self) -> BearingGeometry:
-        """Bearing geometry of the base film."""
-        return self.base.geometry
-
     def _asperity(self, state: FilmState) -> tuple[float, float, float, float]:
         return asperity_force_with_friction(
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             state.journal_speed - state.shell_speed, self.geometry.radial_clearance,
             self.asperity_parameters, self.friction_coefficient,
-        )
+)
 
-    def force(self, state: FilmState) -> tuple[float, float]:
+    def adjust_force(self, state: FilmState, fx: float, fy: float) -> tuple[float, float]:
         """Film + asperity + boundary-friction force on the journal (F_x, F_y) [N]."""
-        fx, fy = self.base.force(state)
         ax, ay, _, _ = self._asperity(state)
-        return float(fx) + ax, float(fy) + ay
+        return fx + ax, fy + ay
 
-    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+    def adjust_result(self, state: FilmState, result: FilmResult) -> FilmResult:
         """The base film's result; asperity normal and friction forces [N] in ``extra``."""
-        result = self.base.solve(state, with_pressure=with_pressure)
         _, _, normal, friction = self._asperity(state)
         result.extra["asperity_force_N"] = normal
         result.extra["boundary_friction_N"] = friction
         return result
-
-    def grid(self) -> tuple[np.ndarray, np.ndarray]:
-        """Grid of the base film."""
-        return self.base.grid()
-
-    def initial_history(self) -> np.ndarray | None:
-        """Initial history of the base film."""
-        return self.base.initial_history()

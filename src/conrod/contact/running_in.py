@@ -1,6 +1,6 @@
 """Running-in (optional): evolve the shell profile with its wear over many cycles, feeding
 the worn profile back into the film thickness as the additive field δ(θ, z) of
-:class:`conrod.film.base.FilmState` (SPEC S4, issue 5).
+:class:`conrod.film.base.FilmState`.
 
 The cycles are lumped into ``stages``: each stage runs the periodic orbit with the current
 worn profile, takes the shell wear per cycle from :func:`analyse_contact`, and advances the
@@ -10,12 +10,13 @@ Journal wear is not fed back: the journal turns, so its wear is not fixed in the
 and mostly enlarges the clearance uniformly.
 
 The orbit is run by ``simulate(case, profile)``, where ``profile(theta, z)`` returns δ [m]
-on any film grid (θ [rad], z [m]). The default runs :class:`conrod.simulation.Simulation`
-with its film wrapped in :class:`WornShellFilm`, which hands δ on the film's grid to every
-film state. Only film models that honour ``FilmState.deformation`` feel the wear
-(``reynolds``, ``mass_conserving``); the closed-form ``short`` film and its derivatives do
-not, so :func:`run_in` refuses them. Limits: the hard-contact circle of the orbit solver and
-the Greenwood–Tripp kernel keep the round shell (the wear only opens the film).
+on any film grid (θ [rad], z [m]). The default hands :class:`conrod.simulation.Simulation`
+the case's film wrapped in :class:`WornShellFilm`, which adds δ on the film's grid to every
+film state. Only film models that declare
+:class:`~conrod.film.capabilities.SupportsDeformation` feel the wear (``reynolds``,
+``mass_conserving``); the others (closed-form ``short``, tables) are refused. Limits: the
+hard-contact circle of the orbit solver and the Greenwood–Tripp kernel keep the round shell
+(the wear only opens the film).
 """
 
 from __future__ import annotations
@@ -28,6 +29,8 @@ import numpy as np
 
 from conrod.contact.wear import worn_profile_deformation
 from conrod.errors import CaseError
+from conrod.film.capabilities import SupportsDeformation
+from conrod.film.wrapper import FilmWrapper
 
 Profile = Callable[[np.ndarray, np.ndarray], np.ndarray]
 """Worn-shell film-thickness field δ(θ [rad], z [m]) -> array (len θ, len z) [m]."""
@@ -63,15 +66,12 @@ def profile_from_wear(element_angle: np.ndarray, shell_wear: np.ndarray) -> Prof
     return profile
 
 
-DEFORMABLE_FILMS = ("reynolds", "mass_conserving")
-"""Film models that use ``FilmState.deformation`` (and so feel a worn shell) [-]."""
-
-
 @dataclass
-class WornShellFilm:
+class WornShellFilm(FilmWrapper):
     """A film model whose every state carries the worn-shell field δ(θ, z) [m].
 
-    base : FilmModel  Film model honouring ``FilmState.deformation``.
+    base : FilmModel  Film model honouring ``FilmState.deformation``
+        (:class:`~conrod.film.capabilities.SupportsDeformation`); others are refused.
     profile : Profile  δ(θ [rad], z [m]) [m], evaluated once on ``base.grid()``.
     """
 
@@ -79,47 +79,27 @@ class WornShellFilm:
     profile: Profile
 
     def __post_init__(self) -> None:
-        theta, z = self.base.grid()
+        if not isinstance(self.base, SupportsDeformation):
+            raise CaseError(
+                f"solver.film = {self.base.name!r}: running-in needs a film model that uses "
+                "the worn shell profile (allowed: a film honouring a deformation field, "
+                "'reynolds' or 'mass_conserving')"
+)
+        film: Any = self.base
+        theta, z = film.grid()
         self._deformation = np.ascontiguousarray(self.profile(theta, z), dtype=float)
 
-    @property
-    def name(self) -> str:
-        """Name of the base film model [-]."""
-        return self.base.name
-
-    @property
-    def geometry(self):
-        """Bearing geometry of the base film."""
-        return self.base.geometry
-
-    def _worn(self, state):
-        return replace(state, deformation=self._deformation)
-
-    def force(self, state) -> tuple[float, float]:
-        """Film force on the journal with the worn shell (F_x, F_y) [N]."""
-        return self.base.force(self._worn(state))
-
-    def solve(self, state, *, with_pressure: bool = False):
-        """Full film result with the worn shell."""
-        return self.base.solve(self._worn(state), with_pressure=with_pressure)
-
-    def grid(self) -> tuple[np.ndarray, np.ndarray]:
-        """Grid of the base film."""
-        return self.base.grid()
-
-    def initial_history(self):
-        """Initial history of the base film."""
-        return self.base.initial_history()
+    def adjust_state(self, state):
+        """The state with the worn-shell field δ(θ, z) [m] added to its own deformation."""
+        own = state.deformation
+        worn = self._deformation if own is None else own + self._deformation
+        return replace(state, deformation=worn)
 
 
 def _default_simulate(case, profile: Profile):
-    from conrod.simulation import Simulation
+    from conrod.simulation import Simulation, default_film
 
-    class WornShellSimulation(Simulation):
-        def film(self):
-            return WornShellFilm(super().film(), profile)
-
-    return WornShellSimulation(case).run().contact
+    return Simulation(case, film=WornShellFilm(default_film(case), profile)).run().contact
 
 
 def run_in(
@@ -136,11 +116,6 @@ def run_in(
     if stages < 1:
         raise CaseError(f"run_in stages = {stages!r}: out of range (allowed: >= 1)")
     if simulate is None:
-        if case.solver.film not in DEFORMABLE_FILMS:
-            raise CaseError(
-                f"solver.film = {case.solver.film!r}: running-in needs a film model that "
-                f"uses the worn shell profile (allowed: {', '.join(DEFORMABLE_FILMS)})"
-            )
         simulate = _default_simulate
     elements = case.contact.surface_elements
     angles = (np.arange(elements) + 0.5) * 2.0 * np.pi / elements

@@ -1,4 +1,4 @@
-"""Wear of journal and shell from the friction work per surface element (seed 004 §4.5),
+"""Wear of journal and shell from the friction work per surface element ([D4] §4.5),
 and the worn shell profile fed back into the film thickness (running-in).
 
 Energy wear law (wear depth proportional to the friction work dissipated per unit area):
@@ -8,7 +8,7 @@ Energy wear law (wear depth proportional to the friction work dissipated per uni
 with A_k the friction work of element k [J], B the width, R the radius [m] and k the
 energy wear coefficient [m³/J] — separate for journal (k_j) and shell (k_b).
 
-Seed units. Seed 004 prints the coefficient's unit as
+The [D4] units. [D4] prints the coefficient's unit as
 "micron·mm / ((kg·mm/mm²)·s)" — wear × journal width over (specific work × time).
 "Wear = coefficient × work" only balances with wear depth per specific work,
 µm/(kgf·mm/mm²); the extra width/time factor of the printout cannot be reconciled and
@@ -28,7 +28,7 @@ from conrod.contact.friction_work import FrictionWork
 from conrod.units import KGF_TO_N, MM_TO_M, UM_TO_M
 
 SEED_WEAR_UNIT_TO_SI = UM_TO_M / (KGF_TO_N * MM_TO_M / MM_TO_M**2)
-"""[m^3/J per µm/(kgf·mm/mm²)] converts the seed's wear coefficient to SI."""
+"""[m^3/J per µm/(kgf·mm/mm²)] converts [D4]'s wear coefficient to SI."""
 
 
 def element_area(radius: float, width: float, elements: int) -> float:
@@ -71,7 +71,7 @@ def wear_distribution(
         shell_work=work.shell,
         journal_wear=wear_depth(work.journal, journal_coefficient, radius, width),
         shell_wear=wear_depth(work.shell, shell_coefficient, radius, width),
-    )
+)
 
 
 def worn_profile_deformation(
@@ -82,10 +82,10 @@ def worn_profile_deformation(
 
     Material removed from the shell opens the gap, so δ = +wear, interpolated periodically
     from the element centres ``element_angle`` [rad] to the film grid ``theta`` [rad] and
-    uniform over ``z`` [m] (the seed's wear model has no axial variation). Shape
+    uniform over ``z`` [m] ([D4]'s wear model has no axial variation). Shape
     (len(theta), len(z)), as :class:`conrod.film.base.FilmState` ``deformation`` expects.
     """
     depth = cycles * np.interp(
         np.mod(theta, 2.0 * math.pi), element_angle, shell_wear, period=2.0 * math.pi
-    )
+)
     return np.repeat(depth[:, None], np.asarray(z).size, axis=1)

@@ -1,4 +1,4 @@
-"""The one interface every oil-film model implements (SPEC S2, issue 3).
+"""The one interface every oil-film model implements.
 
 Frame and signs (see ``docs/conventions.md``)
 ----------------------------------------------
@@ -164,9 +164,15 @@ class FilmResult:
 class FilmModel(Protocol):
     """What the orbit solver may assume about a film model — and nothing more."""
 
-    name: str
-    """Short identifier: 'short', 'reynolds', 'mass_conserving', 'mobility', 'table'."""
-    geometry: BearingGeometry
+    @property
+    def name(self) -> str:
+        """Short identifier: 'short', 'reynolds', 'mass_conserving', 'mobility', 'table'."""
+        ...
+
+    @property
+    def geometry(self) -> BearingGeometry:
+        """Bearing geometry and oil supply."""
+        ...
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """Full result for one state."""
@@ -201,7 +207,7 @@ def film_thickness(
         geometry.radial_clearance
         - eccentricity_x * np.cos(theta)
         - eccentricity_y * np.sin(theta)
-    )
+)
     if deformation is None:
         return rigid
     return rigid[:, None] + deformation

@@ -1,56 +1,18 @@
-"""Build the film model named in ``[solver] film`` (lazy imports: a model's module is only
-imported when chosen, so an unfinished or heavy model never slows the others)."""
+"""Build the film model named in ``[solver] film`` from the registry of model names
+(:mod:`conrod.registry`): every model builds itself with ``from_settings``."""
 
 from __future__ import annotations
 
 import dataclasses
-import importlib
 import math
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
-
-FILM_MODELS = {
-    "short": ("conrod.film.short_bearing", "ShortBearingFilm"),
-    "reynolds": ("conrod.film.reynolds", "ReynoldsFilm"),
-    "mass_conserving": ("conrod.film.mass_conserving", "MassConservingFilm"),
-    "mobility": ("conrod.film.mobility", "MobilityFilm"),
-    "table": ("conrod.film.table", "TabulatedFilm"),
-}
-"""Film name → (module, class)."""
-
-_GRID_MODELS = ("reynolds", "mass_conserving")
-
-
-def _film_class(name: str) -> Any:
-    if name not in FILM_MODELS:
-        raise CaseError(
-            f"solver.film = {name!r}: unknown film model (allowed: {', '.join(FILM_MODELS)})"
-        )
-    module_name, class_name = FILM_MODELS[name]
-    try:
-        module = importlib.import_module(module_name)
-    except ModuleNotFoundError as error:
-        if error.name == module_name:
-            raise CaseError(
-                f"solver.film = {name!r}: this film model is not available yet"
-            ) from None
-        raise
-    return getattr(module, class_name)
-
-
-def _grid_kwargs(solver: Any) -> dict[str, Any]:
-    if solver is None:
-        return {}
-    kwargs: dict[str, Any] = {"n_theta": int(solver.n_theta), "n_z": int(solver.n_z)}
-    tolerance = getattr(solver, "film_tolerance", None)
-    if tolerance is not None:
-        kwargs["tolerance"] = float(tolerance)
-    return kwargs
+from conrod.film.capabilities import CompiledKernel
+from conrod.registry import film_class
 
 
 def build_film_model(
@@ -58,32 +20,13 @@ def build_film_model(
 ) -> FilmModel:
     """Film model for ``geometry`` from a :class:`Case` or its ``[solver]`` section.
 
-    ``name`` overrides ``solver.film``. Grid models (reynolds, mass_conserving) receive
+    ``name`` overrides ``solver.film``. Grid models (reynolds, mass_conserving) take
     ``n_theta``, ``n_z`` and ``film_tolerance``; ``table`` tabulates a Reynolds film on that
     grid; ``mobility`` builds its map from a Reynolds film on that grid; ``short`` with a full
     central groove becomes :class:`GroovedShortBearingFilm`.
     """
     solver = getattr(case_or_solver, "solver", case_or_solver)
-    film_name = name or getattr(solver, "film", "short")
-    cls = _film_class(film_name)
-    if film_name in _GRID_MODELS:
-        return _construct(cls, geometry, _grid_kwargs(solver))
-    if film_name == "short" and central_groove_width(geometry) > 0.0:
-        return GroovedShortBearingFilm.from_geometry(geometry)
-    if film_name == "table":
-        base = _construct(_film_class("reynolds"), geometry, _grid_kwargs(solver))
-        return cls(base)
-    if film_name == "mobility":
-        grid = {k: v for k, v in _grid_kwargs(solver).items() if k != "tolerance"}
-        return _construct(cls, geometry, grid)
-    return cls(geometry)
-
-
-def _construct(cls: Any, geometry: BearingGeometry, kwargs: dict[str, Any]) -> FilmModel:
-    try:
-        return cls(geometry, **kwargs)
-    except TypeError:
-        return cls(geometry)
+    return film_class(name or solver.film).from_settings(geometry, solver)
 
 
 def central_groove_width(geometry: BearingGeometry) -> float:
@@ -117,8 +60,10 @@ class GroovedShortBearingFilm:
         groove = central_groove_width(geometry)
         land_geometry = dataclasses.replace(
             geometry, width=0.5 * (geometry.width - groove), grooves=(), feed_holes=()
-        )
-        return cls(geometry, _film_class("short")(land_geometry), groove)
+)
+        from conrod.film.short_bearing import ShortBearingFilm
+
+        return cls(geometry, ShortBearingFilm(land_geometry), groove)
 
     def force(self, state: FilmState) -> tuple[float, float]:
         """Film force on the journal (F_x, F_y) [N]: both lands."""
@@ -134,7 +79,7 @@ class GroovedShortBearingFilm:
             friction_torque_journal=2.0 * r.friction_torque_journal,
             friction_torque_shell=2.0 * r.friction_torque_shell,
             friction_power=2.0 * r.friction_power, side_flow=leakage, supply_flow=leakage,
-        )
+)
         if with_pressure and r.pressure is not None:
             result.pressure = np.concatenate([r.pressure, r.pressure], axis=1)
         return result
@@ -148,3 +93,11 @@ class GroovedShortBearingFilm:
     def initial_history(self) -> None:
         """No memory."""
         return None
+
+    def compiled_kernel(self) -> CompiledKernel:
+        """Twice the land's closed-form force; the orbit's generic compiled Newton loop."""
+        from conrod.film.short_bearing import kernel_force, radial_damping
+
+        g = self.land.geometry
+        return CompiledKernel(kernel_force, (g.radius, g.width, g.radial_clearance, 2.0),
+                              None, radial_damping)

@@ -3,7 +3,10 @@
 Transient use (what the orbit integrator sees)
 ----------------------------------------------
 The film fraction ϑ(θ, z) [-] is the model's *history*: ``initial_history()`` is a full
-film (ϑ = 1). ``solve(state)`` takes ϑ = ``state.history`` (clipped to [0, 1]) as given
+film (ϑ = 1). The orbit integrator holds ϑ and the warm-start pressure in an explicit
+:class:`MassConservingMemory` (:class:`~conrod.film.capabilities.HasMemory`):
+``solve_with_memory`` answers an instant, ``advance_memory`` steps ϑ in time.
+``solve(state)`` takes ϑ = ``state.history`` (clipped to [0, 1]) as given
 and solves, at that instant, the complementarity problem
 
 * full nodes (ϑ = 1): Reynolds with p ≥ p_cav (projected SOR); where p > p_cav, ∂ϑ/∂t = 0;
@@ -29,8 +32,8 @@ See :mod:`conrod.film.mass_conserving_kernel` for the discrete equations.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from typing import Literal
+from dataclasses import dataclass, field, replace
+from typing import Any, Literal
 
 import numpy as np
 
@@ -47,6 +50,19 @@ from conrod.film.supply import nearest_theta_index, supply_mask
 
 FULL = 1.0 - 1.0e-9
 """Film fraction above which a node counts as full [-]."""
+
+
+@dataclass(frozen=True)
+class MassConservingMemory:
+    """What a mass-conserving film remembers between instants (never modified in place).
+
+    fraction : ndarray  Film fraction ϑ(θ, z) on the grid, 1 = full film [-].
+    pressure : ndarray or None  Last shifted pressure p̃ = p − p_cav, the warm start of the
+        next solve [Pa]; None: start from p̃ = −p_cav.
+    """
+
+    fraction: np.ndarray
+    pressure: np.ndarray | None = None
 
 
 @dataclass
@@ -103,13 +119,12 @@ class MassConservingFilm:
     method: Literal["multigrid", "sor"] = "multigrid"
     name: str = "mass_conserving"
     last_iterations: int = field(default=0, init=False)
-    _warm: np.ndarray | None = field(default=None, init=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.n_theta < 8 or self.n_z < 2:
             raise CaseError(
                 f"grid {self.n_theta}x{self.n_z}: out of range (allowed: n_theta >= 8, n_z >= 2)"
-            )
+)
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
         theta = self.film_grid.theta
@@ -124,6 +139,12 @@ class MassConservingFilm:
 
         self._omega = self.omega if self.omega is not None else optimal_relaxation(self.film_grid)
 
+    @classmethod
+    def from_settings(cls, geometry: BearingGeometry, settings: Any) -> MassConservingFilm:
+        """Film on the ``[solver]`` grid ``n_theta`` × ``n_z`` with ``film_tolerance``."""
+        return cls(geometry, n_theta=int(settings.n_theta), n_z=int(settings.n_z),
+                   tolerance=float(settings.film_tolerance))
+
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
         """θ nodes [rad] (periodic, no duplicate of 2π) and z nodes [m] (edges included)."""
         return self.film_grid.theta, self.film_grid.z
@@ -136,9 +157,38 @@ class MassConservingFilm:
         """Full film: ϑ = 1 on every node, shape (n_theta, n_z + 1) [-]."""
         return np.ones((self.n_theta, self.n_z + 1))
 
-    def reset(self) -> None:
-        """Forget the warm-start field (the next solve is cold)."""
-        self._warm = None
+    def deformation_shape(self) -> tuple[int, int]:
+        """Shape (n_theta, n_z + 1) of the accepted deformation field δ(θ, z) [m]."""
+        return self.n_theta, self.n_z + 1
+
+    def initial_memory(self) -> MassConservingMemory:
+        """Full film (ϑ = 1), no warm-start pressure."""
+        return MassConservingMemory(self.initial_history())
+
+    def solve_with_memory(
+        self, state: FilmState, memory: MassConservingMemory, *, with_pressure: bool = False
+) -> tuple[FilmResult, MassConservingMemory]:
+        """:meth:`solve` with the film fraction and warm start of ``memory`` (the state's
+        ``history`` is not read), and the memory with the new pressure."""
+        result, pressure = self._solve_transient(state, memory.fraction, memory.pressure,
+                                                 with_pressure)
+        return result, replace(memory, pressure=pressure)
+
+    def force_with_memory(self, state: FilmState, memory: MassConservingMemory
+) -> tuple[float, float, MassConservingMemory]:
+        """Film force (F_x, F_y) [N] with the fraction and warm start of ``memory``."""
+        result, memory = self.solve_with_memory(state, memory)
+        return result.force_x, result.force_y, memory
+
+    def advance_memory(self, state: FilmState, memory: MassConservingMemory,
+                       dt: float) -> MassConservingMemory:
+        """One explicit Euler step of the film content over ``dt`` [s] from ``state``:
+        ϑ ← clip(ϑ + dt ∂ϑ/∂t, 0, 1), first order in time (transport limit
+        dt |ω_j + ω_b|/2 ≤ Δθ)."""
+        result, memory = self.solve_with_memory(state, memory)
+        rate = result.history_rate if result.history_rate is not None else 0.0
+        fraction = np.clip(memory.fraction + dt * rate, 0.0, 1.0)
+        return replace(memory, fraction=fraction)
 
     def fields(self, state: FilmState) -> FilmFields:
         """Assemble the cell-balance coefficients for one state."""
@@ -156,7 +206,7 @@ class MassConservingFilm:
             self._cos_theta, self._sin_theta, self.n_z + 1, g.radial_clearance,
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             deformation, dx, dz, mu, g.radius * (state.journal_speed + state.shell_speed),
-        )
+)
         if not float(h.min()) > 0.0:
             raise CaseError(f"film thickness min = {float(h.min()):.3g} m: out of range "
                             "(allowed: > 0 m); the journal touches the shell")
@@ -164,19 +214,25 @@ class MassConservingFilm:
             h=h, a_east=a_east, a_north=a_north, couette_east=couette, squeeze=squeeze,
             edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed.copy(),
             has_deformation=state.deformation is not None,
-        )
+)
 
     # ------------------------------------------------------------------ transient
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
-        """Pressure, forces, flows and ∂ϑ/∂t for the film fraction ``state.history``."""
+        """Pressure, forces, flows and ∂ϑ/∂t for the film fraction ``state.history``
+        (cold start)."""
+        return self._solve_transient(state, state.history, None, with_pressure)[0]
+
+    def _solve_transient(
+        self, state: FilmState, history: np.ndarray | None, warm: np.ndarray | None,
+        with_pressure: bool,
+) -> tuple[FilmResult, np.ndarray]:
         f = self.fields(state)
-        fraction = self._fraction(state.history, f)
-        pressure = self._start_pressure(f, fraction)
+        fraction = self._fraction(history, f)
+        pressure = self._start_pressure(f, fraction, warm)
         source = convection(f.couette_east, fraction) + f.squeeze * fraction
         active = f.free & (fraction >= FULL)
         sweeps, change = self._solve_full_film(pressure, active, f, source)
         self._check(sweeps, change, state)
-        self._warm = pressure.copy()
         imbalance, from_edges, from_supply = cell_balance(
             pressure, fraction, f.free, f.edge, f.a_east, f.a_north, f.couette_east, f.squeeze)
         dx, dz = self.spacing()
@@ -191,7 +247,7 @@ class MassConservingFilm:
                             content_rate_m3_per_s=content_rate)
         if with_pressure:
             result.pressure = pressure + self.geometry.cavitation_pressure
-        return result
+        return result, pressure.copy()
 
     def force(self, state: FilmState) -> tuple[float, float]:
         """Film force on the journal (F_x, F_y) [N]."""
@@ -200,7 +256,7 @@ class MassConservingFilm:
 
     def _solve_full_film(
         self, pressure: np.ndarray, active: np.ndarray, f: FilmFields, source: np.ndarray
-    ) -> tuple[int, float]:
+) -> tuple[int, float]:
         """Pressure on the full-film nodes (in place on p̃); returns (sweeps, change)."""
         p_cav = self.geometry.cavitation_pressure
         if self.method == "sor":
@@ -215,7 +271,7 @@ class MassConservingFilm:
         cycles, change = multigrid.solve_on_grid(
             gauge, f.h, -source, ~active, self.film_grid, p_cav, self.tolerance,
             self.max_iterations, symmetric,
-        )
+)
         pressure[:] = np.maximum(gauge - p_cav, 0.0)
         return cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS), change
 
@@ -223,7 +279,7 @@ class MassConservingFilm:
     def solve_steady(
         self, state: FilmState, *, with_pressure: bool = False, cavitation: str = "jfo",
         inlet_line: bool = True,
-    ) -> FilmResult:
+) -> FilmResult:
         """Steady film under Raimondi & Boyd's full-bearing conditions.
 
         A full-film ambient-pressure inlet line sits at the maximum gap θ = ψ + π
@@ -248,19 +304,19 @@ class MassConservingFilm:
             f.supply[inlet, 1:-1] = True
             f.fixed_pressure[inlet, :] = -self.geometry.cavitation_pressure
         fraction = np.ones_like(f.h)
-        pressure = self._start_pressure(f, fraction)
+        pressure = self._start_pressure(f, fraction, None)
         if cavitation == "jfo":
             sweeps, change = elrod_adams_steady(
                 pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east, f.squeeze,
                 self._omega, self.tolerance, self.max_iterations,
-            )
+)
         else:
             source = convection(f.couette_east, fraction) + f.squeeze
             sweeps, change = projected_sor(
                 pressure, f.free.copy(), f.a_east, f.a_north, source,
                 -self.geometry.cavitation_pressure, self._omega, self.tolerance,
                 self.max_iterations,
-            )
+)
         self._check(sweeps, change, state)
         self.last_film_fraction = fraction
         result = self.characteristics(state, f, pressure, fraction)
@@ -278,9 +334,10 @@ class MassConservingFilm:
         fraction = np.clip(np.asarray(history, dtype=float), 0.0, 1.0)
         return np.where(f.free, fraction, 1.0)
 
-    def _start_pressure(self, f: FilmFields, fraction: np.ndarray) -> np.ndarray:
+    def _start_pressure(self, f: FilmFields, fraction: np.ndarray,
+                        warm: np.ndarray | None) -> np.ndarray:
         offset = -self.geometry.cavitation_pressure
-        start = self._warm if self._warm is not None else np.full(f.h.shape, offset)
+        start = warm if warm is not None else np.full(f.h.shape, offset)
         pressure = np.where(f.free, start, f.fixed_pressure)
         return np.ascontiguousarray(np.where(f.free & (fraction < FULL), 0.0, pressure))
 
@@ -291,12 +348,12 @@ class MassConservingFilm:
                 f"mass-conserving film did not converge in {sweeps} sweeps",
                 where=f"e = ({state.eccentricity_x:.3e}, {state.eccentricity_y:.3e}) m",
                 residual=change,
-            )
+)
 
     def characteristics(
         self, state: FilmState, f: FilmFields, pressure: np.ndarray, fraction: np.ndarray,
         inflows: tuple[float, float] | None = None,
-    ) -> FilmResult:
+) -> FilmResult:
         """Forces, torques, flows, extremes from the shifted pressure p̃ and ϑ."""
         from conrod.film.mass_conserving_results import film_characteristics
 

@@ -58,7 +58,7 @@ def projected_sor(
                 target = (
                     aw * pressure[iw, j] + ae * pressure[ie, j]
                     + a_s * pressure[i, j - 1] + an * pressure[i, j + 1] - source[i, j]
-                ) / (aw + ae + a_s + an)
+) / (aw + ae + a_s + an)
                 old = pressure[i, j]
                 new = old + omega * (target - old)
                 if new < 0.0:
@@ -105,7 +105,7 @@ def elrod_adams_steady(
                 neighbours = (
                     aw * pressure[iw, j] + ae * pressure[ie, j]
                     + a_s * pressure[i, j - 1] + an * pressure[i, j + 1]
-                )
+)
                 if forward:
                     own = couette_east[i, j] + squeeze[i, j]
                     rest = -couette_east[iw, j] * fraction[iw, j]

@@ -65,4 +65,4 @@ def film_characteristics(
         cavitated_fraction=float(np.mean(pressure[free] <= 0.0)) if free.any() else 0.0,
         friction_power=abs((wedge_part - couette) * sliding),
         extra={"film_content_m3": content},
-    )
+)

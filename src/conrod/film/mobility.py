@@ -1,4 +1,4 @@
-"""Booker's mobility method with a numerically computed mobility map (SPEC S2, issue 3).
+"""Booker's mobility method with a numerically computed mobility map.
 
 Normalisation (derived from :mod:`conrod.film.table_kernel`)
 ------------------------------------------------------------
@@ -13,7 +13,7 @@ where **M** is the dimensionless mobility vector, here M = v_s μR³L/(c³|W|): 
 φ(ε, β) = χ, with χ the angle of the film force −W from the line of centres and f̄ the
 dimensionless squeeze force of the table. Booker's own scaling [1] uses (c/R)² and L/D
 differently; only the product above matters. A load turning at ω̄ with a steady
-eccentricity gives ė = 0 — the half-speed whirl with no film capacity (SPEC pitfall).
+eccentricity gives ė = 0 — the half-speed whirl with no film capacity (a known pitfall).
 
 The map f̄(ε, β) comes from any base film model (default: the finite-difference
 :class:`~conrod.film.reynolds.ReynoldsFilm`) through :class:`~conrod.film.table.TabulatedFilm`
@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
+from conrod.film.capabilities import CompiledKernel
 from conrod.film.table import TabulatedFilm
 from conrod.film.table_kernel import inverse_direction, mobility_velocity, unit_force
 
@@ -71,7 +72,12 @@ class MobilityFilm:
             self.base, n_eps=self.n_eps, n_direction=self.n_direction,
             eccentricity_max=self.eccentricity_max, cache_dir=self.cache_dir,
             use_cache=self.use_cache,
-        )
+)
+
+    @classmethod
+    def from_settings(cls, geometry: BearingGeometry, settings: Any) -> MobilityFilm:
+        """Map of a Reynolds film on the ``[solver]`` grid ``n_theta`` × ``n_z``."""
+        return cls(geometry, n_theta=int(settings.n_theta), n_z=int(settings.n_z))
 
     @classmethod
     def short_bearing(cls, geometry: BearingGeometry, **kwargs: Any) -> MobilityFilm:
@@ -89,6 +95,10 @@ class MobilityFilm:
     def initial_history(self) -> None:
         """Memoryless."""
         return None
+
+    def compiled_kernel(self) -> CompiledKernel:
+        """The map's compiled force and exact massless inverse (those of its table)."""
+        return self.table.compiled_kernel()
 
     def force(self, state: FilmState) -> tuple[float, float]:
         """Film force on the journal (F_x, F_y) [N] from the mobility map (forward use)."""
@@ -113,7 +123,7 @@ class MobilityFilm:
     def journal_velocity(
         self, ex: float, ey: float, load_x: float, load_y: float,
         journal_speed: float, shell_speed: float, viscosity: float,
-    ) -> tuple[float, float]:
+) -> tuple[float, float]:
         """Quasi-static journal-centre velocity (v_x, v_y) [m/s] for the external load W [N]
         pressing the journal at position (e_x, e_y) [m]; speeds [rad/s], viscosity [Pa s]."""
         t = self.table
@@ -121,4 +131,4 @@ class MobilityFilm:
             ex, ey, load_x, load_y, journal_speed + shell_speed, viscosity, t.force_scale,
             self.geometry.radial_clearance, t.s_step, t.tables["log_magnitude"],
             t.tables["turning"],
-        )
+)

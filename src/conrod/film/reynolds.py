@@ -1,4 +1,4 @@
-"""Finite-difference Reynolds film with Swift–Stieber cavitation (SPEC S2, seed 002 ch. 3).
+"""Finite-difference Reynolds film with Swift–Stieber cavitation ([D2] ch. 3).
 
 The pressure solves the Reynolds equation of :mod:`conrod.film.base` on a
 ``n_theta × (n_z + 1)``-node grid (:class:`~conrod.film.characteristics.FilmGrid`) with
@@ -10,16 +10,17 @@ The pressure solves the Reynolds equation of :mod:`conrod.film.base` on a
 * cavitation by projection p := max(p, p_cav) inside projected SOR
   (:mod:`conrod.film.reynolds_kernel`).
 
-Speed: a cold solve starts on up to three nested grids (coarse → fine, seed 002);
-later solves start from the last converged field (warm start), which is what makes
-a transient orbit cheap.
+Speed: a cold solve starts on up to three nested grids (coarse → fine, [D2]);
+a solve given a :class:`ReynoldsMemory` starts from its field (warm start), which is what
+makes a transient orbit cheap. The memory is explicit: the orbit integrator holds it
+(:class:`~conrod.film.capabilities.HasMemory`); ``solve``/``force`` alone are cold.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from typing import Literal
+from dataclasses import dataclass
+from typing import Any, Literal
 
 import numpy as np
 
@@ -28,6 +29,7 @@ from conrod.film import characteristics as chars
 from conrod.film import reynolds_kernel as kernel
 from conrod.film import reynolds_multigrid as multigrid
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
+from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest
 from conrod.film.characteristics import FilmGrid
 from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
 
@@ -45,6 +47,17 @@ def optimal_relaxation(grid: FilmGrid) -> float:
     a_z = 1.0 / grid.d_z**2
     rho = (a_theta + a_z * math.cos(math.pi / grid.n_z)) / (a_theta + a_z)
     return 2.0 / (1.0 + math.sqrt(1.0 - rho * rho))
+
+
+@dataclass(frozen=True)
+class ReynoldsMemory:
+    """Warm start of :class:`ReynoldsFilm`: the last converged pressure field.
+
+    pressure : ndarray or None  p(θ, z) on the fine grid [Pa]; None for a cold start
+        (nested coarse-to-fine grids). Never modified in place.
+    """
+
+    pressure: np.ndarray | None = None
 
 
 @dataclass
@@ -84,7 +97,8 @@ class ReynoldsFilm:
     method : 'multigrid' (projected multigrid, :mod:`reynolds_multigrid`, default) or
         'sor' (projected SOR, kept for comparison).
     relaxation : float or None  SOR factor ω [-]; None = :func:`optimal_relaxation`.
-    warm_start : bool  Start from the last converged field when available.
+    warm_start : bool  Start each solve from the memory's field (:class:`ReynoldsMemory`)
+        when it holds one; False: every solve is cold.
     use_symmetry : bool  Solve only z ≤ 0 when the problem is symmetric about the
         mid-plane (supply features symmetric, no deformation field; multigrid only).
     """
@@ -101,7 +115,6 @@ class ReynoldsFilm:
     warm_start: bool = True
     use_symmetry: bool = True
     name: str = "reynolds"
-    _last_pressure: np.ndarray | None = field(default=None, init=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.n_theta < 8 or self.n_theta % 2:
@@ -113,7 +126,7 @@ class ReynoldsFilm:
         if self.friction not in ("full_film", "film_fraction"):
             raise CaseError(
                 f"friction = {self.friction!r}: allowed 'full_film' or 'film_fraction'"
-            )
+)
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
         self._cos = np.cos(self.film_grid.theta)[:, None]
@@ -124,33 +137,75 @@ class ReynoldsFilm:
         self._symmetric = (self.use_symmetry and self.method == "multigrid"
                            and np.array_equal(self._supply, self._supply[:, ::-1]))
 
+    @classmethod
+    def from_settings(cls, geometry: BearingGeometry, settings: Any) -> ReynoldsFilm:
+        """Film on the ``[solver]`` grid ``n_theta`` × ``n_z`` with ``film_tolerance``."""
+        return cls(geometry, n_theta=int(settings.n_theta), n_z=int(settings.n_z),
+                   tolerance=float(settings.film_tolerance))
+
     # ----------------------------------------------------------------- interface
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
         """θ nodes [rad] (periodic, 2π excluded) and z nodes [m] (edges included)."""
         return self.film_grid.theta, self.film_grid.z
 
     def initial_history(self) -> None:
-        """The Swift–Stieber film has no memory."""
+        """The Swift–Stieber film has no film-content history."""
         return None
 
-    def reset(self) -> None:
-        """Forget the warm-start field (the next solve is cold)."""
-        self._last_pressure = None
+    def deformation_shape(self) -> tuple[int, int]:
+        """Shape (n_theta, n_z + 1) of the accepted deformation field δ(θ, z) [m]."""
+        return self.n_theta, self.n_z + 1
+
+    def initial_memory(self) -> ReynoldsMemory:
+        """No warm-start field: the first solve is cold."""
+        return ReynoldsMemory()
+
+    def advance_memory(self, state: FilmState, memory: ReynoldsMemory,
+                       dt: float) -> ReynoldsMemory:
+        """A warm start does not evolve in time: ``memory`` unchanged."""
+        return memory
 
     def force(self, state: FilmState) -> tuple[float, float]:
-        """Film force on the journal (F_x, F_y) [N]."""
+        """Film force on the journal (F_x, F_y) [N] (cold solve)."""
+        fx, fy, _ = self.force_with_memory(state, self.initial_memory())
+        return fx, fy
+
+    def force_with_memory(self, state: FilmState,
+                          memory: ReynoldsMemory) -> tuple[float, float, ReynoldsMemory]:
+        """Film force (F_x, F_y) [N] warm-started from ``memory``, and the new memory."""
         problem = self._problem(state)
-        pressure, _ = self._solve_pressure(problem, state)
-        return chars.pressure_force(pressure, self.film_grid, self._force_weights)
+        pressure, _ = self._solve_pressure(problem, state, memory)
+        fx, fy = chars.pressure_force(pressure, self.film_grid, self._force_weights)
+        return fx, fy, ReynoldsMemory(pressure)
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
-        """All film characteristics for one state (friction convention in ``extra``)."""
+        """All film characteristics for one state (cold solve)."""
+        return self.solve_with_memory(state, self.initial_memory(),
+                                      with_pressure=with_pressure)[0]
+
+    def solve_with_memory(self, state: FilmState, memory: ReynoldsMemory, *,
+                          with_pressure: bool = False) -> tuple[FilmResult, ReynoldsMemory]:
+        """All characteristics (friction convention in ``extra``) warm-started from
+        ``memory``, and the memory after the solve."""
         problem = self._problem(state)
-        pressure, info = self._solve_pressure(problem, state)
+        pressure, info = self._solve_pressure(problem, state, memory)
         result = self._characteristics(problem, pressure, state, info)
         if with_pressure:
             result.pressure = pressure
-        return result
+        return result, ReynoldsMemory(pressure)
+
+    def compiled_kernel(self) -> CompiledKernel | None:
+        """Booker's squeeze-direction loop (:mod:`conrod.film.reynolds_squeeze`), exact for a
+        rigid multigrid film with p_supply = p_cav = 0 and no inlet line; else None."""
+        g = self.geometry
+        exact = (self.method == "multigrid" and not self.ambient_line_at_max_gap
+                 and g.supply_pressure == 0.0 and g.cavitation_pressure == 0.0)
+        return CompiledKernel(None, (), self._squeeze_cycle) if exact else None
+
+    def _squeeze_cycle(self, request: QuasiStaticRequest) -> Any:
+        from conrod.film.reynolds_squeeze import squeeze_cycle
+
+        return squeeze_cycle(self, request)
 
     # ----------------------------------------------------------------- internals
     def _problem(self, state: FilmState) -> _Problem:
@@ -163,14 +218,14 @@ class ReynoldsFilm:
                 raise CaseError(
                     f"deformation shape = {np.shape(state.deformation)}: "
                     f"out of range (allowed: {h.shape} = (n_theta, n_z + 1))"
-                )
+)
             h = h + state.deformation
         smallest = float(h.min())
         if not smallest > 0.0:
             raise CaseError(
                 f"film thickness min = {smallest:.3g}: out of range (allowed: > 0 m); "
                 "the journal touches the shell"
-            )
+)
         h_rate = -state.velocity_x * self._cos - state.velocity_y * self._sin
         h_rate = np.repeat(h_rate, self.n_z + 1, axis=1)
         fixed = self._edges | self._supply
@@ -199,32 +254,33 @@ class ReynoldsFilm:
         a_east, a_north, source = kernel.assemble_coefficients(
             level.h, level.h_rate, g.radius, g.d_theta, g.d_z,
             state.journal_speed + state.shell_speed, state.viscosity,
-        )
+)
         pressure[level.fixed] = level.fixed_values[level.fixed]
         if self.method == "multigrid":
             cycles, change = multigrid.solve_on_grid(
                 pressure, level.h, source, level.fixed, g, self.geometry.cavitation_pressure,
                 tolerance, self.max_iterations, symmetric,
-            )
+)
             sweeps = cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS)
         else:
             omega = self.relaxation if self.relaxation is not None else optimal_relaxation(g)
             sweeps, change = kernel.sor_solve(
                 pressure, a_east, a_north, source, level.fixed,
                 self.geometry.cavitation_pressure, omega, tolerance, self.max_iterations,
-            )
+)
         if not change <= tolerance:
             raise ConvergenceError(
                 f"Reynolds {self.method} on {g.n_theta}x{g.n_z} after {sweeps} sweeps",
                 where=f"e = ({state.eccentricity_x:.4g}, {state.eccentricity_y:.4g}) m, "
                 f"v = ({state.velocity_x:.4g}, {state.velocity_y:.4g}) m/s",
                 residual=change,
-            )
+)
         return sweeps, change
 
-    def _solve_pressure(self, problem: _Problem, state: FilmState) -> tuple[np.ndarray, dict]:
+    def _solve_pressure(self, problem: _Problem, state: FilmState,
+                        memory: ReynoldsMemory) -> tuple[np.ndarray, dict]:
         """Converged pressure [Pa] on the fine grid and solver diagnostics."""
-        last = self._last_pressure if self.warm_start else None
+        last = memory.pressure if self.warm_start else None
         warm = last is not None
         if last is not None:
             pressure = last.copy()
@@ -242,7 +298,6 @@ class ReynoldsFilm:
                 tolerance = self.tolerance if final else 10.0 * self.tolerance
                 sweeps, change = self._sweep(level, pressure, state, tolerance)
                 total += sweeps
-        self._last_pressure = pressure.copy()
         return pressure, {"sweeps": float(total), "relative_update": change,
                           "warm_start": float(warm), "multigrid": float(self.method == "multigrid")}
 
@@ -253,7 +308,7 @@ class ReynoldsFilm:
         omega_sum = state.journal_speed + state.shell_speed
         a_east, a_north, source = kernel.assemble_coefficients(
             h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
-        )
+)
         inflow = kernel.node_imbalance(pressure, a_east, a_north, source) / (12.0 * state.viscosity)
         free = ~problem.fixed
         cavitated = free & (pressure <= g.cavitation_pressure)
@@ -285,4 +340,4 @@ class ReynoldsFilm:
                 pressure, free, g.cavitation_pressure, grid),
             friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
             extra=info,
-        )
+)

@@ -1,6 +1,6 @@
 """Compiled kernels of the finite-difference (finite-volume) Reynolds solver.
 
-Discretisation (seed 002 ch. 3; frame and signs of :mod:`conrod.film.base`)
+Discretisation ([D2] ch. 3; frame and signs of :mod:`conrod.film.base`)
 ---------------------------------------------------------------------------
 The Reynolds equation divided by 12μ is a mass balance of the volumetric flux
 q = (U h/2 − h³/(12μ) ∂p/∂x, −h³/(12μ) ∂p/∂z), x = Rθ, U = R(ω_j + ω_b):
@@ -19,7 +19,7 @@ The scheme is second order and conservative, so boundary flows computed as node
 *imbalances* (:func:`node_imbalance`) satisfy the global mass balance to round-off.
 
 Solver: lexicographic SOR with the Swift–Stieber projection p := max(p, p_cav) after
-each node update (Christopherson's method as in seed 002 ch. 3), deterministic.
+each node update (Christopherson's method as in [D2] ch. 3), deterministic.
 """
 
 from __future__ import annotations
@@ -56,7 +56,7 @@ def assemble_coefficients(
             a_east[i, j] = h_e * h_e * h_e * width / arc
             source[i, j] = -12.0 * viscosity * width * (
                 0.5 * surface_speed * (h_e - h_w) + h_rate[i, j] * arc
-            )
+)
             if j < n_nodes - 1:
                 h_n = 0.5 * (h[i, j] + h[i, j + 1])
                 a_north[i, j] = h_n * h_n * h_n * arc / d_z
@@ -97,7 +97,7 @@ def sor_solve(
                     a_east[i, j] * pressure[ip, j] + a_east[im, j] * pressure[im, j]
                     + a_north[i, j] * pressure[i, j + 1]
                     + a_north[i, j - 1] * pressure[i, j - 1] + source[i, j]
-                )
+)
                 new = old + relaxation * (gauss_seidel - old)
                 if new < cavitation_pressure:
                     new = cavitation_pressure
@@ -153,7 +153,7 @@ def prolongate(coarse: np.ndarray) -> np.ndarray:
                 fine[2 * i, 2 * j + 1] = 0.5 * (coarse[i, j] + coarse[i, j + 1])
                 fine[2 * i + 1, 2 * j + 1] = 0.25 * (
                     coarse[i, j] + coarse[ip, j] + coarse[i, j + 1] + coarse[ip, j + 1]
-                )
+)
     return fine
 
 

@@ -321,7 +321,7 @@ def solve_on_grid(pressure, h, source, fixed, grid, cavitation_pressure, toleran
         half, _half_with_padding(h), _half_with_padding(source, 0.0),
         _half_with_padding(fixed, True), grid.radius, grid.d_theta, grid.d_z,
         cavitation_pressure, tolerance, max_cycles, coarse_levels(grid.n_theta, mid), True,
-    )
+)
     pressure[:, : mid + 1] = half[:, : mid + 1]
     pressure[:, mid + 1 :] = half[:, mid - 1 :: -1]
     return cycles, change

@@ -11,15 +11,50 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
+import numba as nb
 import numpy as np
 
 from conrod.film.base import BearingGeometry, FilmResult, FilmState, film_thickness
+from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest, refuse_deformation
 from conrod.film.short_bearing_kernel import (
     ECCENTRICITY_LIMIT,
     short_bearing_force,
     short_bearing_polar,
 )
+
+
+@nb.njit(cache=True)
+def kernel_force(x, y, vx, vy, omega_sum, viscosity, params):
+    """:func:`short_bearing_force` [N] in the calling convention of
+    :class:`~conrod.film.capabilities.CompiledKernel`; params = (R [m], L [m], c [m],
+    force factor [-])."""
+    fx, fy = short_bearing_force(x, y, vx, vy, omega_sum, viscosity, params[0], params[1],
+                                 params[2])
+    return params[3] * fx, params[3] * fy
+
+
+@nb.njit(cache=True)
+def radial_damping(eps, viscosity, params):
+    """Radial squeeze damping of the short bearing B_rr = π μ R L³ (1 + 2ε²) /
+    (2 c³ (1 − ε²)^{5/2}) [N s/m] times the force factor (Hamrock, Fundamentals of Fluid
+    Film Lubrication, ch. 10); params as :func:`kernel_force`."""
+    radius, width, clearance = params[0], params[1], params[2]
+    eps = min(eps, 0.999999)
+    return params[3] * (math.pi * viscosity * radius * width**3 * (1.0 + 2.0 * eps * eps)
+                        / (2.0 * clearance**3 * (1.0 - eps * eps) ** 2.5))
+
+
+def start_angle(vx: float, vy: float, x: float, y: float, load_x: float, load_y: float,
+                omega_sum: float) -> float:
+    """Guess of the active-arc angle α + ψ = β + π/2 [rad] from the squeeze velocity
+    v_s = ė − ω̄ × e of a state, or from the load when the state is at rest."""
+    mean = 0.5 * omega_sum
+    sx, sy = vx + mean * y, vy - mean * x
+    if sx or sy:
+        return math.atan2(sy, sx) + 0.5 * math.pi
+    return math.atan2(load_y, load_x) + 0.5 * math.pi
 
 
 @dataclass
@@ -36,6 +71,16 @@ class ShortBearingFilm:
     n_z: int = 17
     name: str = "short"
 
+    @classmethod
+    def from_settings(cls, geometry: BearingGeometry, settings: Any) -> Any:
+        """Short film of ``geometry``; two lands when a full central groove splits it
+        (:class:`~conrod.film.factory.GroovedShortBearingFilm`). ``settings``: ``[solver]``."""
+        from conrod.film.factory import GroovedShortBearingFilm, central_groove_width
+
+        if central_groove_width(geometry) > 0.0:
+            return GroovedShortBearingFilm.from_geometry(geometry)
+        return cls(geometry)
+
     def grid(self) -> tuple[np.ndarray, np.ndarray]:
         """θ nodes [rad] (periodic, no duplicate of 2π) and z nodes [m]."""
         theta = np.linspace(0.0, 2.0 * math.pi, self.n_theta, endpoint=False)
@@ -46,17 +91,36 @@ class ShortBearingFilm:
         """The short-bearing film has no memory."""
         return None
 
+    def compiled_kernel(self) -> CompiledKernel:
+        """Closed-form force, Booker's exact massless inversion, radial damping."""
+        g = self.geometry
+        params = (g.radius, g.width, g.radial_clearance, 1.0)
+        return CompiledKernel(kernel_force, params, self._quasi_static_cycle, radial_damping)
+
+    def _quasi_static_cycle(self, r: QuasiStaticRequest) -> Any:
+        from conrod.film.short_bearing_velocity import short_bearing_cycle
+
+        g = self.geometry
+        alpha = start_angle(r.vx, r.vy, r.x, r.y, r.load_x[0], r.load_y[0],
+                            r.journal_speed[0] + r.shell_speed[0])
+        return short_bearing_cycle(
+            r.x, r.y, alpha, r.dt, r.load_x, r.load_y, r.journal_speed, r.shell_speed,
+            r.record_every, r.viscosity, g.radius, g.width, g.radial_clearance,
+            r.contact_radius)
+
     def force(self, state: FilmState) -> tuple[float, float]:
-        """Film force on the journal (F_x, F_y) [N]."""
+        """Film force on the journal (F_x, F_y) [N]; refuses a deformation field."""
+        refuse_deformation(state, self.name)
         g = self.geometry
         return short_bearing_force(
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             state.journal_speed + state.shell_speed, state.viscosity,
             g.radius, g.width, g.radial_clearance,
-        )
+)
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
-        """All film characteristics for one state."""
+        """All film characteristics for one state; refuses a deformation field."""
+        refuse_deformation(state, self.name)
         g = self.geometry
         c = g.radial_clearance
         ex, ey = state.eccentricity_x, state.eccentricity_y
@@ -68,7 +132,7 @@ class ShortBearingFilm:
         omega_sum = state.journal_speed + state.shell_speed
         _, f_t, alpha, speed = short_bearing_polar(
             eps, e_rate / c, whirl, omega_sum, state.viscosity, g.radius, g.width, c
-        )
+)
         fx, fy = self.force(state)
         torque_j, torque_b = self._friction_torques(state, eps, f_t * eps * c)
         p_peak, p_angle = self._peak_pressure(state, eps, alpha, speed, psi)
@@ -82,26 +146,26 @@ class ShortBearingFilm:
             max_pressure=p_peak, max_pressure_angle=p_angle,
             cavitated_fraction=0.5 if speed > 0.0 else 0.0,
             friction_power=abs(torque_j * sliding) if sliding else 0.0,
-        )
+)
         if with_pressure:
             result.pressure = self.pressure_field(state)
         return result
 
     def _friction_torques(
         self, state: FilmState, eps: float, e_times_ft: float
-    ) -> tuple[float, float]:
+) -> tuple[float, float]:
         """Shear moments on journal and shell [N m] (full-film Couette + Poiseuille term)."""
         g = self.geometry
         couette = (
             state.viscosity * g.radius**3 * g.width * (state.journal_speed - state.shell_speed)
             * 2.0 * math.pi / (g.radial_clearance * math.sqrt(1.0 - eps * eps))
-        )
+)
         poiseuille = 0.5 * e_times_ft
         return -couette - poiseuille, couette - poiseuille
 
     def _peak_pressure(
         self, state: FilmState, eps: float, alpha: float, speed: float, psi: float
-    ) -> tuple[float, float]:
+) -> tuple[float, float]:
         """Maximum mid-plane pressure [Pa] and its shell angle [rad] (sampled + refined)."""
         if speed == 0.0:
             return 0.0, 0.0

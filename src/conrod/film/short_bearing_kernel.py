@@ -40,7 +40,7 @@ def sommerfeld_angle(theta: float, eps: float) -> float:
     reduced = theta - 2.0 * math.pi * turns
     return 2.0 * math.atan2(k * math.sin(0.5 * reduced), math.cos(0.5 * reduced)) + (
         2.0 * math.pi * turns
-    )
+)
 
 
 @nb.njit(cache=True)
@@ -112,5 +112,5 @@ def short_bearing_force(
         whirl = 0.0
     f_r, f_t, _, _ = short_bearing_polar(
         e / clearance, e_rate / clearance, whirl, omega_sum, viscosity, radius, width, clearance
-    )
+)
     return f_r * cos_psi - f_t * sin_psi, f_r * sin_psi + f_t * cos_psi

@@ -1,4 +1,4 @@
-"""Steady-state journal-bearing calculator under Raimondi & Boyd's conditions (issue 3).
+"""Steady-state journal-bearing calculator under Raimondi & Boyd's conditions.
 
 Raimondi & Boyd's full journal bearing [1]: rigid, aligned, isoviscous, journal
 rotating at N [rev/s], shell fixed, Swift–Stieber (Reynolds) cavitation at gauge 0,
@@ -127,7 +127,7 @@ def _pressure_grid(film, pressure: np.ndarray | None) -> chars.FilmGrid | None:
     grid = getattr(film, "film_grid", None)
     if isinstance(grid, chars.FilmGrid) and pressure is not None and (
         pressure.shape == (grid.n_theta, grid.n_z + 1)
-    ):
+):
         return grid
     return None
 
@@ -203,7 +203,7 @@ def _dimensionless(film, geometry: BearingGeometry, state: FilmState, result: Fi
         film_end_angle_deg=math.degrees(film_end),
         model=model,
         friction_convention=friction,
-    )
+)
 
 
 @dataclass(frozen=True)
@@ -288,4 +288,4 @@ def solve_for_load(
         side_flow=side, inlet_flow=inflow,
         sommerfeld_number=(geometry.radius / c) ** 2 * viscosity * speed_rev / unit_load,
         model=model, friction_convention=friction,
-    )
+)

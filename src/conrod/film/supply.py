@@ -1,4 +1,4 @@
-"""Oil-supply features rasterised onto the film grid as Dirichlet regions (SPEC S2).
+"""Oil-supply features rasterised onto the film grid as Dirichlet regions.
 
 Grooves and feed holes of :class:`~conrod.film.base.BearingGeometry` hold the supply
 pressure; the bearing edges z = ±L/2 hold ambient (gauge 0) pressure. A feature

@@ -1,4 +1,4 @@
-"""Tabulated quasi-static film (seed 000 §3.3): precomputed squeeze-force maps, cached on disk.
+"""Tabulated quasi-static film ([D0] §3.3): precomputed squeeze-force maps, cached on disk.
 
 Any :class:`~conrod.film.base.FilmModel` (``base``) is solved once per table node for a pure
 squeeze state (ω_j = ω_b = 0) at eccentricity ε_j along +x and unit-direction velocity
@@ -28,10 +28,18 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numba as nb
 import numpy as np
 
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
+from conrod.film.capabilities import (
+    CompiledKernel,
+    HasMemory,
+    QuasiStaticRequest,
+    film_memory,
+    refuse_deformation,
+)
 from conrod.film.table_kernel import (
     CLUSTERING,
     WEIGHT_POWER,
@@ -55,6 +63,15 @@ REFERENCE_VISCOSITY = 0.01
 """Viscosity of the table solves [Pa s] (results are scaled out)."""
 REFERENCE_RATE = 100.0
 """Squeeze speed of the table solves per clearance, |v| = c · rate [1/s]."""
+
+
+@nb.njit(cache=True)
+def kernel_force(x, y, vx, vy, omega_sum, viscosity, params):
+    """:func:`table_force` [N] in the calling convention of
+    :class:`~conrod.film.capabilities.CompiledKernel`; params = (R³L/c³ [-·m], c [m],
+    Δs [-], log-magnitude table, turning table)."""
+    return table_force(x, y, vx, vy, omega_sum, viscosity, params[0], params[1], params[2],
+                       params[3], params[4])
 
 
 def check_tabulable(geometry: BearingGeometry) -> None:
@@ -115,6 +132,14 @@ class TabulatedFilm:
         self.force_scale = g.radius**3 * g.width / g.radial_clearance**3
         self.tables = self._load_or_build()
 
+    @classmethod
+    def from_settings(cls, geometry: BearingGeometry, settings: Any) -> TabulatedFilm:
+        """Table of a Reynolds film on the ``[solver]`` grid (``n_theta``, ``n_z``,
+        ``film_tolerance``)."""
+        from conrod.film.reynolds import ReynoldsFilm
+
+        return cls(ReynoldsFilm.from_settings(geometry, settings))
+
     # ------------------------------------------------------------------ cache
     def cache_key(self) -> str:
         """SHA-256 of geometry, base model and table grid."""
@@ -164,19 +189,35 @@ class TabulatedFilm:
         """Tables are memoryless."""
         return None
 
+    def compiled_kernel(self) -> CompiledKernel:
+        """Interpolated force and the table's exact massless inverse."""
+        t = self.tables
+        params = (self.force_scale, self.geometry.radial_clearance, self.s_step,
+                  t["log_magnitude"], t["turning"])
+        return CompiledKernel(kernel_force, params, self._quasi_static_cycle)
+
+    def _quasi_static_cycle(self, r: QuasiStaticRequest) -> Any:
+        from conrod.film.massless import table_cycle
+
+        t = self.tables
+        return table_cycle(
+            r.x, r.y, r.dt, r.load_x, r.load_y, r.journal_speed, r.shell_speed,
+            r.record_every, r.viscosity, self.force_scale, self.geometry.radial_clearance,
+            self.s_step, t["log_magnitude"], t["turning"], r.contact_radius)
+
     def force(self, state: FilmState) -> tuple[float, float]:
         """Film force on the journal (F_x, F_y) [N]."""
-        self._reject_deformation(state)
+        refuse_deformation(state, self.name)
         return table_force(
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             state.journal_speed + state.shell_speed, state.viscosity, self.force_scale,
             self.geometry.radial_clearance, self.s_step,
             self.tables["log_magnitude"], self.tables["turning"],
-        )
+)
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """Interpolated characteristics (no pressure field: ``with_pressure`` is ignored)."""
-        self._reject_deformation(state)
+        refuse_deformation(state, self.name)
         g = self.geometry
         c = g.radial_clearance
         eps, cos_psi, sin_psi, v_r, v_t = squeeze_velocity(
@@ -202,7 +243,7 @@ class TabulatedFilm:
             cavitated_fraction=min(max(values["cavitated"], 0.0), 1.0),
             friction_power=abs((wedge - couette) * sliding),
             extra={"eccentricity_ratio": eps},
-        )
+)
 
     def _interpolate(self, eps: float, v_r: float, v_t: float) -> dict[str, float]:
         """Dimensionless force (radial, tangential) × |v_s| and the other quantities."""
@@ -218,14 +259,10 @@ class TabulatedFilm:
             values[q] *= speed
         return values | {"radial": f_r * speed, "tangential": f_t * speed}
 
-    def _reject_deformation(self, state: FilmState) -> None:
-        if state.deformation is not None:
-            raise CaseError("film = 'table' cannot take a deformation field (use 'reynolds')")
-
     # ------------------------------------------------------------- accuracy
     def interpolation_error(
         self, n_points: int = 24, *, eccentricity_max: float | None = None, seed: int = 0
-    ) -> dict[str, float]:
+) -> dict[str, float]:
         """Max and RMS of |F_table − F_base|/|F_base| at random off-grid states [-].
 
         States have random ε ∈ [0.02, eccentricity_max], squeeze direction, journal and
@@ -273,12 +310,17 @@ def build_squeeze_tables(
     n_direction = directions.size
     tables = {q: np.zeros((eccentricities.size, n_direction)) for q in QUANTITIES}
     mirror = {"turning", "peak_sin"}
+    memory = film_memory(base)  # warm start carried from node to node
     for j, eps in enumerate(eccentricities):
         for k in range(n_direction // 2, n_direction + 1):
             beta = math.pi if k == n_direction else float(directions[k])
             state = FilmState(eps * c, 0.0, speed * math.cos(beta), speed * math.sin(beta),
                               viscosity=REFERENCE_VISCOSITY)
-            row = _table_row(base.solve(state), beta, eps, scale * force_scale, speed, scale)
+            if isinstance(base, HasMemory):
+                result, memory = base.solve_with_memory(state, memory)
+            else:
+                result = base.solve(state)
+            row = _table_row(result, beta, eps, scale * force_scale, speed, scale)
             for q, value in row.items():
                 tables[q][j, k % n_direction] = value
                 tables[q][j, (n_direction - k) % n_direction] = -value if q in mirror else value

@@ -18,7 +18,7 @@ squeeze singularity at ε → 1) and the turning angle A (≈ 0 when the force o
 velocity) on direction nodes uniform in u, β = u + (κ/2) sin 2u (:data:`CLUSTERING`), and
 on ε nodes uniform in s = −ln(1 − ε). Both are interpolated by three-point Lagrange
 polynomials in s and in u: quadratic in the
-displacement as seed 000 §3.3. In the velocity the interpolation is log-polar rather than
+displacement as [D0] §3.3. In the velocity the interpolation is log-polar rather than
 linear: the force magnitude changes by orders of magnitude with the velocity direction
 near the wall (separating vs approaching motion), where a linear blend errs by ~20 %.
 

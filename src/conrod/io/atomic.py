@@ -32,7 +32,7 @@ def atomic_path(target: str | os.PathLike[str]) -> Iterator[Path]:
     target.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp_name = tempfile.mkstemp(
         prefix=f".{target.stem}.", suffix=target.suffix, dir=target.parent
-    )
+)
     os.close(fd)
     tmp = Path(tmp_name)
     try:
@@ -83,7 +83,7 @@ def write_csv(
         handle.write(",".join(names) + "\n")
         table = np.column_stack(
             [a.astype(float) if a.dtype.kind in "biuf" else a for a in arrays]
-        )
+)
         if all(a.dtype.kind in "biuf" for a in arrays):
             np.savetxt(handle, table, delimiter=",", fmt=float_format)
         else:

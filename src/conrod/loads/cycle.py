@@ -47,7 +47,7 @@ class LoadCycle:
             raise CaseError(
                 f"load cycle: angles span {math.degrees(angle[-1] - angle[0]):.1f} deg, "
                 f"more than the cycle of {math.degrees(self.cycle):.0f} deg"
-            )
+)
         for name in ("load_x", "load_y", "journal_speed", "shell_speed"):
             values = np.asarray(getattr(self, name), dtype=float)
             if values.shape != angle.shape or not np.all(np.isfinite(values)):
@@ -56,7 +56,7 @@ class LoadCycle:
     def _periodic(self, values: np.ndarray, crank_angle: np.ndarray | float) -> np.ndarray:
         return np.interp(
             np.asarray(crank_angle, dtype=float), self.crank_angle, values, period=self.cycle
-        )
+)
 
     def load(self, crank_angle: np.ndarray | float) -> tuple[np.ndarray, np.ndarray]:
         """Load (W_x, W_y) [N] at any crank angle [rad], periodic linear interpolation."""
@@ -67,7 +67,7 @@ class LoadCycle:
         return (
             self._periodic(self.journal_speed, crank_angle),
             self._periodic(self.shell_speed, crank_angle),
-        )
+)
 
     @property
     def period_time(self) -> float:

@@ -1,6 +1,6 @@
-"""Polar load diagram data, journal wear diagram and oil-hole angle (seed 001).
+"""Polar load diagram data, journal wear diagram and oil-hole angle ([D1]).
 
-Wear diagram (seed 001, lecture 16): wear is assumed proportional to the load and
+Wear diagram ([D1], lecture 16): wear is assumed proportional to the load and
 spread uniformly over ±60° about the instantaneous load direction on the journal.
 For every crank angle a ring strip of height ∝ |R| is added over that sector; the sum
 is the (conventional) wear diagram. Its least-worn zone is where the oil-supply hole
@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 WEAR_HALF_WIDTH = math.radians(60.0)
-"""Half-width of the sector worn by one load (seed 001) [rad]."""
+"""Half-width of the sector worn by one load ([D1]) [rad]."""
 
 
 def wrap_angle(angle: np.ndarray | float) -> np.ndarray:
@@ -75,7 +75,7 @@ def least_worn_angle(journal_angle: np.ndarray, wear: np.ndarray) -> float:
 def polar_diagram_points(
     radial_force: np.ndarray, tangential_force: np.ndarray, rotating_force: float
 ) -> tuple[np.ndarray, np.ndarray, tuple[float, float]]:
-    """Polar diagram of the rod force S on the crankpin (seed 001), crank frame.
+    """Polar diagram of the rod force S on the crankpin ([D1]), crank frame.
 
     Returns (T [N], outward radial component of S [N], pole O' [N]): the points are the
     tips of S drawn from the pole O = (0, 0); the resultant on the crankpin (S plus the

@@ -1,4 +1,4 @@
-"""Engine loads on the big-end bearing over one 720° cycle (SPEC S1) — the orchestrator.
+"""Engine loads on the big-end bearing over one 720° cycle  — the orchestrator.
 
 .. code-block:: python
 
@@ -89,7 +89,7 @@ class EngineLoads:
         return np.arctan2(self.load_crank_y, self.load_crank_x)
 
     def wear(self, bins: int = 360) -> tuple[np.ndarray, np.ndarray]:
-        """Journal wear diagram (seed 001): (journal angle [rad], summed strips [N])."""
+        """Journal wear diagram ([D1]): (journal angle [rad], summed strips [N])."""
         return wear_diagram(self.journal_load_angle(), self.load_magnitude, bins=bins)
 
     def oil_hole_angle(self) -> float:
@@ -104,7 +104,7 @@ class EngineLoads:
             self.bearing_diameter * self.bearing_width
             if self.bearing_diameter and self.bearing_width
             else None
-        )
+)
         return {
             "peak_load_N": float(self.load_magnitude[peak]),
             "peak_load_crank_angle_deg": float(self.crank_angle_deg[peak]),
@@ -132,7 +132,7 @@ class EngineLoads:
             shell_speed=self.shell_speed,
             crank_speed=self.crank_speed,
             cycle=CYCLE,
-        )
+)
 
 
 def crank_angle_grid(step_deg: float) -> np.ndarray:
@@ -161,10 +161,10 @@ def _pin_force(
         masses = forces.two_mass_split(engine.rod_mass, length, l1)
         axial = gas + forces.reciprocating_inertia_force(
             engine.piston_mass + masses.small_end, accel
-        )
+)
         radial, tangential = forces.crank_forces(
             forces.rod_force(axial, beta), phi, beta, -masses.big_end * r * omega**2
-        )
+)
         return (*forces.crank_to_engine(radial, tangential, phi), masses)
     masses = forces.three_mass_split(engine.rod_mass, length, l1, engine.rod_inertia)
     fx, fy = forces.rigid_rod_pin_force(
@@ -177,7 +177,7 @@ def _pin_force(
         rod_length=length,
         cg_from_big_end=l1,
         rod_inertia=engine.rod_inertia,
-    )
+)
     return fx, fy, masses
 
 
@@ -226,4 +226,4 @@ def compute_engine_loads(case: Case, step_deg: float = 1.0) -> EngineLoads:
         rod_model="two_mass" if engine.rod_inertia is None else "three_mass",
         bearing_diameter=bearing.diameter if bearing else None,
         bearing_width=bearing.width if bearing else None,
-    )
+)

@@ -1,21 +1,21 @@
-"""Forces of the crank train on the big-end bearing (SPEC S1, seed 000 §3.4, seed 001).
+"""Forces of the crank train on the big-end bearing ([D0] §3.4, [D1]).
 
 Signs (``docs/conventions.md``):
 
 * Forces along the cylinder axis (gas P_g, reciprocating inertia P_j, total P_Σ) are
-  positive **towards the crank axis** (−X), the textbook convention of seeds 000/001.
+  positive **towards the crank axis** (−X), the textbook convention of [D0] and [D1].
 * Rod force S is positive in **compression** (rod pushing the crankpin).
 * Radial crank force R (often K) is positive **towards the crank axis**; tangential T is
   positive **in the direction of rotation**. The rod's rotating-mass force P_r = −m_rk r ω²
-  (outward, seed 001's K_R) is included in R.
+  (outward, [D1]'s K_R) is included in R.
 * ``pin_force`` is the force the rod exerts on the crankpin [N]; the bearing load handed to
   the film (:class:`~conrod.loads.cycle.LoadCycle`) is its negative.
 
 References
 ----------
-[1] Seed 000 eqs 3.4.1–3.4.3: S = P_Σ / cos β (the seed's "/tg(b)" is a typo),
+[1] [D0] eqs 3.4.1–3.4.3: S = P_Σ / cos β ([D0]'s "/tg(b)" is a typo),
     R = S cos(φ + β) + P_r, T = S sin(φ + β).
-[2] Seed 001 (lecture 16): K_R = −m_rk r ω²; polar diagram of S shifted by K_R.
+[2] [D1] (lecture 16): K_R = −m_rk r ω²; polar diagram of S shifted by K_R.
 [3] A.S. Orlin, M.G. Kruglov (eds.), *Dvigateli vnutrennego sgoraniya: dinamika i
     konstruirovanie*, 1980 — two- and three-mass rod models.
 """
@@ -41,7 +41,7 @@ def gas_force(gauge_pressure: np.ndarray, bore: float) -> np.ndarray:
 def reciprocating_inertia_force(mass: float, piston_acceleration: np.ndarray) -> np.ndarray:
     """P_j = −m_j s̈ [N] (towards the crank positive); s̈ from :mod:`kinematics` [m/s²].
 
-    With the series acceleration this is P_j = −m_j r ω² (cos φ + λ cos 2φ) (SPEC S1).
+    With the series acceleration this is P_j = −m_j r ω² (cos φ + λ cos 2φ).
     """
     return -mass * np.asarray(piston_acceleration, dtype=float)
 
@@ -81,18 +81,18 @@ def three_mass_split(
     l1, l2 = cg_from_big_end, rod_length - cg_from_big_end
     return RodMasses(
         inertia / (l1 * rod_length), inertia / (l2 * rod_length), rod_mass - inertia / (l1 * l2)
-    )
+)
 
 
 def rod_force(axial_force: np.ndarray, beta: np.ndarray) -> np.ndarray:
-    """Force along the rod S = P_Σ / cos β [N], compression positive (seed 000 eq. 3.4.1)."""
+    """Force along the rod S = P_Σ / cos β [N], compression positive ([D0] eq. 3.4.1)."""
     return np.asarray(axial_force) / np.cos(beta)
 
 
 def crank_forces(
     rod_force_value: np.ndarray, crank_angle: np.ndarray, beta: np.ndarray, rotating_force: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Radial R = S cos(φ+β) + P_r and tangential T = S sin(φ+β) [N] (seed 000 eqs 3.4.2–3)."""
+    """Radial R = S cos(φ+β) + P_r and tangential T = S sin(φ+β) [N] ([D0] eqs 3.4.2–3)."""
     radial = rod_force_value * np.cos(crank_angle + beta) + rotating_force
     tangential = rod_force_value * np.sin(crank_angle + beta)
     return radial, tangential
@@ -148,7 +148,7 @@ def rigid_rod_pin_force(
     force_b_x = np.asarray(-axial_piston_force, dtype=float)  # piston on rod, along X
     moment = rod_inertia * rod_angular_acceleration + rod_mass * cg_from_big_end * (
         ux * acc_y - uy * acc_x
-    )
+)
     force_b_y = (moment / rod_length + uy * force_b_x) / ux
     force_a_x = rod_mass * acc_x - force_b_x
     force_a_y = rod_mass * acc_y - force_b_y

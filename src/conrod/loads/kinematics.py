@@ -1,4 +1,4 @@
-"""Crank-slider kinematics: exact closed form and the series form of seed 003.
+"""Crank-slider kinematics: exact closed form and the series form of [D3].
 
 Frame (``docs/conventions.md``): engine frame X along the cylinder axis from the
 crank axis towards TDC, crank rotating counter-clockwise (positive) at constant ω,
@@ -14,7 +14,7 @@ Piston displacement from TDC s = r + L − X_p (positive towards the crank).
 
 References
 ----------
-[1] Seed 003 (Kulayev), §2: S = r[1 − cos α + λ(1 − cos 2α)/4].
+[1] [D3] (Kulayev), §2: S = r[1 − cos α + λ(1 − cos 2α)/4].
 [2] J.B. Heywood, *Internal Combustion Engine Fundamentals*, McGraw-Hill 1988, §2.2
     (exact slider-crank relations).
 """
@@ -71,7 +71,7 @@ def piston_displacement(
     lam = crank_radius / rod_length
     return crank_radius * (1.0 - np.cos(crank_angle)) + rod_length * (
         1.0 - np.sqrt(1.0 - (lam * np.sin(crank_angle)) ** 2)
-    )
+)
 
 
 def piston_velocity(
@@ -86,7 +86,7 @@ def piston_velocity(
     beta = rod_angle(crank_angle, lam)
     return crank_speed * (
         crank_radius * np.sin(crank_angle) + rod_length * np.sin(beta) * beta_rate
-    )
+)
 
 
 def piston_acceleration(
@@ -102,20 +102,20 @@ def piston_acceleration(
     return crank_speed**2 * (
         crank_radius * np.cos(crank_angle)
         + rod_length * (np.cos(beta) * first**2 + np.sin(beta) * second)
-    )
+)
 
 
 def piston_displacement_series(
     crank_angle: ArrayLike, crank_radius: float, rod_length: float
 ) -> np.ndarray:
-    """Seed-003 series piston displacement s [m]; error r λ³ sin⁴φ / 8 + O(λ⁵).
+    """[D3] series piston displacement s [m]; error r λ³ sin⁴φ / 8 + O(λ⁵).
 
     .. math:: s = r \\left[1 - \\cos φ + \\frac{λ}{4}(1 - \\cos 2φ)\\right]
     """
     lam = crank_radius / rod_length
     return crank_radius * (
         1.0 - np.cos(crank_angle) + 0.25 * lam * (1.0 - np.cos(2.0 * crank_angle))
-    )
+)
 
 
 def piston_velocity_series(
@@ -125,13 +125,13 @@ def piston_velocity_series(
     lam = crank_radius / rod_length
     return (
         crank_radius * crank_speed * (np.sin(crank_angle) + 0.5 * lam * np.sin(2.0 * crank_angle))
-    )
+)
 
 
 def piston_acceleration_series(
     crank_angle: ArrayLike, crank_radius: float, rod_length: float, crank_speed: float
 ) -> np.ndarray:
-    """Series piston acceleration [m/s²]: s̈ = r ω² (cos φ + λ cos 2φ) (seed 000/001 P_j)."""
+    """Series piston acceleration [m/s²]: s̈ = r ω² (cos φ + λ cos 2φ) ([D0]/001 P_j)."""
     lam = crank_radius / rod_length
     return crank_radius * crank_speed**2 * (np.cos(crank_angle) + lam * np.cos(2.0 * crank_angle))
 

@@ -1,4 +1,4 @@
-"""Cylinder pressure over the 4-stroke cycle: measured trace or seed-003 parametric model.
+"""Cylinder pressure over the 4-stroke cycle: measured trace or [D3] parametric model.
 
 Both are periodic over 4π (720°) with φ = 0 at firing TDC and give the **absolute**
 pressure [Pa]; the gas force uses the gauge pressure p − p_ambient.
@@ -80,16 +80,16 @@ class TracePressure(_GaugeMixin):
         """Absolute pressure [Pa], periodic linear interpolation of the trace."""
         return np.interp(
             np.asarray(crank_angle, dtype=float), self.crank_angle, self.pressure, period=CYCLE
-        )
+)
 
 
 @dataclass(frozen=True)
 class ParametricPressure(_GaugeMixin):
-    """Parametric 4-stroke diesel pressure of seed 003 §2 (with the SPEC's typo fixes).
+    """Parametric 4-stroke diesel pressure of [D3] §2 (with its printing errors corrected).
 
     With S(φ) the series piston displacement, S_c = S_p/(ε − 1) and p_c = p_a ε^{n1}:
 
-    * 0–15°: p = p_c + (p_z − p_c) S/S(15°)  (rise, linear in displacement as in the seed)
+    * 0–15°: p = p_c + (p_z − p_c) S/S(15°)  (rise, linear in displacement as in [D3])
     * 15°–15°+θ: p = p_z
     * 15°+θ–170°: p = p_z [(S_c + S(15°+θ))/(S_c + S)]^{n2}
     * 170°–360°: p = p_b;  360°–540°: p = p_a
@@ -132,11 +132,11 @@ class ParametricPressure(_GaugeMixin):
         s_plateau = self._displacement(plateau_end)
         expansion = (
             p_z * ((clearance_height + s_plateau) / (clearance_height + s)) ** self.expansion_index
-        )
+)
         compression = (
             self.intake_pressure
             * ((clearance_height + stroke) / (clearance_height + s)) ** self.compression_index
-        )
+)
         conditions = [
             phi <= rise_end,
             phi <= plateau_end,
@@ -156,7 +156,7 @@ class ParametricPressure(_GaugeMixin):
     @classmethod
     def from_section(
         cls, model: PressureModelSection, crank_radius: float, rod_length: float
-    ) -> ParametricPressure:
+) -> ParametricPressure:
         """Build from ``[engine.pressure_model]``; check p_z ≥ p_c (else CaseError)."""
         pressure = cls(
             crank_radius=crank_radius,
@@ -169,7 +169,7 @@ class ParametricPressure(_GaugeMixin):
             compression_index=model.compression_index,
             expansion_index=model.expansion_index,
             ambient=model.ambient_pressure,
-        )
+)
         p_c = pressure.compression_end_pressure
         if model.max_pressure < p_c:
             raise range_error(
@@ -177,7 +177,7 @@ class ParametricPressure(_GaugeMixin):
                 model.max_pressure,
                 f">= compression-end pressure p_a*eps^n1 = {p_c:.4g}",
                 "Pa",
-            )
+)
         return pressure
 
 
@@ -191,7 +191,7 @@ def _read_rows(path: Path) -> tuple[list[int], list[list[str]], dict[str, int]]:
     except OSError as error:
         raise CaseError(
             f"pressure trace {str(path)!r}: cannot be read ({error.strerror})"
-        ) from None
+) from None
     lines = [
         (n, s)
         for n, s in enumerate(text.splitlines(), start=1)
@@ -205,7 +205,7 @@ def _read_rows(path: Path) -> tuple[list[int], list[list[str]], dict[str, int]]:
         if needed not in header:
             raise _trace_error(
                 path, lines[0][0], f"missing column '{needed}' (header: {', '.join(header)})"
-            )
+)
     return [n for n, _ in lines[1:]], rows[1:], header
 
 
@@ -238,14 +238,14 @@ def read_pressure_trace(path: Path) -> tuple[np.ndarray, np.ndarray]:
         if pressure <= 0.0:
             raise _trace_error(
                 path, line, f"pressure_Pa = {pressure:g} must be > 0 (absolute) [Pa]"
-            )
+)
         if angles and angle <= angles[-1]:
             raise _trace_error(
                 path,
                 line,
                 f"crank_angle_deg = {angle:g} is not above the "
                 f"previous {angles[-1]:g} (angles must increase)",
-            )
+)
         angles.append(angle)
         pressures.append(pressure)
     if len(angles) < 4:
@@ -260,7 +260,7 @@ def _check_coverage(path: Path, angles: np.ndarray, numbers: list[int]) -> None:
         raise CaseError(
             f"pressure trace {str(path)!r}: angles span {span:g} deg "
             f"({angles[0]:g}..{angles[-1]:g}); one cycle of 720 deg is expected"
-        )
+)
     gaps = np.diff(angles)
     wrap_gap = 720.0 - span
     worst = int(np.argmax(gaps))
@@ -270,12 +270,12 @@ def _check_coverage(path: Path, angles: np.ndarray, numbers: list[int]) -> None:
             numbers[worst + 1],
             f"missing angles: gap of {gaps[worst]:g} deg from {angles[worst]:g} to "
             f"{angles[worst + 1]:g} (allowed: <= {MAX_TRACE_GAP_DEG:g} deg)",
-        )
+)
     if wrap_gap > MAX_TRACE_GAP_DEG:
         raise CaseError(
             f"pressure trace {str(path)!r}: covers only {angles[0]:g}..{angles[-1]:g} "
             f"deg; the full 720 deg cycle is needed (missing angles)"
-        )
+)
 
 
 def _drop_duplicate_end(angles: np.ndarray, pressures: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -298,9 +298,9 @@ def build_pressure(case: Case) -> CylinderPressure:
     if engine.pressure_trace is not None:
         ambient = (
             engine.ambient_pressure if engine.ambient_pressure is not None else DEFAULT_AMBIENT
-        )
+)
         return pressure_from_trace(case.resolve(engine.pressure_trace), ambient)
     assert engine.pressure_model is not None
     return ParametricPressure.from_section(
         engine.pressure_model, engine.crank_radius, engine.rod_length
-    )
+)

@@ -1,4 +1,4 @@
-"""Bearing load from a table: ``[load] table = "load.csv"`` (issue 4).
+"""Bearing load from a table: ``[load] table = "load.csv"``.
 
 The CSV has the columns ``crank_angle_deg, load_x_N, load_y_N`` (bearing/film frame, load
 pressing the journal on the shell), optionally ``journal_speed_rad_s`` and
@@ -38,7 +38,7 @@ def read_load_columns(path: Path) -> dict[str, np.ndarray]:
         raise CaseError(
             f"load.table {str(path)!r}: missing column(s) {', '.join(missing)} "
             f"(found: {', '.join(header)}; required: {', '.join(REQUIRED_COLUMNS)})"
-        )
+)
     try:
         data = np.array([[float(v) for v in row.split(",")] for row in rows[1:]], dtype=float)
     except ValueError as error:
@@ -62,7 +62,7 @@ def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
         raise CaseError(
             f"load.table {str(path)!r}: crank angles span "
             f"{angle_deg[-1] - angle_deg[0]:g} deg, more than load.cycle_deg = {section.cycle_deg}"
-        )
+)
     crank_speed = rpm_to_rad_s(section.speed)
     journal = crank_speed if section.journal_speed is None else section.journal_speed
     journal_speed = columns.get("journal_speed_rad_s", np.full(angle_deg.size, float(journal)))
@@ -75,7 +75,7 @@ def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
         shell_speed=shell_speed[keep],
         crank_speed=crank_speed,
         cycle=math.radians(section.cycle_deg),
-    )
+)
 
 
 def _closes_cycle(angle_deg: np.ndarray, section: LoadTableSection) -> bool:

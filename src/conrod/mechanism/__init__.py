@@ -1,10 +1,10 @@
-"""Slider-crank with clearances in both rod bearings: worn shells, impacts (SPEC S6, seed 003).
+"""Slider-crank with clearances in both rod bearings: worn shells, impacts ([D3]).
 
 .. code-block:: python
 
     from conrod.mechanism import mechanism_case, run_sweep, simulate
 
-    run = mechanism_case(Case.from_toml("examples/seed003_worn_rod_bearings.toml"))
+    run = mechanism_case(Case.from_toml("examples/kulayev_worn_rod_bearings.toml"))
     results = simulate(run.mechanism, run.scaled_gas_table(), run.settings)
     results.summary()["max_impact_velocity_big_end_m_s"]     # [m/s]
 

@@ -1,4 +1,4 @@
-"""Contact geometry and contact law of a worn (elliptical) rod-bearing shell (seed 003).
+"""Contact geometry and contact law of a worn (elliptical) rod-bearing shell ([D3]).
 
 A worn shell is an ellipse with semi-axes
 
@@ -13,21 +13,21 @@ the shell surface in the direction ϕ measured from the major axis is
 
     p(ϕ) = \\frac{b}{\\sqrt{1 - e^2 \\cos^2 ϕ}}
 
-(seed 003 prints ``b / (√(1 − cos²ϕ)·ε²)``, misplacing the root; SPEC S6 fixes it:
+([D3] prints ``b / (√(1 − cos²ϕ)·ε²)``, misplacing the root; corrected here:
 p(0) = a, p(π/2) = b). With the shell centre displaced by ``r`` from the journal
-centre in the direction ϕ, the seed's penetration along that ray is
+centre in the direction ϕ, [D3]'s penetration along that ray is
 
 .. math::
 
     δ = (r + D/2) - p(ϕ),
 
-and the normal contact force, zero for δ ≤ 0, is (seed 003, reaction R₁₂/R₃₂)
+and the normal contact force, zero for δ ≤ 0, is ([D3], reaction R₁₂/R₃₂)
 
 .. math::
 
     R = c δ^α + β \\dot δ, \\qquad β = 2 μ \\sqrt{c\\, m_{eff}} .
 
-The printed seed multiplies β by ṙ; here the penetration rate δ̇ = ṙ − ṗ is used
+the printed [D3] multiplies β by ṙ; here the penetration rate δ̇ = ṙ − ṗ is used
 (identical for circular shells, where ṗ = 0). A damping term that would pull the
 surfaces together (R < 0 while separating) is clipped to R = 0.
 
@@ -78,7 +78,7 @@ def penetration(
     dx, dy : float  Shell centre minus journal centre, engine frame [m].
     rod_angle : float  Rod angle φ₂ in the engine frame [rad].
     ellipse_angle : float  Major axis to rod axis γ [rad].
-    The direction in the shell frame is ϕ = atan2(dy, dx) − γ − φ₂ (seed 003).
+    The direction in the shell frame is ϕ = atan2(dy, dx) − γ − φ₂ ([D3]).
     """
     radius = math.sqrt(dx * dx + dy * dy)
     angle = math.atan2(dy, dx) - ellipse_angle - rod_angle
@@ -93,7 +93,7 @@ def penetration_rate(
     """Radial rate ṙ and penetration rate δ̇ = ṙ − p'(ϕ)·ϕ̇ (same time unit as vx, vy).
 
     vx, vy : float  Rates of dx, dy; rod_rate : float  rate of φ₂ (consistent units).
-    ϕ̇ = (dx·vy − vx·dy)/r² − φ̇₂ (seed 003, derivative of p₁, p₂).
+    ϕ̇ = (dx·vy − vx·dy)/r² − φ̇₂ ([D3], derivative of p₁, p₂).
     """
     radius_sq = dx * dx + dy * dy + 1.0e-50
     radius = math.sqrt(radius_sq)
@@ -115,7 +115,7 @@ def contact_force(depth: float, depth_rate: float, stiffness: float, exponent: f
 
 
 def damping_coefficient(damping_factor: float, stiffness: float, effective_mass: float) -> float:
-    """Seed 003 damping β = 2 μ √(c m_eff) [N s/m for α = 1]."""
+    """[D3] damping β = 2 μ √(c m_eff) [N s/m for α = 1]."""
     return 2.0 * damping_factor * math.sqrt(stiffness * effective_mass)
 
 

@@ -1,6 +1,6 @@
-"""Right-hand side of the slider-crank with two clearance joints (seed 003, numba).
+"""Right-hand side of the slider-crank with two clearance joints ([D3], numba).
 
-State (seed 003 names), with the crank angle α = ω₁t as independent variable and
+State ([D3] names), with the crank angle α = ω₁t as independent variable and
 primes meaning d/dα:
 
     y = (x_c, x_c', y_c, y_c', φ₂, φ₂', x₃, x₃', W)
@@ -13,7 +13,7 @@ the gas minus the contact losses [J] (energy check only).
 Frame: x along the cylinder axis from the crank centre towards the cylinder head,
 crank-pin centre at (r cos α, r sin α); α = 0 at firing TDC.
 
-Relative coordinates (seed 003): big end (shell of the rod on the crank pin)
+Relative coordinates ([D3]): big end (shell of the rod on the crank pin)
 
     x₁₂ = x_c − r cos α + L₁ cos φ₂,   y₁₂ = y_c − r sin α + L₁ sin φ₂,
 
@@ -21,17 +21,17 @@ small end (shell of the rod on the piston pin)
 
     x₃₂ = x_c − (L − L₁) cos φ₂ − x₃,  y₃₂ = y_c − (L − L₁) sin φ₂.
 
-Equations of motion (seed 003, forces divided by m ω₁², moments by J_c2 ω₁²):
+Equations of motion ([D3], forces divided by m ω₁², moments by J_c2 ω₁²):
 
     m₂ x_c'' ω₁² = X₁₂ + X₃₂ + F₁₂ₓ,   m₂ y_c'' ω₁² = Y₁₂ + Y₃₂ + F₁₂ᵧ,
     J_c2 φ₂'' ω₁² = Σ M_C,              m₃ x₃'' ω₁² = −X₃₂ − P.
 
 Sign convention: X₁₂, X₃₂ here are the forces **on the rod**; they push the shell
-centre back towards the journal (−R·(x, y)/r). The seed prints +R·(x, y)/r, which
+centre back towards the journal (−R·(x, y)/r). [D3] prints +R·(x, y)/r, which
 with its own initial conditions would pull the surfaces into each other; the
 restoring sign is the physical one and is used here. The big-end friction F₁₂ = f R
 acts on the rod at the contact point against the sliding of the rod's surface over
-the crank pin; its moment about the big-end centre is f R D/2 (seed 003: "+F₁₂·D/2").
+the crank pin; its moment about the big-end centre is f R D/2 ([D3]: "+F₁₂·D/2").
 """
 
 from __future__ import annotations
@@ -56,7 +56,7 @@ BIG_END, SMALL_END = 8, 18
 """Offsets of the two joint blocks."""
 (DIAMETER, MINOR, ECC_SQ, ELLIPSE_ANGLE, STIFFNESS, EXPONENT, DAMPING, FRICTION, MAJOR,
  GEOMETRY) = range(10)
-"""Entries of a joint block (GEOMETRY: 0 seed radial penetration, 1 exact contact)."""
+"""Entries of a joint block (GEOMETRY: 0 radial penetration of [D3], 1 exact contact)."""
 BLOCK_SIZE = 10
 FX, FY, MOMENT, NORMAL, ELASTIC, RADIAL_RATE, DEPTH_RATE, SLIDE, TANGENTIAL = range(9)
 """Entries of the tuple returned by :func:`joint_loads`."""
@@ -105,7 +105,7 @@ def joint_kinematics(dx: float, dy: float, vx: float, vy: float, rod_angle: floa
                      rod_rate: float, p: np.ndarray, block: int) -> tuple:
     """(δ, nx, ny, work rate, δ', lever) of one joint; rates per radian of crank.
 
-    Seed geometry: n = d/r, work rate ṙ, δ' = ṙ − p'(ϕ)ϕ', lever 0 (force through the
+    The [D3] geometry: n = d/r, work rate ṙ, δ' = ṙ − p'(ϕ)ϕ', lever 0 (force through the
     shell centre). Exact geometry: n the contact normal, work rate = δ', lever (d × n)_z.
     """
     if p[block + GEOMETRY] > 0.5:
@@ -166,7 +166,7 @@ def gas_force(alpha: float, table: np.ndarray) -> float:
 
 @njit(cache=True)
 def mechanism_rhs(alpha: float, y: np.ndarray, p: np.ndarray, table: np.ndarray) -> np.ndarray:
-    """dy/dα of the 9-state system (seed 003 matrix of right-hand sides)."""
+    """dy/dα of the 9-state system ([D3] matrix of right-hand sides)."""
     omega = p[CRANK_SPEED]
     w2 = omega * omega
     phi, phi_rate = y[4], y[5]
@@ -198,7 +198,7 @@ def _net_power(alpha: float, y: np.ndarray, p: np.ndarray, big: tuple, small: tu
     """Crank power + gas power − contact losses [W] (energy balance, see module doc).
 
     Loss of a joint: R ṙ − c δ^α δ̇ − F_t v_t (damping, clipping, friction and the
-    non-potential part of the seed's radial force on an elliptical shell).
+    non-potential part of [D3]'s radial force on an elliptical shell).
     """
     omega, r = p[CRANK_SPEED], p[CRANK_RADIUS]
     pin_vx, pin_vy = -omega * r * math.sin(alpha), omega * r * math.cos(alpha)

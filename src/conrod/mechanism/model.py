@@ -15,12 +15,12 @@ from conrod.mechanism import kernel as k
 from conrod.mechanism.geometry import damping_coefficient, shell_radius, shell_semi_axes
 
 ROD_INERTIA_FACTOR = 0.175
-"""Seed 003: J_c2 = 0.175·m₂·L² when the rod inertia is unknown [-]."""
+"""[D3]: J_c2 = 0.175·m₂·L² when the rod inertia is unknown [-]."""
 
 
 @dataclass(frozen=True)
 class ClearanceJoint:
-    """One rod bearing with a worn elliptical shell (seed 003 symbols).
+    """One rod bearing with a worn elliptical shell ([D3] symbols).
 
     diameter : float  Journal/pin diameter D (big end) or d (small end) [m].
     clearance_max : float  Diametral clearance along the major axis Δmax [m].
@@ -30,7 +30,7 @@ class ClearanceJoint:
     contact_exponent : float  α [-].
     damping_factor : float  μ in β = 2 μ √(c m_eff) [-].
     friction_coefficient : float  f [-].
-    damping_scale : float  Extra factor on β (seed 003: 0.3 at the small end) [-].
+    damping_scale : float  Extra factor on β ([D3]: 0.3 at the small end) [-].
     """
 
     diameter: float
@@ -57,7 +57,7 @@ class ClearanceJoint:
 
     def block(self, effective_mass: float, exact: bool = False) -> np.ndarray:
         """The joint's entries of the kernel parameter vector (β from ``effective_mass``
-        [kg]; ``exact`` selects the exact ellipse–circle contact instead of the seed's)."""
+        [kg]; ``exact`` selects the exact ellipse–circle contact instead of [D3]'s)."""
         major, minor, eccentricity_sq = shell_semi_axes(
             self.diameter, self.clearance_max, self.clearance_min)
         damping = self.damping_scale * damping_coefficient(
@@ -69,7 +69,7 @@ class ClearanceJoint:
 
 @dataclass(frozen=True)
 class CrankTrain:
-    """Slider-crank of seed 003.
+    """Slider-crank of [D3].
 
     crank_radius : float  R [m]; rod_length : float  L [m];
     rod_cg_from_big_end : float  L₁ [m]; rod_mass : float  m₂ [kg];
@@ -87,18 +87,18 @@ class CrankTrain:
 
     @classmethod
     def with_seed_inertia(cls, **kwargs: float) -> CrankTrain:
-        """Build with J_c2 = 0.175 m₂ L² (seed 003) [kg m²]."""
+        """Build with J_c2 = 0.175 m₂ L² ([D3]) [kg m²]."""
         inertia = ROD_INERTIA_FACTOR * kwargs["rod_mass"] * kwargs["rod_length"] ** 2
         return cls(rod_inertia=inertia, **kwargs)
 
     @property
     def big_end_mass(self) -> float:
-        """Seed 003 mass in β₂: m₂ L₁/L [kg]."""
+        """[D3] mass in β₂: m₂ L₁/L [kg]."""
         return self.rod_mass * self.rod_cg_from_big_end / self.rod_length
 
     @property
     def small_end_mass(self) -> float:
-        """Seed 003 mass in β₁: m₂ (L − L₁)/L [kg]."""
+        """[D3] mass in β₁: m₂ (L − L₁)/L [kg]."""
         return self.rod_mass * (self.rod_length - self.rod_cg_from_big_end) / self.rod_length
 
 
@@ -109,7 +109,7 @@ class Mechanism:
     friction_velocity : float  Sliding speed below which friction is smoothed,
         F = f R v/√(v² + v₀²) [m/s].
     contact_geometry : str  "seed": penetration along the line of centres
-        δ = r + D/2 − p(ϕ), force through the shell centre (seed 003); "exact": largest
+        δ = r + D/2 − p(ϕ), force through the shell centre ([D3]); "exact": largest
         violation of the shell's supporting half-planes, force along the contact normal
         (see :func:`conrod.mechanism.geometry.exact_contact`).
     """
@@ -139,16 +139,16 @@ class Mechanism:
 
 
 def static_deflection(force: float, stiffness: float, exponent: float) -> float:
-    """Seed 003: δ = |F/c|^{1/α} [m] for a contact force F [N]."""
+    """[D3]: δ = |F/c|^{1/α} [m] for a contact force F [N]."""
     return abs(force / stiffness) ** (1.0 / exponent)
 
 
 def seed_initial_state(mechanism: Mechanism, gas_force_at_tdc: float) -> np.ndarray:
-    """Approximate initial state at firing TDC (seed 003, 'vector of initial conditions').
+    """Approximate initial state at firing TDC ([D3], 'vector of initial conditions').
 
     Inertia forces P_i3 = m₃ R ω²(1 + R/L), P_i2 = m₂ R ω²(1 + 0.35 R/L); static
     deflections δ₁ = |(P_i3 − P(0))/c₁|^{1/α₁}, δ₂ = |(P_i3 + P_i2 − P(0))/c₂|^{1/α₂}.
-    The seed puts the journals Δmax/2 (here the clearance along the rod axis, equal
+    [D3] puts the journals Δmax/2 (here the clearance along the rod axis, equal
     for γ = 0) plus δ from the shell centre, against the crank-side of their shells (gas force
     wins); here the side follows the sign of the net force, so a motored or
     high-speed start (inertia wins) begins against the head-side instead.

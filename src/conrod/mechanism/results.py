@@ -87,7 +87,7 @@ class MechanismResults:
     @property
     def statistics_cycles(self) -> int:
         """Cycles whose impacts enter the statistics: all but the first (start-up
-        transient from the seed's approximate initial state) when more than one [-]."""
+        transient from the approximate initial state of [D3]) when more than one [-]."""
         return max(self.cycles - 1, 1)
 
     def settled_impacts(self) -> Impacts:
@@ -130,3 +130,22 @@ class MechanismResults:
         out["integrator_steps"] = self.steps
         out["integrator_rejected_steps"] = self.rejected_steps
         return out
+
+
+@dataclass(frozen=True)
+class MechanismRun:
+    """One mechanism run at its operating point (what ``conrod mechanism`` writes).
+
+    results : MechanismResults  Time histories and impacts.
+    speed_rpm : float  Crank speed [rpm].
+    load_scale : float  Gas-force factor [-].
+    """
+
+    results: MechanismResults
+    speed_rpm: float
+    load_scale: float
+
+    def summary(self) -> dict:
+        """``summary.json`` items: the operating point and :meth:`MechanismResults.summary`."""
+        return {"speed_rpm": self.speed_rpm, "load_scale": self.load_scale,
+                **self.results.summary()}

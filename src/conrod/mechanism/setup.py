@@ -1,7 +1,7 @@
 """Build a clearance-mechanism run from a case file (``[engine]`` + ``[clearance]``).
 
 Gas force P = π D_p²/4 · (p − p_ambient) from :func:`conrod.loads.pressure.build_pressure`
-(trace or seed-003 parametric model), scaled by ``load_scale``, tabulated over 4π.
+(trace or [D3] parametric model), scaled by ``load_scale``, tabulated over 4π.
 """
 
 from __future__ import annotations
@@ -67,14 +67,16 @@ def settings_from_section(section: ClearanceSection) -> RunSettings:
 
 
 def gas_force_table(case: Case, points: int = GAS_TABLE_POINTS) -> np.ndarray:
-    """Gas force on the piston π D_p²/4 (p − p_ambient) at ``points`` angles over 4π [N]."""
-    from conrod.loads.pressure import build_pressure  # loads layer (issue 2)
+    """Gas force on the piston π D_p²/4 (p − p_ambient) at ``points`` angles over 4π [N]
+    (cylinder pressure and gas force of the loads stage)."""
+    from conrod.loads.forces import gas_force
+    from conrod.loads.pressure import build_pressure
 
     angles = np.arange(points) * (CYCLE / points)
     case.require("mechanism", "engine")
     assert case.engine is not None
-    area = math.pi * case.engine.bore**2 / 4.0
-    return area * np.asarray(build_pressure(case).gauge(angles), dtype=float)
+    gauge = np.asarray(build_pressure(case).gauge(angles), dtype=float)
+    return np.asarray(gas_force(gauge, case.engine.bore), dtype=float)
 
 
 def mechanism_case(case: Case) -> MechanismCase:

@@ -15,6 +15,7 @@ import numpy as np
 from numba import njit
 
 from conrod.errors import ConvergenceError
+from conrod.loads.kinematics import piston_displacement
 from conrod.mechanism import integrator as rk
 from conrod.mechanism import kernel as k
 from conrod.mechanism.model import Mechanism, seed_initial_state
@@ -48,9 +49,10 @@ class RunSettings:
 
 
 def rigid_piston_position(crank_angle: np.ndarray, crank_radius: float, rod_length: float):
-    """Exact slider-crank pin position x = r cos α + √(L² − r² sin² α) [m]."""
-    return crank_radius * np.cos(crank_angle) + np.sqrt(
-        rod_length**2 - (crank_radius * np.sin(crank_angle)) ** 2)
+    """Exact slider-crank pin position from the crank centre x = r cos α + √(L² − r² sin² α)
+    = r + L − s(α) [m], s the piston displacement of the loads stage
+    (:func:`conrod.loads.kinematics.piston_displacement`)."""
+    return crank_radius + rod_length - piston_displacement(crank_angle, crank_radius, rod_length)
 
 
 def error_scale(mechanism: Mechanism, tolerance: float) -> np.ndarray:
@@ -65,7 +67,7 @@ def error_scale(mechanism: Mechanism, tolerance: float) -> np.ndarray:
 def simulate(
     mechanism: Mechanism, gas_table: np.ndarray, settings: RunSettings
 ) -> MechanismResults:
-    """Integrate ``settings.cycles`` cycles from the seed-003 initial state at firing TDC.
+    """Integrate ``settings.cycles`` cycles from the [D3] initial state at firing TDC.
 
     gas_table : ndarray  Gas force on the piston at equally spaced angles over [0, 4π) [N].
     Raises ConvergenceError when the integrator fails or exceeds its step budget.
@@ -122,7 +124,7 @@ def _assemble(mechanism, p, table, alpha, states, impacts, settings, steps, reje
 @njit(cache=True)
 def free_play_outline(p, block, angles, clearance_max):
     """Radius [m] of the free-play region of the journal centre at ``angles`` [rad] from
-    the rod axis (δ = 0 by bisection; p(ϕ) − D/2 for the seed geometry)."""
+    the rod axis (δ = 0 by bisection; p(ϕ) − D/2 for [D3] geometry)."""
     radii = np.empty(angles.shape[0])
     for i in range(angles.shape[0]):
         c, s = math.cos(angles[i]), math.sin(angles[i])

@@ -1,4 +1,4 @@
-"""Sweep of operating modes (speed × load) ranking them by diagnostic value (seed 003).
+"""Sweep of operating modes (speed × load) ranking them by diagnostic value ([D3]).
 
 The most informative diagnostic regime is the one where the worn joint knocks hardest
 **relative to** the other joint: the ratio
@@ -72,6 +72,23 @@ class SweepResults:
             out[f"impacts_per_cycle_{name}"] = self.impacts[index]
         out["impact_velocity_ratio"] = self.ratio
         return out
+
+
+@dataclass(frozen=True)
+class SweepRun:
+    """A finished sweep and its wall-clock time (what ``conrod mechanism --sweep`` writes).
+
+    sweep : SweepResults  One row per operating mode.
+    wall_time : float  Wall-clock time of the sweep [s].
+    """
+
+    sweep: SweepResults
+    wall_time: float
+
+    def summary(self) -> dict:
+        """``sweep.json`` items: the most informative regime, runs, wall time [s]."""
+        return {"most_informative_regime": self.sweep.best(),
+                "runs": int(self.sweep.ratio.size), "wall_time_s": round(self.wall_time, 2)}
 
 
 def impact_statistics(base: MechanismCase, speed_rpm: float, load_scale: float) -> np.ndarray:

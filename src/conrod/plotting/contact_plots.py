@@ -1,4 +1,4 @@
-"""Contact figures (seed 004): Fig. 4.3.2 — contact stress and friction work, h_min with
+"""Contact figures ([D4]): Fig. 4.3.2 — contact stress and friction work, h_min with
 the contact intervals shaded, p_max, against crank angle; Fig. 4.5.1 — friction work and
 wear around journal and shell (unrolled and polar). One function per figure; each takes
 :class:`conrod.contact.analysis.ContactResults` and returns a Figure."""
@@ -19,7 +19,7 @@ def _shade_intervals(axis, intervals, cycle_deg: float) -> None:
 
 
 def plot_contact_cycle(contact) -> Figure:
-    """Seed 004 Fig. 4.3.2: Hertz contact stress and cumulative friction work (top),
+    """[D4] Fig. 4.3.2: Hertz contact stress and cumulative friction work (top),
     h_min with the contact intervals shaded (middle), p_max (bottom) vs crank angle."""
     phi = np.degrees(contact.crank_angle)
     cycle_deg = float(phi[-1] - phi[0] + np.median(np.diff(phi)))
@@ -45,7 +45,7 @@ def plot_contact_cycle(contact) -> Figure:
 
 
 def plot_wear_unrolled(contact) -> Figure:
-    """Seed 004 Fig. 4.5.1: friction work and wear per element of the journal (curves 1, 2)
+    """[D4] Fig. 4.5.1: friction work and wear per element of the journal (curves 1, 2)
     and of the shell (curves 3, 4) against the surface angle."""
     wear = contact.wear
     angle = np.degrees(wear.element_angle)
@@ -74,7 +74,7 @@ def plot_wear_polar(contact) -> Figure:
     figure = Figure(figsize=(9.0, 4.5))
     for index, (name, work) in enumerate(
         (("journal", wear.journal_work), ("shell", wear.shell_work)), start=1
-    ):
+):
         axis = figure.add_subplot(1, 2, index, projection="polar")
         axis.plot(closed, np.append(work, work[0]), color="tab:blue")
         axis.fill(closed, np.append(work, work[0]), color="tab:blue", alpha=0.2)
@@ -84,7 +84,7 @@ def plot_wear_polar(contact) -> Figure:
 
 
 def plot_contact_stress_surfaces(contact) -> Figure:
-    """Seed 004 Fig. 4.4.1: largest Hertz contact stress seen by each element of the journal
+    """[D4] Fig. 4.4.1: largest Hertz contact stress seen by each element of the journal
     and of the shell over the cycle."""
     angle = np.degrees(contact.wear.element_angle)
     figure = Figure(figsize=(8.0, 4.0))

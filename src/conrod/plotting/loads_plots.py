@@ -31,11 +31,11 @@ def _label_angles(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, eve
         axes.annotate(f"{ai:.0f}°", (xi, yi), textcoords="offset points", xytext=(4, 3), fontsize=7)
 
 
-def polar_load_diagram(loads: EngineLoads) -> Figure:
-    """Polar diagram of the rod force S on the crankpin with poles O and O' (seed 001)."""
+def plot_polar_load_diagram(loads: EngineLoads) -> Figure:
+    """Polar diagram of the rod force S on the crankpin with poles O and O' ([D1])."""
     tangential, outward, pole_shift = polar_diagram_points(
         loads.radial_force, loads.tangential_force, loads.rotating_inertia_force
-    )
+)
     figure = Figure(figsize=(13.0, 6.5))
     axes, zoom = figure.subplots(1, 2, gridspec_kw={"width_ratios": [1.0, 0.8]})
     axes.plot(
@@ -44,7 +44,7 @@ def polar_load_diagram(loads: EngineLoads) -> Figure:
         lw=1.2,
         color="C0",
         label="tip of S (and of R from O')",
-    )
+)
     _label_angles(axes, tangential * KN, outward * KN, loads.crank_angle_deg, 30.0)
     _mark_poles(axes, pole_shift)
     axes.axhline(0.0, color="0.7", lw=0.6)
@@ -57,7 +57,7 @@ def polar_load_diagram(loads: EngineLoads) -> Figure:
         "O' shifted from O by the rotating-mass force "
         f"K_R = {-loads.rotating_inertia_force * KN:.2f} kN outward",
         fontsize=10,
-    )
+)
     axes.legend(loc="upper right", fontsize=8)
     axes.grid(True, lw=0.3)
     _zoom_on_low_loads(zoom, tangential * KN, outward * KN, loads.crank_angle_deg, pole_shift)
@@ -65,7 +65,7 @@ def polar_load_diagram(loads: EngineLoads) -> Figure:
 
 
 def _mark_poles(axes, pole) -> None:
-    """Pole O of the S diagram and pole O' shifted by the rotating-mass force (seed 001)."""
+    """Pole O of the S diagram and pole O' shifted by the rotating-mass force ([D1])."""
     axes.plot(0.0, 0.0, "s", color="C3")
     axes.annotate("O", (0.0, 0.0), xytext=(-12, -4), textcoords="offset points", color="C3")
     axes.plot(pole[0] * KN, pole[1] * KN, "D", color="C2")
@@ -90,7 +90,7 @@ def _zoom_on_low_loads(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray
     axes.grid(True, lw=0.3)
 
 
-def load_vs_crank_angle(loads: EngineLoads) -> Figure:
+def plot_load_over_crank_angle(loads: EngineLoads) -> Figure:
     """|R|(φ) with its mean, and the components R, T, gas force (unrolled polar diagram)."""
     figure = Figure(figsize=(9.0, 6.0))
     top, bottom = figure.subplots(2, 1, sharex=True)
@@ -114,8 +114,8 @@ def load_vs_crank_angle(loads: EngineLoads) -> Figure:
     return figure
 
 
-def wear_diagram_figure(loads: EngineLoads) -> Figure:
-    """Journal wear diagram (seed 001) in the crank frame with the oil-hole direction."""
+def plot_wear_diagram(loads: EngineLoads) -> Figure:
+    """Journal wear diagram ([D1]) in the crank frame with the oil-hole direction."""
     angle, wear = loads.wear()
     hole = loads.oil_hole_angle()
     figure = Figure(figsize=(6.5, 6.5))
@@ -131,26 +131,26 @@ def wear_diagram_figure(loads: EngineLoads) -> Figure:
         color="C0",
         alpha=0.5,
         label="wear strips (∝ load, ±60°)",
-    )
+)
     axes.plot(np.linspace(0, 2 * math.pi, 361), np.ones(361), color="k", lw=1.0)
     axes.annotate(
         "",
         xy=(hole, 1.7),
         xytext=(hole, 0.0),
         arrowprops={"arrowstyle": "->", "color": "C3", "lw": 1.5},
-    )
+)
     axes.set_rmax(1.75)
     axes.set_yticks([])
     axes.set_title(
         "Crankpin wear diagram (journal, crank frame)\n0° = outward crank radius, angles along "
         f"rotation; oil hole at {math.degrees(hole):.1f}°",
         fontsize=10,
-    )
+)
     axes.legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.1, -0.1))
     return figure
 
 
-def conventions_figure() -> Figure:
+def plot_conventions() -> Figure:
     """Sketch of the engine, crank and rod frames, angles and force signs (for the docs)."""
     phi, lam, r = math.radians(50.0), 0.3, 1.0
     length = r / lam
@@ -184,14 +184,14 @@ def conventions_figure() -> Figure:
         small + np.array([-0.5, 0.8]),
         "P_g, P_Σ > 0 towards the crank",
         "C3",
-    )
+)
     axes.annotate(
         "φ: crank angle from firing TDC, CCW (= rotation) positive\n"
         "S > 0: rod in compression;  R > 0 towards the crank axis;  T > 0 along rotation\n"
         "W (load on the journal, film frame) = −(force of the rod on the crankpin)",
         (-1.5, -1.75),
         fontsize=9,
-    )
+)
     axes.set_aspect("equal")
     axes.set_xlim(-1.6, 5.2)
     axes.set_ylim(-1.8, 2.2)
@@ -224,7 +224,7 @@ def _arrow(axes, start, end, label: str, color: str) -> None:
         xy=tuple(end),
         xytext=tuple(start),
         arrowprops={"arrowstyle": "->", "color": color, "lw": 1.5},
-    )
+)
     axes.annotate(
         label, tuple(end), fontsize=8, color=color, xytext=(3, 3), textcoords="offset points"
-    )
+)

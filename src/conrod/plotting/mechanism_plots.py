@@ -1,4 +1,4 @@
-"""Figures of the clearance mechanism (issue 6). One function per figure → Figure."""
+"""Figures of the clearance mechanism. One function per figure → Figure."""
 
 from __future__ import annotations
 

@@ -1,27 +1,24 @@
-"""Figures of ``conrod run`` (issue 4): one function per figure, each returns a Figure.
+"""Figures of ``conrod run``: one function per figure, each returns a Figure.
 
-* :func:`orbit_figure` — journal-centre orbit inside the clearance circle, crank-angle labels;
+* :func:`plot_orbit` — journal-centre orbit inside the clearance circle, crank-angle labels;
   the cycle before the last is dashed, and a non-periodic orbit is flagged in the title;
-* :func:`film_thickness_pressure_figure` — h_min(φ) and p_max(φ) (seed 000 Fig. 3.5.2);
-* :func:`friction_flow_figure` — friction power and side/supply flow over the cycle;
-* :func:`pressure_map_figure` — film pressure p(θ, z) at the crank angle of the largest p_max.
+* :func:`plot_film_thickness_and_pressure` — h_min(φ) and p_max(φ) ([D0] Fig. 3.5.2);
+* :func:`plot_friction_and_flow` — friction power and side/supply flow over the cycle;
+* :func:`plot_pressure_map` — film pressure p(θ, z) at the crank angle of the largest p_max.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 from matplotlib.figure import Figure
 
-from conrod.plotting.save import save_figure
 from conrod.results.cycle_results import RunResults
 
 UM = 1e6
 LABEL_EVERY_DEG = 60.0
 
 
-def orbit_figure(results: RunResults) -> Figure:
+def plot_orbit(results: RunResults) -> Figure:
     """Orbit (x, y) [µm] in the clearance circle, labelled every 60° of crank angle."""
     cycle, c = results.cycle, results.clearance
     fig = Figure(figsize=(6.0, 6.0))
@@ -52,8 +49,8 @@ def orbit_figure(results: RunResults) -> Figure:
     return fig
 
 
-def film_thickness_pressure_figure(results: RunResults) -> Figure:
-    """h_min(φ) [µm] and p_max(φ) [MPa] over the cycle (seed 000 Fig. 3.5.2)."""
+def plot_film_thickness_and_pressure(results: RunResults) -> Figure:
+    """h_min(φ) [µm] and p_max(φ) [MPa] over the cycle ([D0] Fig. 3.5.2)."""
     cycle = results.cycle
     fig = Figure(figsize=(8.0, 5.5))
     top, bottom = fig.subplots(2, 1, sharex=True)
@@ -73,7 +70,7 @@ def film_thickness_pressure_figure(results: RunResults) -> Figure:
     return fig
 
 
-def friction_flow_figure(results: RunResults) -> Figure:
+def plot_friction_and_flow(results: RunResults) -> Figure:
     """Friction power [W] and side/supply flow [l/min] over the cycle."""
     cycle = results.cycle
     fig = Figure(figsize=(8.0, 5.0))
@@ -91,7 +88,7 @@ def friction_flow_figure(results: RunResults) -> Figure:
     return fig
 
 
-def pressure_map_figure(results: RunResults) -> Figure:
+def plot_pressure_map(results: RunResults) -> Figure:
     """Film pressure p(θ, z) [MPa] at the crank angle of the largest p_max."""
     fig = Figure(figsize=(8.0, 3.8))
     ax = fig.add_subplot()
@@ -110,17 +107,3 @@ def pressure_map_figure(results: RunResults) -> Figure:
     phi = np.degrees(results.summary.p_max_crank_angle)
     ax.set_title(f"Film pressure at φ = {phi:.0f}° (largest p_max)", fontsize=10)
     return fig
-
-
-FIGURES = {
-    "orbit.png": orbit_figure,
-    "hmin_pmax.png": film_thickness_pressure_figure,
-    "friction_flow.png": friction_flow_figure,
-    "pressure_map.png": pressure_map_figure,
-}
-"""File name → figure function, as written by ``conrod run``."""
-
-
-def write_orbit_figures(results: RunResults, out_dir: Path) -> list[Path]:
-    """Write every figure of :data:`FIGURES` into ``out_dir``."""
-    return [save_figure(make(results), Path(out_dir) / name) for name, make in FIGURES.items()]

@@ -1,21 +1,21 @@
-"""Typed results of one orbit run (issue 4): per-angle :class:`CycleResults`,
+"""Typed results of one orbit run: per-angle :class:`CycleResults`,
 cycle :class:`RunSummary` and the bundle :class:`RunResults`.
 
 Every field documents its unit in brackets. No plotting and no I/O here
-(writers: :mod:`conrod.results.writers`, figures: :mod:`conrod.plotting.orbit_plots`).
+(tables: :mod:`conrod.results.tables`; figures are registered by the plotting package).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass
 from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
 
 
-@dataclass
+@dataclass(frozen=True)
 class CycleResults:
-    """Characteristics of the periodic orbit at each output crank angle (seed 002 Table 1)."""
+    """Characteristics of the periodic orbit at each output crank angle ([D2] Table 1)."""
 
     crank_angle: np.ndarray
     """Crank angle φ of each output point, 0 at firing TDC [rad]."""
@@ -58,9 +58,9 @@ class CycleResults:
     shell_speed: np.ndarray
     """Shell angular velocity ω_b in the film frame [rad/s]."""
     contact_force: np.ndarray
-    """Hard-contact normal force P_c ≥ 0 (seed 004 eq. 4.2.5) [N]."""
+    """Hard-contact normal force P_c ≥ 0 ([D4] eq. 4.2.5) [N]."""
     friction_force: np.ndarray
-    """Dry-friction force μ_dry P_c (seed 004 eq. 4.2.6) [N]."""
+    """Dry-friction force μ_dry P_c ([D4] eq. 4.2.6) [N]."""
     contact_angle: np.ndarray
     """Shell angle θ of the contact point, film frame (NaN-free: ψ of the centre) [rad]."""
     journal_rotation: np.ndarray
@@ -78,14 +78,10 @@ class CycleResults:
         """Crank angle [deg]."""
         return np.degrees(self.crank_angle)
 
-    def as_columns(self) -> dict[str, np.ndarray]:
-        """All fields as name → array (SI units, names without unit suffix)."""
-        return {f.name: getattr(self, f.name) for f in fields(self)}
 
-
-@dataclass
+@dataclass(frozen=True)
 class RunSummary:
-    """Cycle characteristics (seed 002 Table 1 'cycle' columns) and run diagnostics."""
+    """Cycle characteristics ([D2] Table 1 'cycle' columns) and run diagnostics."""
 
     h_min: float
     """Smallest h_min over the cycle [m]."""
@@ -125,7 +121,7 @@ class RunSummary:
     """Heat-balance iterations performed [-]."""
     max_contact_force: float = 0.0
     """Largest hard-contact force over the cycle [N]."""
-    warnings: list[str] = field(default_factory=list)
+    warnings: tuple[str, ...] = ()
     """Human-readable warnings (non-periodic orbit, ...) [-]."""
 
     def as_json_items(self) -> dict[str, Any]:
@@ -156,18 +152,20 @@ class RunSummary:
 
 @runtime_checkable
 class ContactAnalysis(Protocol):
-    """What :func:`conrod.contact.analysis.analyse_contact` returns (issue 5)."""
+    """What :func:`conrod.contact.analysis.analyse_contact` returns: items merged into
+    summary.json and columns refining cycle.csv (its own tables and figures are registered
+    in the output registry)."""
 
     def summary_items(self) -> dict[str, Any]:
         """Items merged into summary.json."""
         ...
 
-    def write_files(self, out_dir: Any) -> list[Any]:
-        """Write wear CSVs and figures into ``out_dir``; return the paths."""
+    def cycle_columns(self) -> dict[str, np.ndarray]:
+        """Per-angle columns added to cycle.csv [units in the names]."""
         ...
 
 
-@dataclass
+@dataclass(frozen=True)
 class RunResults:
     """Everything ``Simulation(case).run()`` returns."""
 

@@ -1,4 +1,4 @@
-"""Massless journal velocity of a grid Reynolds film by Booker's reduction (issue 4 speed).
+"""Massless journal velocity of a grid Reynolds film by Booker's reduction.
 
 In the frame turning at ω̄ = (ω_j + ω_b)/2 the Reynolds right-hand side of
 :mod:`conrod.film.base` becomes a pure squeeze term,
@@ -15,7 +15,7 @@ warm-started from the previous solve), then |v_s| = s_0|W|/|F(s_0 v̂(β))| and
 
 The film solve is the compiled projected multigrid of :mod:`conrod.film.reynolds_multigrid`
 on the same grid, masks and mid-plane symmetry as :class:`~conrod.film.reynolds.ReynoldsFilm`,
-warm-started from the last field; the Heun loop of :mod:`conrod.dynamics.quasi_static`
+warm-started from the last field; the Heun loop of :mod:`conrod.orbit.quasi_static`
 runs compiled around it.
 
 [1] J.F. Booker, "Dynamically loaded journal bearings: mobility method of solution",
@@ -29,9 +29,8 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import constrain_and_record, project_onto_circle
+from conrod.film.massless import constrain_and_record, project_onto_circle
 from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve
-from conrod.film.table_kernel import mobility_velocity
 
 ANGLE_TOLERANCE = 1.0e-8
 """Stop when the film force is within this angle of −W [rad]: the relative residual
@@ -195,7 +194,7 @@ def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, co
 def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
                            record_every, pressure, cos_t, sin_t, g, clearance, contact_radius,
                            speed, tolerance, max_cycles, beta, slope, whirl_factor):
-    """Compiled Heun loop of :func:`conrod.dynamics.quasi_static.quasi_static_cycle` with
+    """Compiled Heun loop of :func:`conrod.orbit.quasi_static.quasi_static_cycle` with
     :func:`squeeze_velocity`: rows (x, y, vx, vy, 0, 0, contact) every ``record_every``
     steps, end state (x, y, vx, vy, β, slope) and the worst angle residual [rad].
     ``whirl_factor`` κ = sin Δθ/Δθ: the discrete wedge term of ``ReynoldsFilm`` (central
@@ -233,66 +232,22 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
     return out, np.array([x, y, vx2, vy2, beta, slope]), worst
 
 
-def squeeze_applies(problem) -> bool:
-    """True when Booker's reduction is exact for the problem's film: a rigid multigrid
-    ``ReynoldsFilm`` with p_supply = p_cav = 0, no inlet line and no asperity force."""
-    from conrod.film.reynolds import ReynoldsFilm
-
-    film = problem.film
-    if type(film) is not ReynoldsFilm or problem.asperity is not None:
-        return False
-    g = film.geometry
-    return (film.method == "multigrid" and not film.ambient_line_at_max_gap
-            and g.supply_pressure == 0.0 and g.cavitation_pressure == 0.0)
-
-
-def table_applies(problem) -> bool:
-    """True for the tabulated film without asperity force (compiled :func:`table_cycle`)."""
-    from conrod.film.table import TabulatedFilm
-
-    return type(problem.film) is TabulatedFilm and problem.asperity is None
-
-
-def squeeze_cycle(problem, state, dt, loads, record_every, contact_radius):
-    """Run :func:`squeeze_reynolds_cycle` for ``problem`` from ``state``; ``loads`` =
-    (W_x, W_y, ω_j, ω_b) at the steps. Returns (rows, end state array (x, y, v_x, v_y, β,
-    slope, film solves, multigrid cycles), worst residual)."""
-    film = problem.film
-    grid = SqueezeGrid(film, problem.viscosity)
+def squeeze_cycle(film, request):
+    """Run :func:`squeeze_reynolds_cycle` for the Reynolds ``film`` over the
+    :class:`~conrod.film.capabilities.QuasiStaticRequest` ``request``. Returns (rows, end
+    state array (x, y, v_x, v_y, β, slope, film solves, multigrid cycles), worst residual)."""
+    r = request
+    grid = SqueezeGrid(film, r.viscosity)
     radius, d_theta, d_z, clearance = grid.geometry
     g = (grid.fixed, grid.source_x, grid.source_y, grid.weight_x, grid.weight_y,
          radius, d_theta, d_z, grid.n_coarse, grid.symmetric, grid.stats)
     kappa = math.sin(d_theta) / d_theta
-    load_x, load_y, wj, wb = loads
-    mean = 0.5 * kappa * (wj[0] + wb[0])
-    sx, sy = state.vx + mean * state.y, state.vy - mean * state.x
-    beta = math.atan2(sy, sx) if sx or sy else math.atan2(load_y[0], load_x[0])
-    speed = clearance * max(problem.crank_speed, 1e-3)
+    mean = 0.5 * kappa * (r.journal_speed[0] + r.shell_speed[0])
+    sx, sy = r.vx + mean * r.y, r.vy - mean * r.x
+    beta = math.atan2(sy, sx) if sx or sy else math.atan2(r.load_y[0], r.load_x[0])
+    speed = clearance * max(r.crank_speed, 1e-3)
     rows, end, worst = squeeze_reynolds_cycle(
-        state.x, state.y, dt, load_x, load_y, wj, wb, record_every, grid.pressure,
-        grid.cos_t, grid.sin_t, g, clearance, contact_radius, speed, film.tolerance,
-        film.max_iterations, beta, 1.0, kappa)
+        r.x, r.y, r.dt, r.load_x, r.load_y, r.journal_speed, r.shell_speed, r.record_every,
+        grid.pressure, grid.cos_t, grid.sin_t, g, clearance, r.contact_radius, speed,
+        film.tolerance, film.max_iterations, beta, 1.0, kappa)
     return rows, np.concatenate((end, grid.stats)), worst
-
-
-@nb.njit(cache=True)
-def table_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed, record_every,
-                viscosity, force_scale, clearance, s_step, log_magnitude, turning,
-                contact_radius):
-    """Compiled Heun loop of the massless orbit for the tabulated film: the velocity is
-    the table's exact inverse :func:`~conrod.film.table_kernel.mobility_velocity`."""
-    n_steps = load_x.size - 1
-    out = np.zeros((n_steps // record_every, 7))
-    vx2, vy2 = 0.0, 0.0
-    for k in range(n_steps):
-        vx, vy = mobility_velocity(x, y, load_x[k], load_y[k], journal_speed[k] + shell_speed[k],
-                                   viscosity, force_scale, clearance, s_step, log_magnitude,
-                                   turning)
-        vx, vy = constrain_and_record(x, y, vx, vy, contact_radius, k, record_every, out)
-        xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
-        vx2, vy2 = mobility_velocity(
-            xp, yp, load_x[k + 1], load_y[k + 1], journal_speed[k + 1] + shell_speed[k + 1],
-            viscosity, force_scale, clearance, s_step, log_magnitude, turning)
-        x, y, _ = project_onto_circle(
-            x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), contact_radius)
-    return out, np.array([x, y, vx2, vy2]), 0.0

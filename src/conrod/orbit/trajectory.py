@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from conrod.dynamics.problem import OrbitState
+from conrod.orbit.problem import OrbitState
 
 
 @dataclass
@@ -21,8 +22,8 @@ class CycleTrajectory:
     in_contact : ndarray  Journal on the contact circle [-].
     end_state : OrbitState  State at the end of the cycle (start of the next).
     steps : int  Integrator steps taken [-].
-    film_history : list of ndarray or None  Film memory (mass-conserving film fraction ϑ)
-        at each output angle, for films with memory [-].
+    film_memory : list or None  Film memory (warm start, mass-conserving film fraction ϑ)
+        at each output angle, for films with memory that a Python loop carried.
     """
 
     crank_angle: np.ndarray
@@ -35,16 +36,16 @@ class CycleTrajectory:
     in_contact: np.ndarray
     end_state: OrbitState
     steps: int = 0
-    film_history: list[np.ndarray] | None = None
+    film_memory: list[Any] | None = None
 
     @classmethod
     def from_table(
         cls, crank_angle: np.ndarray, table: np.ndarray, end_state: OrbitState, steps: int
-    ) -> CycleTrajectory:
+) -> CycleTrajectory:
         """Build from rows (x, y, vx, vy, P_c, P_f, in_contact)."""
         return cls(
             crank_angle=crank_angle, x=table[:, 0].copy(), y=table[:, 1].copy(),
             vx=table[:, 2].copy(), vy=table[:, 3].copy(), contact_force=table[:, 4].copy(),
             friction_force=table[:, 5].copy(), in_contact=table[:, 6] > 0.5,
             end_state=end_state, steps=steps,
-        )
+)

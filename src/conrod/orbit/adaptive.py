@@ -1,8 +1,8 @@
-"""Adaptive, implicit orbit integration (seed 002: BDF with steps ≤ 1° crank angle).
+"""Adaptive, implicit orbit integration ([D2]: BDF with steps ≤ 1° crank angle).
 
 SciPy ``solve_ivp`` (Radau by default, BDF or LSODA on request) integrates the scaled state
 u = (x/c, y/c, v_x/(cω), v_y/(cω)) over the crank angle φ with ``max_step`` ≤ 1°.
-Hard contact (seed 004 §4.1–4.2) is handled by phases located with events:
+Hard contact ([D4] §4.1–4.2) is handled by phases located with events:
 
 * free phase until Z = |e|/r_c − 1 crosses zero upwards (event, not a step crossing);
   at entry the normal velocity is removed (eqs 4.1.5–4.1.8: perfectly plastic impact);
@@ -12,17 +12,17 @@ Hard contact (seed 004 §4.1–4.2) is handled by phases located with events:
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numba as nb
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from conrod.dynamics.contact import contact_acceleration, contact_normal_force
-from conrod.dynamics.problem import OrbitProblem, OrbitState, load_table, periodic_sample
-from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
-from conrod.film.short_bearing_kernel import short_bearing_force
+from conrod.orbit.contact import contact_acceleration, contact_normal_force
+from conrod.orbit.problem import OrbitProblem, OrbitState, load_table, periodic_sample
+from conrod.orbit.trajectory import CycleTrajectory
 
 FALLBACK_METHODS = ("Radau", "BDF", "LSODA")
 """Methods tried in turn when the chosen one fails on a segment (step-size collapse) [-]."""
@@ -31,17 +31,48 @@ MAX_PHASE_CHANGES = 5000
 """Most contact entries + exits per cycle before giving up (chattering) [-]."""
 
 
-@nb.njit(cache=True)
-def free_rhs_short_bearing(phi, u, angles, table, cycle, viscosity, radius, width, clearance,
-                           omega, mass_x, mass_y):
-    """Compiled free-phase right-hand side du/dφ for the short bearing (same as
-    :meth:`_Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω))."""
+def compiled_free_rhs(force, params):
+    """Compiled free-phase right-hand side du/dφ(φ, u, angles, table, cycle, μ, c, ω, m_x,
+    m_y) for a film with the compiled ``force`` and its ``params`` (same as
+    :meth:`_Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω)). Specialised per force
+    function, and per parameter values when they are hashable (frozen into the code): a
+    function- or tuple-typed argument would add microseconds of dispatch to each of the
+    thousands of calls per cycle from solve_ivp."""
+    try:
+        return _frozen_rhs(force, params)
+    except TypeError:  # parameters holding arrays: passed on each call
+        rhs = _rhs_with_params(force)
+        return lambda *args: rhs(params, *args)
+
+
+@functools.cache
+def _frozen_rhs(force, params):
+    @nb.njit
+    def free_rhs(phi, u, angles, table, cycle, viscosity, clearance, omega, mass_x, mass_y):
+        return _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance,
+                         omega, mass_x, mass_y)
+
+    return free_rhs
+
+
+@functools.cache
+def _rhs_with_params(force):
+    @nb.njit
+    def free_rhs(params, phi, u, angles, table, cycle, viscosity, clearance, omega, mass_x,
+                 mass_y):
+        return _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance,
+                         omega, mass_x, mass_y)
+
+    return free_rhs
+
+
+@nb.njit
+def _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance, omega,
+              mass_x, mass_y):
     row = periodic_sample(phi, angles, table, cycle)
     c_omega = clearance * omega
-    fx, fy = short_bearing_force(
-        u[0] * clearance, u[1] * clearance, u[2] * c_omega, u[3] * c_omega,
-        row[2] + row[3], viscosity, radius, width, clearance,
-    )
+    fx, fy = force(u[0] * clearance, u[1] * clearance, u[2] * c_omega, u[3] * c_omega,
+                   row[2] + row[3], viscosity, params)
     scale = c_omega * omega
     out = np.empty(4)
     out[0], out[1] = u[2], u[3]
@@ -53,9 +84,13 @@ def free_rhs_short_bearing(phi, u, angles, table, cycle, viscosity, radius, widt
 class _Phases:
     """Right-hand sides and events of the free and the contact phase."""
 
-    def __init__(self, problem: OrbitProblem):
+    def __init__(self, problem: OrbitProblem, state: OrbitState):
         self.p = problem
-        self.force = problem.force_function()
+        self.session = problem.session(state.film_memory)
+        self.force = problem.force_function(self.session)
+        self.kernel = problem.compiled_force
+        self.compiled_rhs = (compiled_free_rhs(self.kernel.force, self.kernel.params)
+                             if self.kernel is not None else None)
         self.c = problem.clearance
         self.rc = problem.contact_radius
         self.omega = problem.crank_speed
@@ -72,20 +107,19 @@ class _Phases:
         return wx + fx, wy + fy, (wj - wb) * self.radius
 
     def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:
-        if self.p.is_short_bearing:
-            g = self.p.film.geometry
-            return free_rhs_short_bearing(
-                float(phi), np.asarray(u, dtype=float), self.angles, self.table,
-                float(self.loads.cycle), float(self.p.viscosity), g.radius, g.width, self.c,
-                float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
-            )
+        if self.compiled_rhs is not None:
+            return self.compiled_rhs(
+                float(phi), np.asarray(u, dtype=float),
+                self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),
+                self.c, float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
+)
         c, w = self.c, self.omega
         x, y, vx, vy = u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w
         big_x, big_y, _ = self.forces(phi, x, y, vx, vy)
         scale = c * w * w
         return np.array(
             [u[2], u[3], big_x / (self.p.mass_x * scale), big_y / (self.p.mass_y * scale)]
-        )
+)
 
     def hit(self, phi: float, u: np.ndarray) -> float:
         return math.hypot(u[0], u[1]) * self.c / self.rc - 1.0
@@ -102,7 +136,7 @@ class _Phases:
         ax, ay, _, _ = contact_acceleration(
             x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
             self.p.dry_friction, self.rc, surface, True,
-        )
+)
         tangential = -ax * math.sin(w[0]) + ay * math.cos(w[0])
         return np.array([w[1] * self.c / self.rc, tangential / (self.c * self.omega**2)])
 
@@ -113,7 +147,7 @@ class _Phases:
         p_c, s = contact_normal_force(
             x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
             self.p.dry_friction, self.rc, surface,
-        )
+)
         return (p_c, s) if with_sign else p_c
 
     def leave(self, phi: float, w: np.ndarray) -> float:
@@ -124,7 +158,7 @@ def adaptive_cycle(
     problem: OrbitProblem, state: OrbitState, settings, output_step_deg: float
 ) -> CycleTrajectory:
     """One cycle from ``state`` at φ = 0 with ``settings`` = the ``[solver]`` section."""
-    phases = _Phases(problem)
+    phases = _Phases(problem, state)
     phi_out = problem.output_angles(output_step_deg)
     table = np.zeros((phi_out.size, 7))
     end = problem.loads.cycle
@@ -153,7 +187,7 @@ def adaptive_cycle(
         if last:
             return CycleTrajectory.from_table(
                 phi_out, table, _state(phases, sol.y[:, -1], contact), steps
-            )
+)
         phi = phi_end
         current, contact = _switch(phases, phi, sol.y[:, -1], contact)
     raise ConvergenceError("contact chattering: too many contact entries/exits",
@@ -170,7 +204,7 @@ def _solve_segment(rhs, phi, end, current, event, settings):
             rhs, (phi, end), current, method=method, events=event, dense_output=True,
             max_step=math.radians(settings.max_step_deg),
             rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
-        )
+)
         if sol.status >= 0:
             return sol
     return sol
@@ -185,10 +219,11 @@ def _scaled(state: OrbitState, c: float, w: float, phases: _Phases) -> np.ndarra
 
 
 def _state(phases: _Phases, u: np.ndarray, contact: bool) -> OrbitState:
+    memory = phases.session.snapshot()
     if contact:
-        return OrbitState(*phases.on_circle(u), True)
+        return OrbitState(*phases.on_circle(u), True, memory)
     c, w = phases.c, phases.omega
-    return OrbitState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, False)
+    return OrbitState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, False, memory)
 
 
 def _switch(phases: _Phases, phi: float, u: np.ndarray, contact: bool):

@@ -1,4 +1,4 @@
-"""Massless journal velocity of the short bearing by Booker's exact inversion (issue 4 speed).
+"""Massless journal velocity of the short bearing by Booker's exact inversion.
 
 In the frame turning at ω̄ = (ω_j + ω_b)/2 the short-bearing film of
 :mod:`conrod.film.short_bearing_kernel` is a pure squeeze film driven by
@@ -32,7 +32,7 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import constrain_and_record, project_onto_circle
+from conrod.film.massless import constrain_and_record, project_onto_circle
 from conrod.film.short_bearing_kernel import (
     ECCENTRICITY_LIMIT,
     _active_arc_integrals,

@@ -1,4 +1,4 @@
-"""Hydromechanical characteristics along the orbit (seed 002 Table 1 columns).
+"""Hydromechanical characteristics along the orbit ([D2] Table 1 columns).
 
 At each output angle the film model is solved once for the orbit state, giving h_min and
 its shell angle, p_max, friction torque, side and supply flow. Derived here:
@@ -16,9 +16,9 @@ import math
 
 import numpy as np
 
-from conrod.dynamics.problem import OrbitProblem
-from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.film.base import FilmResult, FilmState
+from conrod.orbit.problem import OrbitProblem
+from conrod.orbit.trajectory import CycleTrajectory
 from conrod.results.cycle_results import CycleResults
 
 TWO_PI = 2.0 * math.pi
@@ -40,13 +40,25 @@ def attitude_angle(
 
 
 def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[FilmState]:
-    """Film states at the output angles (with the sampled film memory, if any)."""
-    memory = traj.film_history or [None] * traj.crank_angle.size
+    """Film states at the output angles."""
     return [
         FilmState(float(traj.x[i]), float(traj.y[i]), float(traj.vx[i]), float(traj.vy[i]),
-                  float(wj[i]), float(wb[i]), problem.viscosity, history=memory[i])
+                  float(wj[i]), float(wb[i]), problem.viscosity)
         for i in range(traj.crank_angle.size)
     ]
+
+
+def film_results(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[FilmResult]:
+    """Film results at the output angles, each with the film memory sampled there by the
+    integrator when it carried one (film fraction of a mass-conserving film), else with
+    the memory threaded from angle to angle (warm start)."""
+    session = problem.session()
+    results = []
+    for i, state in enumerate(film_states(problem, traj, wj, wb)):
+        if traj.film_memory:
+            session.restore(traj.film_memory[i])
+        results.append(session.solve(state))
+    return results
 
 
 def _film_columns(results: list[FilmResult], relative_speed: np.ndarray) -> dict[str, np.ndarray]:
@@ -70,7 +82,7 @@ def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory) -> Cycle
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
     relative = wj - wb
-    results = [problem.film.solve(state) for state in film_states(problem, traj, wj, wb)]
+    results = film_results(problem, traj, wj, wb)
     film = _film_columns(results, relative)
     rotation = journal_rotation(phi, relative, problem.crank_speed)
     contact_angle = np.arctan2(traj.y, traj.x) % TWO_PI
@@ -86,4 +98,4 @@ def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory) -> Cycle
         contact_angle=contact_angle, journal_rotation=rotation,
         sliding_speed=tangential_speed + relative * problem.film.geometry.radius,
         in_contact=traj.in_contact, **film,
-    )
+)

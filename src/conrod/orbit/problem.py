@@ -1,28 +1,31 @@
-"""The orbit problem: film model, load cycle, masses and contact circle (seed 000 §3.1).
+"""The orbit problem: film model, load cycle, masses and contact circle ([D0] §3.1).
 
 Equation of motion of the journal centre relative to the shell in the film frame, with the
-crank angle φ as independent variable (dt = dφ/ω, seed 000 eqs 3.1.3–3.1.6):
+crank angle φ as independent variable (dt = dφ/ω, [D0] eqs 3.1.3–3.1.6):
 
 .. math:: \\frac{dx}{dφ} = \\frac{v_x}{ω},\\quad
           \\frac{dv_x}{dφ} = \\frac{W_x(φ) + F_x(x, y, v_x, v_y)}{m_x ω}
 
 (likewise for y), W the load pressing the journal on the shell, F the film force on the
-journal (F + W = 0 at equilibrium). The seed writes the same with the bearing centre relative
+journal (F + W = 0 at equilibrium). [D0] writes the same with the bearing centre relative
 to the journal, hence its R − P signs.
 """
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
 
 import numba as nb
 import numpy as np
 
 from conrod.film.base import FilmModel, FilmState
-from conrod.film.short_bearing import ShortBearingFilm
-from conrod.film.short_bearing_kernel import short_bearing_force
+from conrod.film.capabilities import CompiledKernel, HasCompiledKernel
 from conrod.loads.cycle import LoadCycle
+from conrod.orbit.memory import FilmSession
 
 ForceFunction = Callable[[float, float, float, float, float, float], tuple[float, float]]
 
@@ -34,7 +37,9 @@ class OrbitState:
     x, y : float  Position relative to the shell centre [m].
     vx, vy : float  Velocity [m/s].
     in_contact : bool  Journal on the contact circle [-].
-    film_history : ndarray or None  Film memory (mass-conserving film fraction) [-].
+    film_memory : object or None  Memory of a film with
+        :class:`~conrod.film.capabilities.HasMemory` (warm start, film content); None: the
+        film's initial memory.
     """
 
     x: float = 0.0
@@ -42,7 +47,7 @@ class OrbitState:
     vx: float = 0.0
     vy: float = 0.0
     in_contact: bool = False
-    film_history: np.ndarray | None = None
+    film_memory: Any = None
 
 
 @dataclass(frozen=True)
@@ -83,46 +88,57 @@ class OrbitProblem:
         """Crank angular velocity ω [rad/s]."""
         return self.loads.crank_speed
 
+    @cached_property
+    def kernel(self) -> CompiledKernel | None:
+        """The film's compiled kernel when it declares one and no asperity force is added
+        (:class:`~conrod.film.capabilities.HasCompiledKernel`); else None."""
+        if self.asperity is not None or not isinstance(self.film, HasCompiledKernel):
+            return None
+        return self.film.compiled_kernel()
+
     @property
-    def is_short_bearing(self) -> bool:
-        """True when the compiled short-bearing fast path applies."""
-        return type(self.film) is ShortBearingFilm and self.asperity is None
+    def compiled_force(self) -> CompiledKernel | None:
+        """The kernel when it has a compiled force (the compiled rk2/adaptive paths)."""
+        kernel = self.kernel
+        return kernel if kernel is not None and kernel.force is not None else None
 
     def with_viscosity(self, viscosity: float) -> OrbitProblem:
         """Same problem with another viscosity [Pa s]."""
         return OrbitProblem(
             self.film, self.loads, viscosity, self.mass_x, self.mass_y,
             self.dry_friction, self.contact_film_thickness, self.asperity,
-        )
+)
 
     @property
-    def has_history(self) -> bool:
-        """True for films with memory (mass-conserving): advanced in lock-step, see
-        :class:`FilmHistory`."""
+    def has_film_content(self) -> bool:
+        """True for films whose memory is a film content that evolves in time
+        (mass-conserving): advanced in lock-step with a fixed step."""
         return self.film.initial_history() is not None
 
-    def force_function(self, history: FilmHistory | None = None) -> ForceFunction:
+    def session(self, memory: Any = None) -> FilmSession:
+        """The film with ``memory`` (None: its initial memory), held by an integrator."""
+        return FilmSession(self.film, memory)
+
+    def force_function(self, session: FilmSession | None = None) -> ForceFunction:
         """(x, y, vx, vy, ω_j, ω_b) → film force (F_x, F_y) [N] for this film and viscosity;
-        films with memory read the current ``history.field``."""
+        a film with memory reads and updates ``session`` (a fresh one when None)."""
         if self.asperity is not None:
-            return _with_asperity(self._film_force(history), self.clearance, self.asperity)
-        return self._film_force(history)
+            return _with_asperity(self._film_force(session), self.clearance, self.asperity)
+        return self._film_force(session)
 
-    def _film_force(self, history: FilmHistory | None) -> ForceFunction:
-        mu, film = self.viscosity, self.film
-        if type(film) is ShortBearingFilm:
-            g = film.geometry
-            radius, width, c = g.radius, g.width, g.radial_clearance
+    def _film_force(self, session: FilmSession | None) -> ForceFunction:
+        mu, kernel = self.viscosity, self.compiled_force
+        if kernel is not None:
+            force = bound_force(kernel.force, kernel.params)
 
-            def short(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
-                return short_bearing_force(x, y, vx, vy, wj + wb, mu, radius, width, c)
+            def compiled(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
+                return force(x, y, vx, vy, wj + wb, mu)
 
-            return short
+            return compiled
+        held = session if session is not None else self.session()
 
         def generic(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
-            field = history.field if history is not None else None
-            state = FilmState(x, y, vx, vy, wj, wb, mu, history=field)
-            fx, fy = film.force(state)
+            fx, fy = held.force(FilmState(x, y, vx, vy, wj, wb, mu))
             return float(fx), float(fy)
 
         return generic
@@ -133,8 +149,27 @@ class OrbitProblem:
         return np.linspace(0.0, self.loads.cycle, count, endpoint=False)
 
 
+def bound_force(force, params):
+    """``force(x, y, v_x, v_y, ω_j + ω_b, μ)`` [N] of a compiled kernel with its ``params``
+    frozen into the code when they are hashable (no tuple dispatch on each Python call)."""
+    try:
+        return _frozen_force(force, params)
+    except TypeError:  # parameters holding arrays
+        return lambda x, y, vx, vy, omega_sum, mu: force(x, y, vx, vy, omega_sum, mu, params)
+
+
+@functools.cache
+def _frozen_force(force, params):
+    @nb.njit
+    def bound(x, y, vx, vy, omega_sum, viscosity):
+        return force(x, y, vx, vy, omega_sum, viscosity, params)
+
+    return bound
+
+
 def _with_asperity(film_force: ForceFunction, clearance: float, params) -> ForceFunction:
-    """Film force plus the Greenwood–Tripp asperity force (H5's compiled kernel)."""
+    """Film force plus the Greenwood–Tripp asperity force (compiled kernel of
+    :mod:`conrod.contact.asperity`)."""
     from conrod.contact.asperity import asperity_force
 
     def total(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
@@ -143,32 +178,6 @@ def _with_asperity(film_force: ForceFunction, clearance: float, params) -> Force
         return fx + ax, fy + ay
 
     return total
-
-
-class FilmHistory:
-    """Film memory (e.g. the film fraction ϑ of the mass-conserving model) advanced in
-    lock-step with a fixed-step integrator: after each accepted step of length dt [s],
-    ϑ ← clip(ϑ + dt ∂ϑ/∂t, 0, 1) with ∂ϑ/∂t from the film at the step start (explicit Euler,
-    first order in time; the model's transport limit dt |ω_j + ω_b|/2 ≤ Δθ must hold)."""
-
-    def __init__(self, film: FilmModel, field: np.ndarray | None = None):
-        self.film = film
-        self.field = film.initial_history() if field is None else field
-
-    def advance(self, state: FilmState, dt: float) -> None:
-        """One explicit step from ``state`` (its history is replaced by the current field)."""
-        if self.field is None:
-            return
-        rate = self.film.solve(_with_history(state, self.field)).history_rate
-        if rate is not None:
-            self.field = np.clip(self.field + dt * rate, 0.0, 1.0)
-
-
-def _with_history(state: FilmState, field: np.ndarray) -> FilmState:
-    return FilmState(
-        state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
-        state.journal_speed, state.shell_speed, state.viscosity, state.deformation, field,
-    )
 
 
 @nb.njit(cache=True)
@@ -190,5 +199,5 @@ def load_table(loads: LoadCycle) -> tuple[np.ndarray, np.ndarray]:
 
 
 def initial_state() -> OrbitState:
-    """Concentric start x = y = ẋ = ẏ = 0 (seed 000 eq. 3.5.1)."""
+    """Concentric start x = y = ẋ = ẏ = 0 ([D0] eq. 3.5.1)."""
     return OrbitState()

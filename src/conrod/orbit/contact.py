@@ -1,12 +1,12 @@
-"""Hard contact of the journal with the shell (seed 004 §4.1–4.2, issue 5 first bullet).
+"""Hard contact of the journal with the shell ([D4] §4.1–4.2).
 
 The journal centre may not leave the *contact circle* of radius r_c = c − h_c around the
-shell centre (h_c = ``[solver] contact_film_thickness``, 0 as in the seed). Notation of
-the seed, written in our film frame (position e of the journal centre relative to the
+shell centre (h_c = ``[solver] contact_film_thickness``, 0 as in [D4]). Notation of
+[D4], written in our film frame (position e of the journal centre relative to the
 shell centre, load W pressing the journal on the shell, film force F on the journal):
 
 * contact test Z = |e|/r_c (eq. 4.1.1); projection e := e/Z when Z > 1 (4.1.2–4.1.3);
-* contact direction n̂ = e/|e| (the seed's φ_c = atan2(y, x) + 180° because it tracks the
+* contact direction n̂ = e/|e| ([D4]'s φ_c = atan2(y, x) + 180° because it tracks the
   shell centre relative to the journal), tangent t̂ = (−n̂_y, n̂_x);
 * normal velocity removed, V_n = v·n̂ = 0, V_k = v·t̂, v = V_k t̂ (4.1.5–4.1.8);
 * X = W + F (4.2.1–4.2.2), P_n = X·n̂, P_k = X·t̂ (4.2.3–4.2.4), contact force on the
@@ -14,13 +14,13 @@ shell centre, load W pressing the journal on the shell, film force F on the jour
   the sliding speed V_s = V_k + (ω_j − ω_b) R of the journal surface over the shell (4.2.6),
   motion along the circle under K = P_k + P_f (4.2.7–4.2.9).
 
-Beyond the seed, the normal balance keeps the centripetal term of the motion on the circle
+Beyond [D4], the normal balance keeps the centripetal term of the motion on the circle
 and unequal masses M = diag(m_x, m_y): with the constraint n̂·ë = −V_k²/r_c,
 
 .. math:: P_c = \\frac{n̂·M^{-1}X + V_k^2/r_c}{n̂·M^{-1}n̂ + μ s\\, n̂·M^{-1}t̂},
           \\qquad s = \\operatorname{sign}(V_s),
 
-which is the seed's P_c = P_n for equal masses and slow sliding of the centre.
+which is [D4]'s P_c = P_n for equal masses and slow sliding of the centre.
 
 The sign of the sliding speed is regularised, s = tanh(V_s/v_reg) with
 v_reg = :data:`FRICTION_REGULARISATION_SPEED`, so that a journal pressed without rotation
@@ -33,49 +33,15 @@ from __future__ import annotations
 import math
 
 import numba as nb
-import numpy as np
+
+from conrod.film.massless import (  # noqa: F401  (the contact-circle rules)
+    constrain_and_record,
+    project_onto_circle,
+    remove_normal_velocity,
+)
 
 FRICTION_REGULARISATION_SPEED = 1.0e-4
 """Sliding speed below which dry friction is regularised (tanh) [m/s]."""
-
-
-@nb.njit(cache=True)
-def project_onto_circle(x: float, y: float, radius: float) -> tuple[float, float, bool]:
-    """Seed eqs 4.1.1–4.1.3: (x, y)/Z if Z = |e|/radius > 1; returns (x, y, projected)."""
-    z = math.hypot(x, y) / radius
-    if z > 1.0:
-        return x / z, y / z, True
-    return x, y, False
-
-
-@nb.njit(cache=True)
-def constrain_and_record(
-    x: float, y: float, vx: float, vy: float, contact_radius: float,
-    step: int, record_every: int, out: np.ndarray,
-) -> tuple[float, float]:
-    """Shared step of the compiled massless Heun loops: on the contact circle drop an outward
-    normal velocity (eqs 4.1.5–4.1.8); every ``record_every`` steps store the row
-    (x, y, v_x, v_y, ·, ·, contact) in ``out``. Returns the admissible (v_x, v_y) [m/s]."""
-    contact = math.hypot(x, y) >= contact_radius * (1.0 - 1e-9)
-    if contact and x * vx + y * vy > 0.0:
-        vx, vy = remove_normal_velocity(x, y, vx, vy)
-    if step % record_every == 0 and step // record_every < out.shape[0]:
-        row = step // record_every
-        out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
-        out[row, 6] = 1.0 if contact else 0.0
-    return vx, vy
-
-
-@nb.njit(cache=True)
-def remove_normal_velocity(x: float, y: float, vx: float, vy: float) -> tuple[float, float]:
-    """Seed eqs 4.1.5–4.1.8: keep only the tangential velocity V_k t̂ [m/s]."""
-    e = math.hypot(x, y)
-    if e == 0.0:
-        return vx, vy
-    nx = x / e
-    ny = y / e
-    v_k = vy * nx - vx * ny
-    return -v_k * ny, v_k * nx
 
 
 @nb.njit(cache=True)
@@ -84,7 +50,7 @@ def contact_normal_force(
     mass_x: float, mass_y: float, dry_friction: float, radius: float, surface_speed: float,
 ) -> tuple[float, float]:
     """Unclamped normal force P_c [N] needed to keep the journal on the contact circle, and
-    the regularised sign s of the sliding speed [-] (module docstring; seed eq. 4.2.5).
+    the regularised sign s of the sliding speed [-] (module docstring; [D4] eq. 4.2.5).
     P_c ≤ 0 means the journal leaves the shell."""
     e = math.hypot(x, y)
     nx = x / e
@@ -117,7 +83,7 @@ def contact_acceleration(
         return ax, ay, 0.0, 0.0
     p_c, s = contact_normal_force(
         x, y, vx, vy, force_x, force_y, mass_x, mass_y, dry_friction, radius, surface_speed
-    )
+)
     if p_c <= 0.0:
         return ax, ay, 0.0, 0.0
     nx = x / e

@@ -1,4 +1,4 @@
-"""Repeat cycles from the concentric start until the orbit is periodic (SPEC S3).
+"""Repeat cycles from the concentric start until the orbit is periodic.
 
 Periodicity error of cycle k: max over the output angles of |e_k(φ) − e_{k−1}(φ)|/c [-].
 The orbit is periodic when it is at most ``[solver] periodicity_tolerance``; if it is not
@@ -13,12 +13,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from conrod.dynamics.adaptive import adaptive_cycle
-from conrod.dynamics.problem import OrbitProblem, OrbitState, initial_state
-from conrod.dynamics.quasi_static import quasi_static_cycle
-from conrod.dynamics.rk2 import rk2_cycle
-from conrod.dynamics.trajectory import CycleTrajectory
-from conrod.errors import CaseError
+from conrod import registry
+from conrod.orbit.integrators import Integrator
+from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
+from conrod.orbit.trajectory import CycleTrajectory
 
 
 @dataclass
@@ -42,22 +40,15 @@ class PeriodicOrbit:
 
 
 def integrate_cycle(
-    problem: OrbitProblem, state: OrbitState, settings, integrator: str | None = None
+    problem: OrbitProblem, state: OrbitState, settings, integrator: str | Integrator | None = None
 ) -> CycleTrajectory:
-    """One cycle with the integrator named in ``settings`` (the ``[solver]`` section)."""
-    name = integrator or settings.integrator
-    if name == "adaptive" and problem.has_history:
-        raise CaseError(
-            f"solver.integrator = 'adaptive': the {problem.film.name} film carries a history "
-            "field that is advanced in lock-step with a fixed step (allowed: rk2, quasi_static)"
-        )
-    if name == "rk2":
-        return rk2_cycle(problem, state, settings.step_deg, settings.output_step_deg)
-    if name == "quasi_static":
-        return quasi_static_cycle(
-            problem, state, settings.quasi_static_step_deg, settings.output_step_deg
-        )
-    return adaptive_cycle(problem, state, settings, settings.output_step_deg)
+    """One cycle with ``integrator`` (an object, a registered name, or None: the name in
+    ``settings``, the ``[solver]`` section)."""
+    return _integrator(integrator or settings.integrator).cycle(problem, state, settings)
+
+
+def _integrator(choice: str | Integrator) -> Integrator:
+    return registry.integrator(choice) if isinstance(choice, str) else choice
 
 
 def cycle_difference(a: CycleTrajectory, b: CycleTrajectory, clearance: float) -> float:
@@ -69,7 +60,7 @@ def periodic_orbit(
     problem: OrbitProblem,
     settings,
     *,
-    integrator: str | None = None,
+    integrator: str | Integrator | None = None,
     start: OrbitState | None = None,
     on_cycle: Callable[[int, float], None] | None = None,
 ) -> PeriodicOrbit:

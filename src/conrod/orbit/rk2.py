@@ -1,10 +1,12 @@
-"""Seed 000's second-order Runge–Kutta (Heun) at a fixed crank-angle step, with the seed 004
+"""[D0]'s second-order Runge–Kutta (Heun) at a fixed crank-angle step, with the [D4]
 contact treatment: projection x := x/Z after a step and removal of the normal velocity
 (eqs 4.1.1–4.1.8), constrained motion along the circle while the journal presses on it.
+A film declaring a compiled force and radial damping
+(:class:`~conrod.film.capabilities.CompiledKernel`) runs fully compiled.
 
 The film is stiff (damping time m/B ≪ 1° of crank angle), so this explicit scheme needs a
-small step (``[solver] step_deg``, 0.01° by default); it is kept for fidelity to the seed and
-as an independent check of the adaptive integrator. The short bearing runs fully compiled.
+small step (``[solver] step_deg``, 0.01° by default); it is kept for fidelity to [D4] and
+as an independent check of the adaptive integrator.
 """
 
 from __future__ import annotations
@@ -14,17 +16,17 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.dynamics.contact import contact_acceleration
-from conrod.dynamics.problem import FilmHistory, OrbitProblem, OrbitState
-from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmState
-from conrod.film.short_bearing_kernel import short_bearing_force
+from conrod.orbit.contact import contact_acceleration
+from conrod.orbit.memory import FilmSession
+from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.trajectory import CycleTrajectory
 
 
 @nb.njit(cache=True)
 def _settle_contact(x, y, vx, vy, radius, pressing):
-    """Contact bookkeeping after a step (seed eqs 4.1.1–4.1.8); returns state and flag.
+    """Contact bookkeeping after a step ([D4] eqs 4.1.1–4.1.8); returns state and flag.
 
     Beyond the circle: project and remove the outward normal velocity (plastic impact).
     While the journal was pressing on the shell (P_c > 0 at the step start) it stays on
@@ -41,21 +43,13 @@ def _settle_contact(x, y, vx, vy, radius, pressing):
     return x, y, vx, vy, False
 
 
-@nb.njit(cache=True)
-def short_bearing_squeeze_damping(eps, viscosity, radius, width, clearance):
-    """Radial squeeze damping of the short bearing B_rr = π μ R L³ (1 + 2ε²) /
-    (2 c³ (1 − ε²)^{5/2}) [N s/m] (Hamrock, Fundamentals of Fluid Film Lubrication, ch. 10)."""
-    eps = min(eps, 0.999999)
-    return (math.pi * viscosity * radius * width**3 * (1.0 + 2.0 * eps * eps)
-            / (2.0 * clearance**3 * (1.0 - eps * eps) ** 2.5))
-
-
-@nb.njit(cache=True)
-def rk2_short_bearing_cycle(
-    state, dt, load_x, load_y, journal_speed, shell_speed, record_every,
-    viscosity, radius, width, clearance, mass_x, mass_y, dry_friction, contact_radius,
+@nb.njit  # function-typed arguments: specialised per film and process, not cached
+def rk2_compiled_cycle(
+    force, damping, params, state, dt, load_x, load_y, journal_speed, shell_speed,
+    record_every, viscosity, radius, clearance, mass_x, mass_y, dry_friction, contact_radius,
 ):
-    """Compiled Heun steps over one cycle for the short-bearing film.
+    """Compiled Heun steps over one cycle for a film with a compiled ``force`` and radial
+    ``damping`` (:class:`~conrod.film.capabilities.CompiledKernel`, parameters ``params``).
 
     state = (x, y, vx, vy, in_contact) [m, m/s]; loads and speeds sampled at the n+1 step
     points [N, rad/s]; ``dt`` step [s]. Returns rows (x, y, vx, vy, P_c, P_f, contact) every
@@ -68,16 +62,14 @@ def rk2_short_bearing_cycle(
     stiffness = 0.0
     lightest = min(mass_x, mass_y)
     for k in range(n_steps):
-        damping = short_bearing_squeeze_damping(
-            math.hypot(x, y) / clearance, viscosity, radius, width, clearance
-        )
-        stiffness = max(stiffness, dt * damping / lightest)
+        b_rr = damping(math.hypot(x, y) / clearance, viscosity, params)
+        stiffness = max(stiffness, dt * b_rr / lightest)
         wj, wb = journal_speed[k], shell_speed[k]
-        fx, fy = short_bearing_force(x, y, vx, vy, wj + wb, viscosity, radius, width, clearance)
+        fx, fy = force(x, y, vx, vy, wj + wb, viscosity, params)
         ax, ay, pc, pf = contact_acceleration(
             x, y, vx, vy, load_x[k] + fx, load_y[k] + fy, mass_x, mass_y, dry_friction,
             contact_radius, (wj - wb) * radius, contact,
-        )
+)
         if k % record_every == 0 and k // record_every < out.shape[0]:
             row = k // record_every
             out[row, 0], out[row, 1], out[row, 2], out[row, 3] = x, y, vx, vy
@@ -85,11 +77,11 @@ def rk2_short_bearing_cycle(
         xp, yp = x + dt * vx, y + dt * vy
         vxp, vyp = vx + dt * ax, vy + dt * ay
         wj, wb = journal_speed[k + 1], shell_speed[k + 1]
-        fx, fy = short_bearing_force(xp, yp, vxp, vyp, wj + wb, viscosity, radius, width, clearance)
+        fx, fy = force(xp, yp, vxp, vyp, wj + wb, viscosity, params)
         ax2, ay2, _, _ = contact_acceleration(
             xp, yp, vxp, vyp, load_x[k + 1] + fx, load_y[k + 1] + fy, mass_x, mass_y,
             dry_friction, contact_radius, (wj - wb) * radius, contact,
-        )
+)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, contact_radius, pc > 0.0)
@@ -102,7 +94,7 @@ def _step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
         raise CaseError(
             f"solver.step_deg = {step_deg!r}: must divide solver.output_step_deg = "
             f"{output_step_deg!r} (allowed: output_step_deg / k, k = 1, 2, ...) [deg]"
-        )
+)
     n_out = len(problem.output_angles(output_step_deg))
     n_steps = n_out * record_every
     phi = np.linspace(0.0, problem.loads.cycle, n_steps + 1)
@@ -118,40 +110,42 @@ def rk2_cycle(
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed
     start = np.array([state.x, state.y, state.vx, state.vy, float(state.in_contact)])
-    history = None
-    if problem.is_short_bearing:
+    kernel = problem.compiled_force
+    session = None
+    if kernel is not None and kernel.radial_damping is not None:
         g = problem.film.geometry
-        table, end, stiffness = rk2_short_bearing_cycle(
-            start, dt, load_x, load_y, wj, wb, record_every, problem.viscosity,
-            g.radius, g.width, g.radial_clearance, problem.mass_x, problem.mass_y,
-            problem.dry_friction, problem.contact_radius,
-        )
+        table, end, stiffness = rk2_compiled_cycle(
+            kernel.force, kernel.radial_damping, kernel.params, start, dt, load_x, load_y,
+            wj, wb, record_every, problem.viscosity, g.radius, g.radial_clearance,
+            problem.mass_x, problem.mass_y, problem.dry_friction, problem.contact_radius,
+)
         if stiffness > 2.0:
             raise ConvergenceError(
                 f"rk2 step too large for the film stiffness: Δt·B/m = {stiffness:.3g} > 2 "
                 f"(explicit Heun unstable); use solver.step_deg ≤ {step_deg * 1.9 / stiffness:.2g}"
                 " deg or the adaptive integrator",
                 where=f"step {step_deg} deg", residual=stiffness,
-            )
+)
     else:
-        history = FilmHistory(problem.film, state.film_history) if problem.has_history else None
+        session = problem.session(state.film_memory)
         table, end = _rk2_generic_cycle(
-            problem, start, dt, load_x, load_y, wj, wb, record_every, history
-        )
+            problem, start, dt, load_x, load_y, wj, wb, record_every, session
+)
     if not np.all(np.isfinite(table)):
         raise ConvergenceError(
             "rk2 orbit diverged (film too stiff for the step; reduce solver.step_deg)",
             where=f"step {step_deg} deg",
-        )
-    field = history.field if not problem.is_short_bearing and history is not None else None
-    end_state = OrbitState(end[0], end[1], end[2], end[3], bool(end[4] > 0.5), field)
+)
+    memory = session.snapshot() if session is not None else None
+    end_state = OrbitState(end[0], end[1], end[2], end[3], bool(end[4] > 0.5), memory)
     return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state, len(phi) - 1)
 
 
-def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every, history):
-    """The same Heun scheme for any film model (Python loop; slow for grid models); a film
-    history is advanced in lock-step after every step (:class:`FilmHistory`)."""
-    force = problem.force_function(history)
+def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
+                       session: FilmSession):
+    """The same Heun scheme for any film model (Python loop; slow for grid models); the film
+    memory is advanced in lock-step after every step (:class:`FilmSession`)."""
+    force = problem.force_function(session)
     radius = problem.film.geometry.radius
     x, y, vx, vy, contact = start[0], start[1], start[2], start[3], bool(start[4] > 0.5)
     n_steps = load_x.size - 1
@@ -162,7 +156,7 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
         return contact_acceleration(
             x, y, vx, vy, load_x[k] + fx, load_y[k] + fy, problem.mass_x, problem.mass_y,
             problem.dry_friction, problem.contact_radius, (wj[k] - wb[k]) * radius, contact,
-        )
+)
 
     for k in range(n_steps):
         ax, ay, pc, pf = acceleration(k, x, y, vx, vy)
@@ -170,8 +164,7 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
             out[k // record_every] = (x, y, vx, vy, pc, pf, float(contact))
         xp, yp, vxp, vyp = x + dt * vx, y + dt * vy, vx + dt * ax, vy + dt * ay
         ax2, ay2, _, _ = acceleration(k + 1, xp, yp, vxp, vyp)
-        if history is not None:
-            history.advance(FilmState(x, y, vx, vy, wj[k], wb[k], problem.viscosity), dt)
+        session.advance(FilmState(x, y, vx, vy, wj[k], wb[k], problem.viscosity), dt)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius, pc > 0.0)

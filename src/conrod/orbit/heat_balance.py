@@ -1,4 +1,4 @@
-"""Effective film temperature from a global heat balance (seed 002 Table 1 column t*).
+"""Effective film temperature from a global heat balance ([D2] Table 1 column t*).
 
 All friction power is carried away by the oil that flows through the bearing:
 

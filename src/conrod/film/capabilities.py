@@ -1,0 +1,147 @@
+"""Optional capabilities a film model declares on top of :class:`~conrod.film.base.FilmModel`.
+
+Consumers (the orbit integrators, running-in, the elastic housing) ask
+``isinstance(film, Capability)`` of these runtime-checkable protocols, never for a concrete
+class, and never read a model's internals. A wrapper film (grooved, worn, mixed-lubrication)
+declares what its inner model declares by delegating the methods.
+
+* :class:`HasCompiledKernel` — a numba-compiled force (and, optionally, a compiled massless
+  orbit cycle) that the fast orbit paths run instead of the Python film interface;
+* :class:`SupportsDeformation` — the model honours ``FilmState.deformation``; a model that
+  does not must refuse a deformation with :class:`~conrod.errors.CaseError`
+  (:func:`refuse_deformation`), never ignore it;
+* :class:`HasMemory` — the answer depends on an explicit memory value (warm-start field,
+  film content) that the *integrator* owns: it initialises it, threads it through every
+  solve, advances it over a step, snapshots it and restores it on a rejected step.
+  Memory values are immutable: a solve returns a new one and never changes its argument.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, Protocol, runtime_checkable
+
+import numpy as np
+
+from conrod.errors import CaseError
+from conrod.film.base import FilmResult, FilmState
+
+QuasiStaticCycle = Callable[["QuasiStaticRequest"], tuple[np.ndarray, np.ndarray, float]]
+"""request → (rows (x, y, v_x, v_y, 0, 0, contact) at the output steps, end state array
+starting (x, y, v_x, v_y), worst relative force residual [-])."""
+
+
+@dataclass(frozen=True)
+class QuasiStaticRequest:
+    """One massless (quasi-static) orbit cycle asked of a compiled film kernel.
+
+    x, y, vx, vy : float  Start position [m] and velocity [m/s] of the journal centre.
+    dt : float  Time step [s].
+    load_x, load_y : ndarray  Load W at the n + 1 step points [N].
+    journal_speed, shell_speed : ndarray  ω_j, ω_b at the step points [rad/s].
+    record_every : int  Steps between recorded rows [-].
+    viscosity : float  Dynamic viscosity μ [Pa s].
+    contact_radius : float  Radius of the contact circle the centre may not leave [m].
+    crank_speed : float  Crank angular velocity ω (velocity scale c ω) [rad/s].
+    """
+
+    x: float
+    y: float
+    vx: float
+    vy: float
+    dt: float
+    load_x: np.ndarray
+    load_y: np.ndarray
+    journal_speed: np.ndarray
+    shell_speed: np.ndarray
+    record_every: int
+    viscosity: float
+    contact_radius: float
+    crank_speed: float
+
+
+@dataclass(frozen=True)
+class CompiledKernel:
+    """What the compiled orbit loops need from a film.
+
+    force : numba function ``(x, y, v_x, v_y, ω_j + ω_b, μ, params) -> (F_x, F_y)`` [N],
+        compiled with ``numba.njit``; the orbit's compiled loops call it directly.
+    params : tuple  Constant parameters of ``force`` (floats and arrays, SI units).
+    quasi_static_cycle : QuasiStaticCycle or None  The film's own massless Heun cycle
+        (e.g. an exact inversion of the force); None: the orbit's generic compiled Newton
+        loop on ``force`` is used.
+    radial_damping : numba function ``(ε, μ, params) -> B_rr`` [N s/m] or None  Squeeze
+        damping for the stability limit of the explicit ``rk2`` loop; None: ``rk2`` runs
+        the Python loop.
+    """
+
+    force: Any
+    params: tuple
+    quasi_static_cycle: QuasiStaticCycle | None = None
+    radial_damping: Any = None
+
+
+@runtime_checkable
+class HasCompiledKernel(Protocol):
+    """A film with a compiled force for the fast orbit paths."""
+
+    def compiled_kernel(self) -> CompiledKernel | None:
+        """The kernel, or None when this configuration of the model has none."""
+        ...
+
+
+@runtime_checkable
+class SupportsDeformation(Protocol):
+    """A film that adds ``FilmState.deformation`` δ(θ, z) [m] to its film thickness."""
+
+    def deformation_shape(self) -> tuple[int, int]:
+        """Shape of the δ array it accepts: (len θ, len z) of :meth:`FilmModel.grid`."""
+        ...
+
+
+@runtime_checkable
+class HasMemory(Protocol):
+    """A film whose answer depends on an explicit memory value owned by the integrator."""
+
+    def initial_memory(self) -> Any:
+        """Memory at the start of an orbit (cold warm start, full film, ...)."""
+        ...
+
+    def solve_with_memory(
+        self, state: FilmState, memory: Any, *, with_pressure: bool = False
+) -> tuple[FilmResult, Any]:
+        """Result for ``state`` starting from ``memory`` and the memory after the solve."""
+        ...
+
+    def force_with_memory(self, state: FilmState, memory: Any) -> tuple[float, float, Any]:
+        """Film force (F_x, F_y) [N] starting from ``memory`` and the memory after it."""
+        ...
+
+    def advance_memory(self, state: FilmState, memory: Any, dt: float) -> Any:
+        """Memory after a time step ``dt`` [s] taken from ``state`` (transport of the film
+        content); unchanged for a memory that only holds a warm start."""
+        ...
+
+
+def refuse_deformation(state: FilmState, name: str) -> None:
+    """CaseError when ``state`` carries a deformation the film ``name`` cannot honour."""
+    if state.deformation is not None:
+        raise CaseError(
+            f"film = {name!r} cannot take a deformation field δ(θ, z) (allowed: a film "
+            "model that honours it: 'reynolds' or 'mass_conserving')"
+)
+
+
+def film_memory(film: Any) -> Any:
+    """Initial memory of ``film`` (None for a memoryless film)."""
+    return film.initial_memory() if isinstance(film, HasMemory) else None
+
+
+def solve_film(
+    film: Any, state: FilmState, memory: Any, *, with_pressure: bool = False
+) -> tuple[FilmResult, Any]:
+    """(result, new memory) of any film: memoryless films ignore and return ``memory``."""
+    if isinstance(film, HasMemory):
+        return film.solve_with_memory(state, memory, with_pressure=with_pressure)
+    return film.solve(state, with_pressure=with_pressure), memory

@@ -1,0 +1,76 @@
+"""The orbit integrators as objects (names in :mod:`conrod.registry`).
+
+Each integrator integrates one cycle, ``cycle(problem, state, settings)`` with the
+``[solver]`` section ``settings``, and returns a
+:class:`~conrod.orbit.trajectory.CycleTrajectory` whose end state carries the film memory
+on to the next cycle. A new integrator is a class with ``name`` and ``cycle`` registered
+in :data:`conrod.registry.INTEGRATORS`, or any such object handed to
+:class:`~conrod.simulation.Simulation`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Protocol, runtime_checkable
+
+from conrod.errors import CaseError
+from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.trajectory import CycleTrajectory
+
+
+@runtime_checkable
+class Integrator(Protocol):
+    """One cycle of the journal-centre orbit."""
+
+    name: str
+
+    def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
+        """One cycle from ``state`` at φ = 0."""
+        ...
+
+
+@dataclass(frozen=True)
+class AdaptiveIntegrator:
+    """Implicit, error-controlled (SciPy Radau/BDF/LSODA) with contact phases."""
+
+    name: str = "adaptive"
+
+    def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
+        """One cycle; refuses a film whose content evolves in lock-step with a fixed step."""
+        from conrod.orbit.adaptive import adaptive_cycle
+
+        if problem.has_film_content:
+            raise CaseError(
+                f"solver.integrator = 'adaptive': the {problem.film.name} film carries a "
+                "history field that is advanced in lock-step with a fixed step (allowed: rk2, "
+                "quasi_static)"
+)
+        return adaptive_cycle(problem, state, settings, settings.output_step_deg)
+
+
+@dataclass(frozen=True)
+class HeunIntegrator:
+    """Second-order Runge–Kutta (Heun) at the fixed step ``[solver] step_deg``."""
+
+    name: str = "rk2"
+
+    def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
+        """One cycle of fixed-step Heun integration."""
+        from conrod.orbit.rk2 import rk2_cycle
+
+        return rk2_cycle(problem, state, settings.step_deg, settings.output_step_deg)
+
+
+@dataclass(frozen=True)
+class QuasiStaticIntegrator:
+    """Massless orbit (film force balances the load), Heun at
+    ``[solver] quasi_static_step_deg``."""
+
+    name: str = "quasi_static"
+
+    def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
+        """One cycle of the massless orbit."""
+        from conrod.orbit.quasi_static import quasi_static_cycle
+
+        return quasi_static_cycle(problem, state, settings.quasi_static_step_deg,
+                                  settings.output_step_deg)

@@ -1,0 +1,97 @@
+"""Figures of every result type, registered in :func:`conrod.results.output.figures`
+(importing :mod:`conrod.plotting` registers them)."""
+
+from __future__ import annotations
+
+from conrod.contact.analysis import ContactResults
+from conrod.loads.engine_loads import EngineLoads
+from conrod.mechanism.results import MechanismRun
+from conrod.mechanism.sweep import SweepRun
+from conrod.plotting import contact_plots, loads_plots, mechanism_plots, orbit_plots
+from conrod.results.cycle_results import RunResults
+from conrod.results.output import FigureSpec, figures
+
+
+@figures.register
+def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
+    own = (
+        FigureSpec("orbit.png", "Journal-centre orbit",
+                   "Journal centre e_x, e_y [µm] in the clearance circle over the last cycle, "
+                   "labelled by crank angle [deg]; the cycle before it dashed.",
+                   lambda: orbit_plots.plot_orbit(results)),
+        FigureSpec("hmin_pmax.png", "Minimum film thickness and peak pressure",
+                   "h_min [µm] and p_max [MPa] against crank angle [deg].",
+                   lambda: orbit_plots.plot_film_thickness_and_pressure(results)),
+        FigureSpec("friction_flow.png", "Friction power and oil flow",
+                   "Friction power [W] and side/supply flow [l/min] against crank angle [deg].",
+                   lambda: orbit_plots.plot_friction_and_flow(results)),
+        FigureSpec("pressure_map.png", "Film pressure at the largest p_max",
+                   "Film pressure p [MPa] over shell angle θ [deg] and axial position z [mm] "
+                   "at the crank angle of the largest p_max.",
+                   lambda: orbit_plots.plot_pressure_map(results)),
+)
+    return own + (figures(results.contact) if results.contact is not None else ())
+
+
+@figures.register
+def _contact_figures(contact: ContactResults) -> tuple[FigureSpec, ...]:
+    return (
+        FigureSpec("contact_cycle.png", "Contact over the cycle",
+                   "Contact (Hertz) stress [MPa] and friction work [J], h_min [µm] with the "
+                   "contact intervals shaded and p_max [MPa] against crank angle [deg].",
+                   lambda: contact_plots.plot_contact_cycle(contact)),
+        FigureSpec("wear_unrolled.png", "Friction work and wear, unrolled",
+                   "Friction work [J] and wear depth [µm] of journal and shell against the "
+                   "surface angle [deg].",
+                   lambda: contact_plots.plot_wear_unrolled(contact)),
+        FigureSpec("wear_polar.png", "Wear around journal and shell",
+                   "Wear depth [µm] of journal and shell around the circumference (polar).",
+                   lambda: contact_plots.plot_wear_polar(contact)),
+        FigureSpec("contact_stress_surfaces.png", "Contact stress on the surfaces",
+                   "Largest Hertz stress [MPa] each journal and shell element sees over the "
+                   "cycle, against the surface angle [deg].",
+                   lambda: contact_plots.plot_contact_stress_surfaces(contact)),
+)
+
+
+@figures.register
+def _loads_figures(loads: EngineLoads) -> tuple[FigureSpec, ...]:
+    return (
+        FigureSpec("polar_load_diagram.png", "Polar load diagram",
+                   "Load on the crank pin [kN] in the rod frame, labelled by crank angle [deg].",
+                   lambda: loads_plots.plot_polar_load_diagram(loads)),
+        FigureSpec("load_vs_crank_angle.png", "Load over the cycle",
+                   "Bearing load components and magnitude [kN] against crank angle [deg].",
+                   lambda: loads_plots.plot_load_over_crank_angle(loads)),
+        FigureSpec("wear_diagram.png", "Wear diagram",
+                   "Load-weighted wear intensity around the crank pin [kN] and the oil-hole "
+                   "angle [deg].",
+                   lambda: loads_plots.plot_wear_diagram(loads)),
+)
+
+
+@figures.register
+def _mechanism_figures(run: MechanismRun) -> tuple[FigureSpec, ...]:
+    results = run.results
+    return (
+        FigureSpec("gaps_and_forces.png", "Gaps and contact forces",
+                   "Gap [µm] and contact force [N] of both rod bearings against crank angle "
+                   "[deg] over the last cycle.",
+                   lambda: mechanism_plots.plot_gaps_and_forces(results)),
+        FigureSpec("journal_orbits.png", "Journal orbits in the clearances",
+                   "Journal-centre paths [µm] inside both rod-bearing clearances.",
+                   lambda: mechanism_plots.plot_journal_orbits(results)),
+        FigureSpec("impact_velocities.png", "Impact velocities",
+                   "Impact velocity [m/s] of every impact against crank angle [deg].",
+                   lambda: mechanism_plots.plot_impacts(results)),
+)
+
+
+@figures.register
+def _sweep_figures(run: SweepRun) -> tuple[FigureSpec, ...]:
+    return (
+        FigureSpec("sweep_map.png", "Impact-velocity ratio over the operating modes",
+                   "Ratio of the worn joint's largest impact velocity to the other's [-] over "
+                   "crank speed [rpm] and load scale [-].",
+                   lambda: mechanism_plots.plot_sweep_map(run.sweep)),
+)
