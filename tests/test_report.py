@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from conrod.results.writers import write_run
 from matplotlib.image import imread
 from typer.testing import CliRunner
 
@@ -22,7 +23,6 @@ from conrod import Case, Simulation
 from conrod.cli.app import _register_commands, app
 from conrod.errors import CaseError
 from conrod.report import build_report, write_report
-from conrod.results.writers import write_run
 from conrod.sweep import Study, Sweep
 
 REPO = Path(__file__).resolve().parents[1]

@@ -226,7 +226,7 @@ def test_mechanism_study_equals_the_mechanism_sweep(tmp_path):
     from conrod.mechanism.setup import mechanism_case
     from conrod.mechanism.sweep import impact_statistics
 
-    case_file = REPO / "examples" / "seed003_worn_rod_bearings.toml"
+    case_file = REPO / "examples" / "kulayev_worn_rod_bearings.toml"
     study = Study.from_dict({"base": str(case_file), "command": "mechanism",
                              "override": {"clearance": {"cycles": 2}},
                              "axis": [{"key": "engine.speed", "values": [3000.0]},

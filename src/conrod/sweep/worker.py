@@ -19,61 +19,25 @@ STATUS_FAILED = "failed"
 
 
 def write_variant_results(results, out_dir: Path, *, figures: bool) -> None:
-    """Write one variant's files with the writer ``conrod run`` uses.
-
-    Without figures the contact post-processing writes its tables only (the run writer
-    draws the contact figures even when asked for none).
-    """
-    import dataclasses
-
-    from conrod.results.writers import write_run
-
-    if not figures and results.contact is not None:
-        results = dataclasses.replace(results, contact=_TablesOnly(results.contact))
-    write_run(results, out_dir, figures=figures)
-
-
-class _TablesOnly:
-    """A contact analysis whose ``write_files`` writes the wear tables, no figures."""
-
-    def __init__(self, contact: Any):
-        self._contact = contact
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self._contact, name)
-
-    def write_files(self, out_dir: Any) -> list[Path]:
-        from conrod.contact.output import write_wear_tables
-
-        Path(out_dir).mkdir(parents=True, exist_ok=True)
-        return write_wear_tables(self._contact, Path(out_dir))
-
-
-def write_mechanism_results(results, summary: dict[str, Any], out_dir: Path, *,
-                            figures: bool) -> None:
-    """Write one mechanism variant with the writer of ``conrod mechanism`` (with figures), or
-    its ``mechanism.csv`` and ``summary.json`` only."""
-    from conrod.cli.mechanism_command import mechanism_table, write_run_outputs
-    from conrod.io.atomic import write_csv, write_json
+    """Write one variant's files with the one writer every command uses (and its manifest)."""
+    from conrod.results.output import write_results
 
     if figures:
-        write_run_outputs(results, summary, out_dir)
-        return
-    write_csv(out_dir / "mechanism.csv", mechanism_table(results))
-    write_json(out_dir / "summary.json", summary)
+        import conrod.plotting  # noqa: F401  (registers the figures)
+    write_results(results, out_dir, figures=figures)
 
 
 def compute_into(case, command: str, out_dir: Path, figures: bool) -> None:
     """Run the command's computation on ``case`` and write its files into ``out_dir``."""
     if command == "mechanism":
+        from conrod.mechanism.results import MechanismRun
         from conrod.mechanism.setup import mechanism_case
         from conrod.mechanism.simulation import simulate
 
         base = mechanism_case(case)
         results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)
-        summary = {"speed_rpm": base.speed_rpm, "load_scale": base.load_scale,
-                   **results.summary()}
-        write_mechanism_results(results, summary, out_dir, figures=figures)
+        write_variant_results(MechanismRun(results, base.speed_rpm, base.load_scale),
+                              out_dir, figures=figures)
         return
     from conrod.simulation import Simulation
 
