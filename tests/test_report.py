@@ -15,14 +15,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conrod.results.writers import write_run
 from matplotlib.image import imread
 from typer.testing import CliRunner
 
+import conrod.plotting  # noqa: F401  (registers the figures)
 from conrod import Case, Simulation
 from conrod.cli.app import _register_commands, app
 from conrod.errors import CaseError
 from conrod.report import build_report, write_report
+from conrod.results.output import write_results
 from conrod.sweep import Study, Sweep
 
 REPO = Path(__file__).resolve().parents[1]
@@ -86,7 +87,7 @@ def run_folder(tmp_path_factory):
     """A ``conrod run`` folder of the shipped passenger car (massless orbit, figures)."""
     out = tmp_path_factory.mktemp("run")
     results = Simulation(Case.from_toml(CASE), integrator="quasi_static").run()
-    write_run(results, out, figures=True)
+    write_results(results, out, figures=True)
     return out
 
 
