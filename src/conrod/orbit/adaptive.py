@@ -175,7 +175,7 @@ def adaptive_cycle(
     leave.terminal, leave.direction = True, -1.0  # type: ignore[attr-defined]
     for _ in range(MAX_PHASE_CHANGES):
         rhs, event = (phases.contact_rhs, leave) if contact else (phases.free_rhs, hit)
-        sol = _solve_segment(rhs, phi, end, current, event, settings)
+        sol = _solve_segment(rhs, phi, end, current, event, settings, phases.session)
         if sol.status < 0:
             raise ConvergenceError(f"adaptive orbit integration failed: {sol.message}",
                                    where=f"crank angle {math.degrees(phi):.2f} deg")
@@ -194,12 +194,15 @@ def adaptive_cycle(
                            where=f"crank angle {math.degrees(phi):.2f} deg")
 
 
-def _solve_segment(rhs, phi, end, current, event, settings):
-    """solve_ivp with the chosen method, then the others of :data:`FALLBACK_METHODS`."""
+def _solve_segment(rhs, phi, end, current, event, settings, session):
+    """solve_ivp with the chosen method, then the others of :data:`FALLBACK_METHODS`; a
+    failed attempt is rejected whole: the film memory restarts from its snapshot."""
     methods = [settings.adaptive_method] + [
         m for m in FALLBACK_METHODS if m != settings.adaptive_method
     ]
+    start = session.snapshot()
     for method in methods:
+        session.restore(start)
         sol = solve_ivp(
             rhs, (phi, end), current, method=method, events=event, dense_output=True,
             max_step=math.radians(settings.max_step_deg),
