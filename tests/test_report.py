@@ -31,7 +31,9 @@ CASE = REPO / "examples" / "passenger_car_diesel_2000rpm.toml"
 BROWSER_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
                  "--no-first-run", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync", "--hide-scrollbars"]
-UNIT_IN_CAPTION = re.compile(r"\bin (µm|MPa|W|kN|l/min|m|Pa|m³/s|°C|N|nm|J|degrees|rpm)\b")
+UNIT_IN_CAPTION = re.compile(
+    r"(\bin |\[)(µm|MPa|W|kN|l/min|m|mm|Pa|m³/s|m\^3/s|°C|N|nm|J|deg|degrees|rpm)(\b|\])")
+"""A unit in a caption, as "in MPa" or in the project's bracket style "[MPa]"."""
 MARK_IMAGES = """<script>
 window.addEventListener("load", function () {
   var images = document.images, broken = 0;

@@ -184,15 +184,15 @@ def engine_load_images(case_file: Path | None, case_data: dict | None) -> list[I
         Image("Polar load diagram of the crankpin", "Rod force on the crankpin in the crank "
               "frame in kN (tangential against radial), poles O and O' shifted by the "
               "rotating-mass force, labels give the crank angle in degrees; right: the low "
-              "loads enlarged.", png_bytes(loads_plots.polar_load_diagram(loads))),
+              "loads enlarged.", png_bytes(loads_plots.plot_polar_load_diagram(loads))),
         Image("Big-end load over the cycle", "Load magnitude with its mean (top) and gas, "
               "radial and tangential forces (bottom) in kN against crank angle in degrees "
-              "from firing TDC.", png_bytes(loads_plots.load_vs_crank_angle(loads))),
+              "from firing TDC.", png_bytes(loads_plots.plot_load_over_crank_angle(loads))),
         Image("Wear diagram of the crankpin", "Relative wear of the journal in the crank "
               "frame (strips proportional to the load, ±60° about each load direction; "
               "dimensionless, scaled to the largest) around the crankpin, angles in degrees "
               "from the outward crank radius; the arrow marks the oil-hole direction.",
-              png_bytes(loads_plots.wear_diagram_figure(loads))),
+              png_bytes(loads_plots.plot_wear_diagram(loads))),
     ]
 
 
