@@ -12,7 +12,9 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "src" / "conrod"
-PLOTTING_ALLOWED = ("plotting", "cli", "report")
+PLOTTING_ALLOWED = ("plotting", "cli", "report", "sweep")
+"""The figures themselves, and the output layers that write them (commands, report, sweep
+variants with ``--figures``)."""
 
 
 def _imports(path: Path) -> set[str]:
