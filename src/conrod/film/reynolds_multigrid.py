@@ -10,8 +10,8 @@ One cycle (Brandt & Cryer's projected multigrid in its simplest, correction form
    correction with zero correction on masked nodes; coarse conductances come from the
    film thickness at coinciding nodes (re-discretisation),
 4. the prolonged correction is added on the full-film nodes, projected, and
-   ``POST_SWEEPS`` projected sweeps follow (one and one were fastest for warm starts
-   along an orbit at 144×32).
+   ``POST_SWEEPS`` projected sweeps follow (two and one: 9 instead of 12 cycles per warm
+   solve to 1e-10 at 144×32, 19 instead of 23 at 288×64, about 15 % less time).
 
 Cycles stop when the largest change of one cycle is ≤ tolerance·max|p|. Everything
 runs in one compiled call, lexicographic order, deterministic.
@@ -28,7 +28,7 @@ import math
 import numba as nb
 import numpy as np
 
-PRE_SWEEPS = 1
+PRE_SWEEPS = 2
 POST_SWEEPS = 1
 COARSEST_SWEEPS = 40
 
