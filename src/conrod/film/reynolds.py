@@ -143,6 +143,14 @@ class ReynoldsFilm:
         pressure, _ = self._solve_pressure(problem, state)
         return chars.pressure_force(pressure, self.film_grid, self._force_weights)
 
+    def sensitivities(self, state: FilmState):
+        """Force, stiffness K = −∂F/∂e [N/m] and damping C = −∂F/∂ė [N s/m] from one
+        solve and one sparse solve on the converged active set
+        (:func:`conrod.film.linearised.linearise_reynolds`)."""
+        from conrod.film.linearised import linearise_reynolds
+
+        return linearise_reynolds(self, state)
+
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """All film characteristics for one state (friction convention in ``extra``)."""
         problem = self._problem(state)
