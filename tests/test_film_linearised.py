@@ -122,3 +122,40 @@ def test_jacobian_and_flat_dictionary():
     values = lin.as_dict()
     assert set(values) == {f"{n}_{a}{b}" for n in ("K", "C", "K_bar", "C_bar")
                            for a in "xy" for b in "xy"}
+
+
+def test_steady_command_prints_the_eight_coefficients():
+    """`conrod steady --json`: K, C [N/m, N s/m] and K̄ = Kc/W, C̄ = Ccω/W in the load frame."""
+    import json
+
+    import typer
+    from typer.testing import CliRunner
+
+    from conrod.cli import steady_command
+
+    app = typer.Typer()
+    steady_command.register(app)
+
+    @app.callback()
+    def main() -> None:
+        """conrod."""
+
+    load, rpm = 2500.0, 1909.86
+    result = CliRunner().invoke(app, ["steady", "--load", str(load), "--speed-rpm", str(rpm),
+                                      "--viscosity", str(MU), "--diameter", str(D), "--width",
+                                      str(0.5 * D), "--radial-clearance", str(C), "--json",
+                                      "--grid", "72x16"])
+    assert result.exit_code == 0, result.output
+    values = json.loads(result.output)
+    omega = rpm * math.pi / 30.0
+    for a in "xy":
+        for b in "xy":
+            assert values[f"K_bar_{a}{b}"] == pytest.approx(values[f"K_{a}{b}"] * C / load,
+                                                            rel=1e-6)
+            assert values[f"C_bar_{a}{b}"] == pytest.approx(
+                values[f"C_{a}{b}"] * C * omega / load, rel=1e-6)
+    assert values["C_xy"] == pytest.approx(values["C_yx"], rel=1e-8)
+    assert values["K_xx"] > 0.0 and values["C_xx"] > values["C_yy"] > 0.0
+    text = CliRunner().invoke(app, ["steady", "--length-to-diameter", "0.5", "--eccentricity",
+                                    "0.6", "--grid", "72x16"])
+    assert "K_bar_xy" in text.output and "[-]" in text.output
