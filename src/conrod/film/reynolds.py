@@ -33,6 +33,9 @@ from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
 
 FrictionConvention = Literal["full_film", "film_fraction"]
 SolverMethod = Literal["multigrid", "sor"]
+NESTED_TOLERANCE = 1.0e-4
+"""Tolerance of the coarser grids of a cold start [-]: their answer only seeds the next
+grid, whose own discretisation differs by ~1e-3, so converging them further is wasted."""
 
 
 def optimal_relaxation(grid: FilmGrid) -> float:
@@ -247,7 +250,8 @@ class ReynoldsFilm:
                     pressure = np.maximum(kernel.prolongate(pressure),
                                           self.geometry.cavitation_pressure)
                 final = k == len(levels) - 1
-                tolerance = self.tolerance if final else 10.0 * self.tolerance
+                tolerance = (self.tolerance if final
+                             else max(10.0 * self.tolerance, NESTED_TOLERANCE))
                 sweeps, change = self._sweep(level, pressure, state, tolerance)
                 total += sweeps
         self._last_pressure = pressure.copy()
