@@ -148,19 +148,6 @@ def residual(p, w_e, w_w, w_n, w_s, s, a_p, mask, out=None):
 
 
 @nb.njit(cache=True)
-def relative_change(p, previous):
-    """max|p − previous| / max|p| without temporaries [-] (0 when p ≡ 0)."""
-    largest_change = 0.0
-    largest_value = 0.0
-    n, m = p.shape
-    for i in range(n):
-        for j in range(m):
-            largest_change = max(largest_change, abs(p[i, j] - previous[i, j]))
-            largest_value = max(largest_value, abs(p[i, j]))
-    return largest_change / largest_value if largest_value > 0.0 else 0.0
-
-
-@nb.njit(cache=True)
 def restrict(fine: np.ndarray, coarse_mask: np.ndarray, symmetric: bool) -> np.ndarray:
     """Transpose of bilinear prolongation: weighted sums of fine balances (1, ½, ¼), on
     the grid of ``coarse_mask``; a symmetric problem mirrors the row above the mid-plane."""
@@ -243,18 +230,60 @@ def _ascend(k, errors, sources, stencils, masks):
 
 
 @nb.njit(cache=True)
-def update_mask(mask, fixed, p, cavitation_pressure) -> bool:
-    """mask := fixed | (p ≤ p_cav) in place; True when any entry changed (the coarse
-    operators are rebuilt only then — along a warm-started orbit the set rarely moves)."""
+def masked_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure, mask, out):
+    """In one pass: mask := fixed | (p ≤ p_cav) and the flux residual of :func:`residual`
+    on the unmasked nodes (0 elsewhere). Returns True when any mask entry changed (the
+    coarse operators are rebuilt only then — along a warm-started orbit the set rarely
+    moves)."""
     changed = False
     n, m = p.shape
     for i in range(n):
+        ip = i + 1 if i + 1 < n else 0
+        im = i - 1 if i > 0 else n - 1
         for j in range(m):
             value = fixed[i, j] or p[i, j] <= cavitation_pressure
             if value != mask[i, j]:
                 mask[i, j] = value
                 changed = True
+            if value or j == 0 or j == m - 1:
+                out[i, j] = 0.0
+                continue
+            target = (w_e[i, j] * p[ip, j] + w_w[i, j] * p[im, j]
+                      + w_n[i, j] * p[i, j + 1] + w_s[i, j] * p[i, j - 1])
+            out[i, j] = a_p[i, j] * (target + s[i, j] - p[i, j])
     return changed
+
+
+@nb.njit(cache=True)
+def add_projected(coarse, fine, fine_mask, floor):
+    """fine := max(fine + bilinear interpolation of ``coarse``, floor) on unmasked nodes."""
+    n, m = fine.shape
+    nc = coarse.shape[0]
+    for i in range(n):
+        i0 = i // 2
+        i1 = (i0 + 1) % nc if i % 2 else i0
+        for j in range(1, m - 1):
+            if fine_mask[i, j]:
+                continue
+            j0 = j // 2
+            j1 = j0 + 1 if j % 2 else j0
+            value = fine[i, j] + 0.25 * (coarse[i0, j0] + coarse[i1, j0] + coarse[i0, j1]
+                                         + coarse[i1, j1])
+            fine[i, j] = value if value > floor else floor
+
+
+@nb.njit(cache=True)
+def cycle_change(p, previous):
+    """max|p − previous| / max|p| [-] (0 when p ≡ 0), then previous := p, in one pass."""
+    largest_change = 0.0
+    largest_value = 0.0
+    n, m = p.shape
+    for i in range(n):
+        for j in range(m):
+            largest_change = max(largest_change, abs(p[i, j] - previous[i, j]))
+            largest_value = max(largest_value, abs(p[i, j]))
+            previous[i, j] = p[i, j]
+    return largest_change / largest_value if largest_value > 0.0 else 0.0
 
 
 @nb.njit(cache=True)
@@ -344,23 +373,22 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
         coarse_east.append(a_e)
         coarse_north.append(a_n)
     change = np.inf
-    previous = np.empty_like(p)
+    previous = p.copy()
     flux_residual = np.empty_like(p)
     mask = np.ones(p.shape, dtype=np.bool_)
     coarse_cycles = 2 if n_coarse >= W_CYCLE_LEVELS else 1
     masks, stencils = coarse_operators(mask, coarse_east, coarse_north, symmetric)
     for cycle in range(1, max_cycles + 1):
-        previous[:] = p
         relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS)
         if n_coarse > 0:
-            if update_mask(mask, fixed, p, cavitation_pressure) or cycle == 1:
+            moved = masked_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure,
+                                    mask, flux_residual)
+            if moved or cycle == 1:
                 masks, stencils = coarse_operators(mask, coarse_east, coarse_north, symmetric)
-            residual(p, w_e, w_w, w_n, w_s, s, a_p, mask, flux_residual)
-            add_prolongated(correction(flux_residual, masks, stencils, coarse_east, coarse_north,
-                                       symmetric, coarse_cycles), p, mask)
-            np.maximum(p, cavitation_pressure, p)
+            add_projected(correction(flux_residual, masks, stencils, coarse_east, coarse_north,
+                                     symmetric, coarse_cycles), p, mask, cavitation_pressure)
         relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS)
-        change = relative_change(p, previous)
+        change = cycle_change(p, previous)
         if change <= tolerance:
             return cycle, change
     return max_cycles, change
