@@ -272,6 +272,24 @@ def time_reynolds(n_theta: int, n_z: int, tolerance: float, n_cold: int = 7,
     return out
 
 
+def time_sensitivities() -> list[str]:
+    """Markdown rows: CPU time of ReynoldsFilm.sensitivities (solve + sparse LU) per grid."""
+    rows = []
+    for n_theta, n_z in GRIDS:
+        film = ReynoldsFilm(GEOMETRY, n_theta=n_theta, n_z=n_z, tolerance=1e-10)
+        film.sensitivities(state_at(0))
+        times = []
+        for k in range(1, 8):
+            start = time.process_time()
+            film.sensitivities(state_at(k))
+            times.append(time.process_time() - start)
+        rows.append(f"| reynolds `sensitivities()` (K, C: solve + sparse LU, 1e-10) | "
+                    f"{n_theta}×{n_z} | – | – | {1e3 * float(np.median(times)):.3f} | – | "
+                    "warm |")
+        print(rows[-1], flush=True)
+    return rows
+
+
 def reynolds_versus_ross() -> list[str]:
     """Markdown rows: conrod Reynolds at three tolerances and ROSS 3.1, grid by grid."""
     rows = ["| grid | tolerance | conrod solve() cold / warm [ms] | conrod force() cold / warm "
@@ -326,6 +344,7 @@ def main() -> None:
                         f"{r['cold_sweeps']:.0f} | {1e3 * r['warm']:.3f} | "
                         f"{r['warm_sweeps']:.0f} | W = {r['force']:.0f} N |")
             print(rows[-1], flush=True)
+    rows += time_sensitivities()
     broken = time_broken_film()
     rows.append(f"| mass_conserving, broken film (transient, min ϑ = {broken['min_fraction']:.2f}) "
                 f"| 144×32 | – | – | {1e3 * broken['jfo']:.3f} | {broken['sweeps']:.0f} | "
