@@ -194,11 +194,13 @@ class ReynoldsFilm:
         return _Problem(self.film_grid, h, h_rate, fixed, values)
 
     def _levels(self, problem: _Problem) -> list[_Problem]:
-        """Coarse-to-fine problems: up to three nested grids for a cold start."""
+        """Coarse-to-fine problems: up to three nested grids for a cold start, none
+        coarser than 48 θ intervals (below that the extra level costs more than it saves:
+        72×16 cold 0.17 → 0.14 ms CPU)."""
         levels = [problem]
         while len(levels) < 3:
             g = levels[-1].grid
-            if g.n_theta % 4 or g.n_z % 4 or g.n_theta < 48 or g.n_z < 8:
+            if g.n_theta % 4 or g.n_z % 4 or g.n_theta < 96 or g.n_z < 8:
                 break
             levels.append(levels[-1].coarsened())
         return levels[::-1]
