@@ -273,7 +273,7 @@ def time_reynolds(n_theta: int, n_z: int, tolerance: float, n_cold: int = 7,
 
 
 def time_sensitivities() -> list[str]:
-    """Markdown rows: CPU time of ReynoldsFilm.sensitivities (solve + sparse LU) per grid."""
+    """Markdown rows: CPU time of ReynoldsFilm.sensitivities (solve + 2 adjoint solves)."""
     rows = []
     for n_theta, n_z in GRIDS:
         film = ReynoldsFilm(GEOMETRY, n_theta=n_theta, n_z=n_z, tolerance=1e-10)
@@ -283,7 +283,7 @@ def time_sensitivities() -> list[str]:
             start = time.process_time()
             film.sensitivities(state_at(k))
             times.append(time.process_time() - start)
-        rows.append(f"| reynolds `sensitivities()` (K, C: solve + sparse LU, 1e-10) | "
+        rows.append(f"| reynolds `sensitivities()` (K, C: solve + 2 adjoint solves, 1e-10) | "
                     f"{n_theta}×{n_z} | – | – | {1e3 * float(np.median(times)):.3f} | – | "
                     "warm |")
         print(rows[-1], flush=True)

@@ -159,3 +159,17 @@ def test_steady_command_prints_the_eight_coefficients():
     text = CliRunner().invoke(app, ["steady", "--length-to-diameter", "0.5", "--eccentricity",
                                     "0.6", "--grid", "72x16"])
     assert "K_bar_xy" in text.output and "[-]" in text.output
+
+
+@pytest.mark.parametrize("grid", [(72, 16), (144, 32)])
+def test_adjoint_multigrid_equals_sparse_direct_solve(grid):
+    """Two adjoint multigrid solves give the same K, C as one sparse LU (1e-9)."""
+    from conrod.film.linearised import linearise_reynolds
+
+    film = ReynoldsFilm(geometry(0.5, grooves=()), n_theta=grid[0], n_z=grid[1])
+    state = state_at(0.5, 0.2, 1e-3, -2e-3)
+    adjoint = linearise_reynolds(film, state, "adjoint")
+    direct = linearise_reynolds(film, state, "direct")
+    for name in ("stiffness", "damping"):
+        a, b = getattr(adjoint, name), getattr(direct, name)
+        assert np.abs(a - b).max() <= 1e-9 * np.abs(b).max()

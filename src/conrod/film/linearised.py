@@ -16,9 +16,15 @@ derivative along a state direction q is one more linear solve with the same matr
 
 .. math:: K_{AA}\\,∂p_A/∂q = −(∂K/∂q\\,p − ∂b/∂q)_A ,
 
-(the squeeze source is linear in ė, so ∂/∂ė needs no approximation at all). The four
-right-hand sides (e_x, e_y, ė_x, ė_y) share one sparse LU factorisation (SciPy's
-SuperLU), and the force derivatives are the force quadrature of ∂p/∂q. The result is the
+(the squeeze source is linear in ė, so ∂/∂ė needs no approximation at all). K_AA is
+symmetric, so the force derivatives need only two *adjoint* solves,
+
+.. math:: K_{AA} λ_x = w_x,\\; K_{AA} λ_y = w_y, \\qquad ∂F_i/∂q = λ_i · (∂K/∂q\\,p − ∂b/∂q)_A,
+
+with w the force quadrature weights (F_i = −Σ w_i p). ``method="adjoint"`` (default)
+solves them with the film's own multigrid (cavitated nodes held at 0, no projection,
+tolerance 1e-12, the mid-plane symmetry when the film uses it); ``method="direct"``
+solves the four right-hand sides with one sparse LU (SciPy's SuperLU) instead. The result is the
 exact derivative of the discrete force wherever the active set does not change under an
 infinitesimal move (everywhere except on switching surfaces of measure zero); the
 derivative of the coefficient arrays is analytic
@@ -148,9 +154,16 @@ def _active_matrix(a_east: np.ndarray, a_north: np.ndarray, active: np.ndarray):
     return matrix, (rows_i, rows_j)
 
 
-def linearise_reynolds(film, state: FilmState) -> FilmLinearisation:
+ADJOINT_TOLERANCE = 1.0e-12
+"""Multigrid tolerance of the adjoint solves (relative change per cycle) [-]."""
+
+
+def linearise_reynolds(film, state: FilmState, method: str = "adjoint") -> FilmLinearisation:
     """Exact derivatives of a :class:`~conrod.film.reynolds.ReynoldsFilm` force on the
-    converged active set (module docstring); one film solve and one sparse LU."""
+    converged active set (module docstring): one film solve, then two adjoint multigrid
+    solves (``method="adjoint"``) or one sparse LU (``"direct"``)."""
+    if method not in ("adjoint", "direct"):
+        raise CaseError(f"method = {method!r}: allowed 'adjoint' or 'direct'")
     problem = film._problem(state)
     pressure, _ = film._solve_pressure(problem, state)
     grid = film.film_grid
@@ -163,19 +176,41 @@ def linearise_reynolds(film, state: FilmState) -> FilmLinearisation:
     force = np.array([-np.sum(pressure * w_x), -np.sum(pressure * w_y)])
     jacobian = np.zeros((2, 4))
     if active.any():
-        matrix, nodes = _active_matrix(a_east, a_north, active)
-        rhs = np.empty((nodes[0].size, 4))
+        d_residuals = np.empty((4,) + pressure.shape)
         for column, (dh, dh_rate) in enumerate(_directions(film, state)):
             d_east, d_north, d_source = kernel.coefficient_derivatives(
                 problem.h, np.ascontiguousarray(dh), np.ascontiguousarray(dh_rate),
                 grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity)
-            d_residual = kernel.node_imbalance(pressure, d_east, d_north, d_source)
-            rhs[:, column] = -d_residual[nodes]
-        d_pressure = splu(matrix).solve(rhs)
-        jacobian[0] = -w_x[nodes] @ d_pressure
-        jacobian[1] = -w_y[nodes] @ d_pressure
+            d_residuals[column] = kernel.node_imbalance(pressure, d_east, d_north, d_source)
+        if method == "direct":
+            matrix, nodes = _active_matrix(a_east, a_north, active)
+            d_pressure = splu(matrix).solve(-d_residuals[:, nodes[0], nodes[1]].T)
+            jacobian[0] = -w_x[nodes] @ d_pressure
+            jacobian[1] = -w_y[nodes] @ d_pressure
+        else:
+            symmetric = film._symmetric and state.deformation is None
+            for row, weights in enumerate((w_x, w_y)):
+                adjoint = _adjoint(film, problem.h, weights, ~active, symmetric)
+                jacobian[row] = np.tensordot(d_residuals, adjoint * active, axes=2)
     return FilmLinearisation(force=force, stiffness=-jacobian[:, :2], damping=-jacobian[:, 2:],
                              speed=abs(omega_sum), clearance=film.geometry.radial_clearance)
+
+
+def _adjoint(film, h: np.ndarray, weights: np.ndarray, masked: np.ndarray,
+              symmetric: bool) -> np.ndarray:
+    """λ with K_AA λ = weights on the active nodes, λ = 0 on ``masked`` ones [m^-2]."""
+    from conrod.errors import ConvergenceError
+    from conrod.film import reynolds_multigrid as multigrid
+
+    adjoint = np.zeros(h.shape)
+    source = np.where(masked, 0.0, weights)
+    cycles, change = multigrid.solve_on_grid(
+        adjoint, h, source, masked, film.film_grid, -np.inf, ADJOINT_TOLERANCE,
+        film.max_iterations, symmetric)
+    if not change <= ADJOINT_TOLERANCE:
+        raise ConvergenceError(f"adjoint multigrid after {cycles} cycles",
+                               where="film sensitivities", residual=change)
+    return adjoint
 
 
 def linearise_by_differences(film, state: FilmState, relative_step: float = 1.0e-6

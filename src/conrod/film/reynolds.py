@@ -148,7 +148,7 @@ class ReynoldsFilm:
 
     def sensitivities(self, state: FilmState):
         """Force, stiffness K = −∂F/∂e [N/m] and damping C = −∂F/∂ė [N s/m] from one
-        solve and one sparse solve on the converged active set
+        solve and two adjoint solves on the converged active set
         (:func:`conrod.film.linearised.linearise_reynolds`)."""
         from conrod.film.linearised import linearise_reynolds
 
