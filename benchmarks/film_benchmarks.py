@@ -48,6 +48,8 @@ TOLERANCE = 1.0e-7
 REYNOLDS_TOLERANCES = (1.0e-7, 1.0e-10, 1.0e-12)
 """Tolerances of the Reynolds-versus-ROSS table [-]."""
 ROSS_REPEATS = 7
+ROUNDS = 3
+"""Interleaved rounds of the Reynolds-versus-ROSS table [-]."""
 ROSS_VENV = Path(__file__).with_name(".venv-ross")
 ROSS_SCRIPT = Path(__file__).with_name("ross_press_timing.py")
 ROSS_REQUIREMENT = "ross-rotordynamics>=3.1,<3.2"
@@ -291,22 +293,32 @@ def time_sensitivities() -> list[str]:
 
 
 def reynolds_versus_ross() -> list[str]:
-    """Markdown rows: conrod Reynolds at three tolerances and ROSS 3.1, grid by grid."""
+    """Markdown rows: conrod Reynolds at three tolerances and ROSS 3.1, grid by grid,
+    ROUNDS interleaved rounds (each cell: median over the rounds of the round medians)."""
     rows = ["| grid | tolerance | conrod solve() cold / warm [ms] | conrod force() cold / warm "
             "[ms] | ROSS 3.1 press [ms] | ROSS ÷ conrod solve(), cold / warm | W conrod / "
             "ROSS [N] |", "| --- | --- | ---: | ---: | ---: | ---: | --- |"]
-    for n_theta, n_z in GRIDS:
-        ross = time_ross(n_theta, n_z)
+    ross: dict = {}
+    conrod: dict = {}
+    for _ in range(ROUNDS):
+        for grid in GRIDS:
+            answer = time_ross(*grid)
+            ross.setdefault(grid, []).append(answer)
+            for tolerance in REYNOLDS_TOLERANCES:
+                conrod.setdefault((grid, tolerance), []).append(time_reynolds(*grid, tolerance))
+    for grid in GRIDS:
+        runs = [r for r in ross[grid] if not isinstance(r, str)]
         for tolerance in REYNOLDS_TOLERANCES:
-            r = time_reynolds(n_theta, n_z, tolerance)
-            if isinstance(ross, str):
-                ross_text, ratio, load = ross, "–", f"{r['force']:.0f} / –"
+            r = {key: float(np.median([run[key] for run in conrod[(grid, tolerance)]]))
+                 for key in conrod[(grid, tolerance)][0]}
+            if not runs:
+                ross_text, ratio, load = ross[grid][0], "–", f"{r['force']:.0f} / –"
             else:
-                ross_text = f"{1e3 * ross['median']:.2f}"
-                ratio = (f"{ross['median'] / r['solve_cold']:.1f}× / "
-                         f"{ross['median'] / r['solve_warm']:.1f}×")
-                load = f"{r['force']:.0f} / {ross['load']:.0f}"
-            rows.append(f"| {n_theta}×{n_z} | {tolerance:g} | {1e3 * r['solve_cold']:.3f} / "
+                median = float(np.median([run["median"] for run in runs]))
+                ross_text = f"{1e3 * median:.2f}"
+                ratio = f"{median / r['solve_cold']:.1f}× / {median / r['solve_warm']:.1f}×"
+                load = f"{r['force']:.0f} / {runs[0]['load']:.0f}"
+            rows.append(f"| {grid[0]}×{grid[1]} | {tolerance:g} | {1e3 * r['solve_cold']:.3f} / "
                         f"{1e3 * r['solve_warm']:.3f} | {1e3 * r['force_cold']:.3f} / "
                         f"{1e3 * r['force_warm']:.3f} | {ross_text} | {ratio} | {load} |")
             print(rows[-1], flush=True)
@@ -326,7 +338,8 @@ def markdown(rows: list[str], notes: list[str], versus: list[str]) -> str:
             "Cold = fresh model (nested-grid start), warm = the next 30 calls of a journal "
             "creeping by 0.002 rad per call. ROSS 3.1: `ross.bearings.fluid_film.pressure.press` "
             f"(finite elements, banded LU), median of {ROSS_REPEATS} solves at the same grid "
-            "(n_theta × n_z elements), one 360° land, ε = 0.6 held.", ""] + versus + [
+            "(n_theta × n_z elements), one 360° land, ε = 0.6 held. Grid by grid, ROSS then "
+            f"conrod, {ROUNDS} rounds; each cell is the median over the rounds.", ""] + versus + [
             "", f"## All film models (pressure tolerance {TOLERANCE:g})", "",
             "| model | grid | cold [ms] | cold sweeps | warm [ms] | warm sweeps | note |",
             "| --- | --- | ---: | ---: | ---: | ---: | --- |"]
