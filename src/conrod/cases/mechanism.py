@@ -8,9 +8,16 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import Field, ValidationInfo, field_validator
+from pydantic import Field, ValidationInfo, field_validator, model_validator
 
-from conrod.cases.base import Section
+from conrod.cases.base import Section, range_error
+
+MAX_RELATIVE_CLEARANCE = 0.1
+"""Largest diametral clearance / diameter of a joint (worn engine joints: < 0.01) [-]."""
+MAX_STEPS_PER_CYCLE = 1_000_000
+"""Integrator step budget per cycle of ``conrod mechanism`` (typical runs need 1e4–1e5) [-]."""
+MAX_OUTPUT_ROWS = 500_000
+"""Most sampled result rows over all cycles [-]."""
 
 
 class JointClearanceSection(Section):
@@ -54,6 +61,15 @@ class JointClearanceSection(Section):
                              "(a worn shell has Δmin <= Δmax)")
         return value
 
+    @field_validator("clearance_max")
+    @classmethod
+    def _small_against_diameter(cls, value: float, info: ValidationInfo) -> float:
+        diameter = info.data.get("diameter")
+        if diameter is not None and value > MAX_RELATIVE_CLEARANCE * diameter:
+            raise ValueError(f"must not exceed {MAX_RELATIVE_CLEARANCE:g} x diameter = "
+                             f"{MAX_RELATIVE_CLEARANCE * diameter:g} m")
+        return value
+
 
 class ClearanceSection(Section):
     """The two rod joints and the numerics of ``conrod mechanism``."""
@@ -95,3 +111,19 @@ class ClearanceSection(Section):
         default="auto",
         description="Joint diagnosed in the sweep; auto = the larger clearance_max/diameter [-]",
     )
+
+    @model_validator(mode="after")
+    def _within_budget(self) -> ClearanceSection:
+        """Result rows and the smallest possible step count within the budgets."""
+        rows = self.cycles * 720.0 / self.output_step_deg
+        if rows > MAX_OUTPUT_ROWS:
+            smallest = self.cycles * 720.0 / MAX_OUTPUT_ROWS
+            raise range_error("clearance.output_step_deg", self.output_step_deg,
+                              f">= {smallest:.3g} with cycles = {self.cycles} (budget "
+                              f"{MAX_OUTPUT_ROWS} rows)", "deg")
+        smallest_step = 720.0 / MAX_STEPS_PER_CYCLE
+        if self.max_step_deg < smallest_step:
+            raise range_error("clearance.max_step_deg", self.max_step_deg,
+                              f">= {smallest_step:.3g} (budget {MAX_STEPS_PER_CYCLE} steps "
+                              "per cycle)", "deg")
+        return self

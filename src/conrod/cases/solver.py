@@ -7,13 +7,23 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
-from conrod.cases.base import Section
+from conrod.cases.base import Section, range_error
 
 FilmName = Literal["short", "mobility", "reynolds", "mass_conserving", "table"]
 IntegratorName = Literal["adaptive", "rk2", "quasi_static"]
 AdaptiveMethod = Literal["Radau", "BDF", "LSODA"]
+
+LONGEST_CYCLE_DEG = 720.0
+"""Longest load cycle (four-stroke) [deg]; budgets assume it."""
+MAX_INTEGRATOR_STEPS = 2_000_000
+"""Step budget of a run: (cycle / step) × max_cycles of the step the integrator uses
+(rk2: step_deg, quasi_static: quasi_static_step_deg, adaptive: at least max_step_deg) [-]."""
+MAX_OUTPUT_POINTS = 100_000
+"""Most result rows per cycle (cycle / output_step_deg) [-]."""
+MAX_GRID_NODES = 300_000
+"""Most film grid nodes n_theta × (n_z + 1) [-]."""
 
 
 class SolverSection(Section):
@@ -86,3 +96,25 @@ class SolverSection(Section):
     thermal_tolerance: float = Field(
         default=0.5, gt=0.0, le=50.0, description="Heat-balance convergence on temperature [K]"
     )
+
+    @model_validator(mode="after")
+    def _within_budget(self) -> SolverSection:
+        """Steps, result rows and grid nodes within the budgets, refused before any run."""
+        step_name = {"rk2": "step_deg", "quasi_static": "quasi_static_step_deg",
+                     "adaptive": "max_step_deg"}[self.integrator]
+        step = getattr(self, step_name)
+        smallest = LONGEST_CYCLE_DEG * self.max_cycles / MAX_INTEGRATOR_STEPS
+        if step < smallest:
+            raise range_error(
+                f"solver.{step_name}", step, f">= {smallest:.3g} with max_cycles = "
+                f"{self.max_cycles} (budget {MAX_INTEGRATOR_STEPS} steps per run)", "deg")
+        smallest_output = LONGEST_CYCLE_DEG / MAX_OUTPUT_POINTS
+        if self.output_step_deg < smallest_output:
+            raise range_error("solver.output_step_deg", self.output_step_deg,
+                              f">= {smallest_output:.3g} (budget {MAX_OUTPUT_POINTS} rows "
+                              "per cycle)", "deg")
+        nodes = self.n_theta * (self.n_z + 1)
+        if nodes > MAX_GRID_NODES:
+            raise range_error("solver.n_theta x solver.n_z", f"{self.n_theta}x{self.n_z}",
+                              f"n_theta * (n_z + 1) <= {MAX_GRID_NODES} nodes", "")
+        return self

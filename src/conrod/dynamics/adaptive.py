@@ -167,13 +167,35 @@ def _solve_segment(rhs, phi, end, current, event, settings):
     ]
     for method in methods:
         sol = solve_ivp(
-            rhs, (phi, end), current, method=method, events=event, dense_output=True,
-            max_step=math.radians(settings.max_step_deg),
+            _budgeted(rhs, settings), (phi, end), current, method=method, events=event,
+            dense_output=True, max_step=math.radians(settings.max_step_deg),
             rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
         )
         if sol.status >= 0:
             return sol
     return sol
+
+
+EVALUATIONS_PER_MIN_STEP = 400
+"""Budget of film-force evaluations of one solve_ivp segment per step of max_step_deg
+over the cycle (a normal cycle needs ~15); a stiffer run fails instead of hanging [-]."""
+
+
+def _budgeted(rhs, settings):
+    """``rhs`` that raises ConvergenceError once it was called more than the budget."""
+    budget = EVALUATIONS_PER_MIN_STEP * math.ceil(720.0 / settings.max_step_deg)
+    calls = [0]
+
+    def counted(phi: float, u: np.ndarray) -> np.ndarray:
+        calls[0] += 1
+        if calls[0] > budget:
+            raise ConvergenceError(
+                f"adaptive orbit integration exceeded its budget of {budget} film "
+                "evaluations per cycle (stiff: check speed, viscosity and clearance)",
+                where=f"crank angle {math.degrees(phi):.2f} deg")
+        return rhs(phi, u)
+
+    return counted
 
 
 def _scaled(state: OrbitState, c: float, w: float, phases: _Phases) -> np.ndarray:

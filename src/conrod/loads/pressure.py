@@ -24,6 +24,7 @@ from conrod.cases.base import range_error
 from conrod.cases.case import Case
 from conrod.cases.engine import PressureModelSection
 from conrod.errors import CaseError
+from conrod.io.text import csv_data_lines, read_utf8
 from conrod.loads.kinematics import piston_displacement_series
 
 CYCLE = 4.0 * math.pi
@@ -186,19 +187,7 @@ def _trace_error(path: Path, line: int, message: str) -> CaseError:
 
 
 def _read_rows(path: Path) -> tuple[list[int], list[list[str]], dict[str, int]]:
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as error:
-        raise CaseError(
-            f"pressure trace {str(path)!r}: cannot be read ({error.strerror})"
-        ) from None
-    lines = [
-        (n, s)
-        for n, s in enumerate(text.splitlines(), start=1)
-        if s.strip() and not s.lstrip().startswith("#")
-    ]
-    if not lines:
-        raise CaseError(f"pressure trace {str(path)!r}: file is empty")
+    lines = csv_data_lines(read_utf8(path, "pressure trace"), path, "pressure trace")
     rows = list(csv.reader([s for _, s in lines]))
     header = {name.strip(): i for i, name in enumerate(rows[0])}
     for needed in ("crank_angle_deg", "pressure_Pa"):
