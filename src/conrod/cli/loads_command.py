@@ -16,6 +16,7 @@ import typer
 from conrod.cases.case import Case
 from conrod.cli.app import exits_cleanly
 from conrod.io.atomic import write_csv, write_json
+from conrod.io.result_folder import check_output_folder, staged_result_folder
 from conrod.loads.engine_loads import EngineLoads, compute_engine_loads
 
 LOADS_CSV_COLUMNS = (
@@ -58,12 +59,13 @@ def write_loads_outputs(loads: EngineLoads, out: Path) -> list[Path]:
         "load_vs_crank_angle.png": loads_plots.load_vs_crank_angle(loads),
         "wear_diagram.png": loads_plots.wear_diagram_figure(loads),
     }
-    written = [
-        write_csv(out / "loads.csv", loads_table(loads)),
-        write_json(out / "loads_summary.json", summary),
-    ]
-    written += [save_figure(figure, out / name) for name, figure in figures.items()]
-    return written
+    with staged_result_folder(out) as stage:
+        written = [
+            write_csv(stage / "loads.csv", loads_table(loads)),
+            write_json(stage / "loads_summary.json", summary),
+        ]
+        written += [save_figure(figure, stage / name) for name, figure in figures.items()]
+    return [out / path.name for path in written]
 
 
 def register(app: typer.Typer) -> None:
@@ -81,6 +83,7 @@ def register(app: typer.Typer) -> None:
         ] = 1.0,
     ) -> None:
         """Engine loads on the big-end bearing: table, summary, polar and wear diagrams."""
+        check_output_folder(out)
         case = Case.from_toml(case_file)
         case.require("loads", "engine", "bearing")
         loads = compute_engine_loads(case, step_deg=step)

@@ -22,6 +22,8 @@ from conrod.cases.case import Case
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
 from conrod.io.atomic import write_csv, write_json
+from conrod.io.interrupts import raise_if_interrupted
+from conrod.io.result_folder import check_output_folder, staged_result_folder
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults
 from conrod.mechanism.setup import MechanismCase, mechanism_case
 from conrod.mechanism.simulation import simulate
@@ -71,11 +73,12 @@ def write_run_outputs(results: MechanismResults, summary: dict, out: Path) -> No
     figures = {"gaps_and_forces.png": plots.plot_gaps_and_forces(results),
                "journal_orbits.png": plots.plot_journal_orbits(results),
                "impact_velocities.png": plots.plot_impacts(results)}
-    write_csv(out / "mechanism.csv", mechanism_table(results))
-    _write_impacts(out / "impacts.csv", impacts_table(results))
-    write_json(out / "summary.json", summary)
-    for name, figure in figures.items():
-        save_figure(figure, out / name)
+    with staged_result_folder(out) as stage:
+        write_csv(stage / "mechanism.csv", mechanism_table(results))
+        _write_impacts(stage / "impacts.csv", impacts_table(results))
+        write_json(stage / "summary.json", summary)
+        for name, figure in figures.items():
+            save_figure(figure, stage / name)
 
 
 def _write_impacts(path: Path, columns: dict[str, np.ndarray]) -> None:
@@ -88,6 +91,11 @@ def _write_impacts(path: Path, columns: dict[str, np.ndarray]) -> None:
                                           strict=True):
         lines.append(f"{angle:.6f},{JOINT_NAMES[int(joint)]},{speed:.9g},{cycle}")
     write_text(path, "\n".join(lines) + "\n")
+
+
+def _advance(bar) -> None:
+    raise_if_interrupted()
+    bar.update(1)
 
 
 def sweep_values(options: list[str], base: MechanismCase) -> tuple[np.ndarray, np.ndarray]:
@@ -113,10 +121,12 @@ def write_sweep_outputs(sweep: SweepResults, out: Path, seconds: float) -> dict:
 
     figure = plot_sweep_map(sweep)
     best = sweep.best()
-    write_csv(out / "sweep.csv", sweep.columns())
-    write_json(out / "sweep.json", {"most_informative_regime": best, "runs": int(sweep.ratio.size),
-                                    "wall_time_s": round(seconds, 2)})
-    save_figure(figure, out / "sweep_map.png")
+    with staged_result_folder(out) as stage:
+        write_csv(stage / "sweep.csv", sweep.columns())
+        write_json(stage / "sweep.json", {"most_informative_regime": best,
+                                          "runs": int(sweep.ratio.size),
+                                          "wall_time_s": round(seconds, 2)})
+        save_figure(figure, stage / "sweep_map.png")
     return best
 
 
@@ -136,6 +146,7 @@ def register(app: typer.Typer) -> None:
             "--jobs", min=1, help="Worker processes for --sweep (1 = in this process)")] = 1,
     ) -> None:
         """Slider-crank with clearances in both rod bearings: gaps, forces, impacts (seed 003)."""
+        check_output_folder(out)
         case = Case.from_toml(case_file)
         base = mechanism_case(case)
         if sweep:
@@ -143,7 +154,7 @@ def register(app: typer.Typer) -> None:
             started = time.perf_counter()
             with typer.progressbar(length=speeds.size * loads.size, label="sweep") as bar:
                 result = run_sweep(base, speeds, loads, jobs=jobs,
-                                   progress=lambda done, total: bar.update(1))
+                                   progress=lambda done, total: _advance(bar))
             best = write_sweep_outputs(result, out, time.perf_counter() - started)
             typer.echo(f"most informative regime: {best['speed_rpm']:g} rpm, load "
                        f"{best['load_scale']:g} (κ = {best['impact_velocity_ratio']:.3g}) -> {out}")

@@ -9,6 +9,7 @@ from typing import Annotated
 import typer
 
 from conrod.cli.app import exits_cleanly
+from conrod.io.interrupts import raise_if_interrupted
 
 PROGRESS_AFTER_S = 1.0
 """A progress bar appears on runs longer than this [s]."""
@@ -24,6 +25,7 @@ class _Progress:
         self.task = None
 
     def __call__(self, stage: str, cycle: int, error: float) -> None:
+        raise_if_interrupted()
         if self.bar is None and time.perf_counter() - self.start > PROGRESS_AFTER_S:
             from rich.console import Console
             from rich.progress import Progress
@@ -59,9 +61,11 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
         from conrod.cases.case import Case
+        from conrod.io.result_folder import check_output_folder
         from conrod.results.writers import write_run
         from conrod.simulation import Simulation
 
+        check_output_folder(out)
         case = Case.from_toml(case_file)
         overrides = dict(film=film, integrator=integrator, max_cycles=max_cycles,
                          step_deg=step_deg, **_grid(grid))

@@ -23,6 +23,7 @@ from conrod.dynamics.problem import OrbitProblem, OrbitState, load_table, period
 from conrod.dynamics.trajectory import CycleTrajectory
 from conrod.errors import ConvergenceError
 from conrod.film.short_bearing_kernel import short_bearing_force
+from conrod.io.interrupts import raise_if_interrupted
 
 FALLBACK_METHODS = ("Radau", "BDF", "LSODA")
 """Methods tried in turn when the chosen one fails on a segment (step-size collapse) [-]."""
@@ -188,6 +189,7 @@ def _budgeted(rhs, settings):
 
     def counted(phi: float, u: np.ndarray) -> np.ndarray:
         calls[0] += 1
+        raise_if_interrupted()
         if calls[0] > budget:
             raise ConvergenceError(
                 f"adaptive orbit integration exceeded its budget of {budget} film "

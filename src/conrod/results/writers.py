@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from conrod.io.atomic import write_csv, write_json
+from conrod.io.result_folder import staged_result_folder
 from conrod.results.cycle_results import RunResults
 
 CYCLE_COLUMNS = {
@@ -69,8 +70,14 @@ def summary_items(results: RunResults) -> dict:
 def write_run(
     results: RunResults, out_dir: str | os.PathLike[str], *, figures: bool = True
 ) -> list[Path]:
-    """Write cycle.csv, summary.json (and figures, and the contact files); return the paths."""
-    out = Path(out_dir)
+    """Write cycle.csv, summary.json (and figures, and the contact files) as one result set
+    (:func:`conrod.io.result_folder.staged_result_folder`); return the paths."""
+    with staged_result_folder(out_dir) as stage:
+        paths = _write_run_files(results, stage, figures)
+    return [Path(out_dir) / path.relative_to(stage) for path in paths]
+
+
+def _write_run_files(results: RunResults, out: Path, figures: bool) -> list[Path]:
     paths = [
         write_csv(out / "cycle.csv", cycle_table(results)),
         write_json(out / "summary.json", summary_items(results)),
