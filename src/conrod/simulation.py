@@ -31,6 +31,7 @@ from conrod.film.base import BearingGeometry, FilmModel, FilmState
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
 from conrod.results.cycle_results import CycleResults, RunResults
+from conrod.results.plausibility import check_run
 from conrod.results.summary import summarise
 
 DEFAULT_TABLE_LOAD_MASS = 1.0
@@ -132,6 +133,7 @@ class Simulation:
         _attach_pressure_map(results, problem, orbit[0].last.film_history)
         results.previous_cycle_eccentricity = _previous(orbit[0])
         results.contact = _contact_analysis(self.case, cycle)
+        summary.warnings += check_run(results, self.case)  # ConvergenceError if meaningless
         summary.wall_time = time.perf_counter() - start
         return results
 

@@ -103,9 +103,10 @@ class ClearanceSection(Section):
         default=1.0, ge=0.0, le=5.0, description="Factor on the gas pressure (load) [-]"
     )
     contact_geometry: Literal["seed", "exact"] = Field(
-        default="seed",
-        description="seed: penetration along the line of centres (seed 003); exact: "
-        "ellipse-circle contact along the contact normal [-]",
+        default="exact",
+        description="exact: ellipse-circle contact along the contact normal (free-play "
+        "region always convex); seed: penetration along the line of centres (seed 003), "
+        "whose free-play region turns non-convex on strongly worn shells (warned) [-]",
     )
     worn_joint: Literal["auto", "big_end", "small_end"] = Field(
         default="auto",

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import functools
 import importlib
+import os
 import sys
 from collections.abc import Callable
 from typing import Any, TypeVar
@@ -62,6 +63,14 @@ def exits_cleanly(command: F) -> F:
             typer.echo(f"error: cannot write the results ({reason}{where}); the output "
                        "folder is unchanged", err=True)
             raise typer.Exit(code=4) from None
+        except (typer.Exit, typer.Abort):
+            raise
+        except Exception as error:  # a bug: one line, the traceback only on request
+            if os.environ.get("CONROD_TRACEBACK"):
+                raise
+            typer.echo(f"internal error: {type(error).__name__}: {error} (a defect in conrod; "
+                       "set CONROD_TRACEBACK=1 to see where)", err=True)
+            raise typer.Exit(code=1) from None
 
     return wrapper  # type: ignore[return-value]
 

@@ -28,6 +28,7 @@ from conrod.mechanism.results import JOINT_NAMES, MechanismResults
 from conrod.mechanism.setup import MechanismCase, mechanism_case
 from conrod.mechanism.simulation import simulate
 from conrod.mechanism.sweep import SweepResults, parse_sweep_option, run_sweep
+from conrod.results.plausibility import check_mechanism
 
 SWEEP_LIMITS = {"speed": (0.0, 30000.0, "rpm"), "load": (0.0, 5.0, "-")}
 """Allowed (exclusive lower, inclusive upper) bounds of swept values and their unit."""
@@ -161,9 +162,11 @@ def register(app: typer.Typer) -> None:
             return
         results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)
         summary = {"speed_rpm": base.speed_rpm, "load_scale": base.load_scale,
-                   **results.summary()}
+                   **results.summary(), "warnings": check_mechanism(results, base.mechanism)}
         write_run_outputs(results, summary, out)
         typer.echo(
             f"{summary['impacts_per_cycle']} impacts/cycle; max impact velocity big end "
             f"{summary['max_impact_velocity_big_end_m_s']:.3g} m/s, small end "
             f"{summary['max_impact_velocity_small_end_m_s']:.3g} m/s -> {out}")
+        for warning in summary["warnings"]:
+            typer.echo(f"warning: {warning}", err=True)
