@@ -48,3 +48,7 @@ class NonFiniteResultError(ConvergenceError, ValueError):
     A :class:`ConvergenceError` (the CLI exits with code 3) and a ``ValueError`` (what
     ``json.dumps(allow_nan=False)`` raises for the same fault).
     """
+
+
+class CacheWarning(UserWarning):
+    """An on-disk cache was corrupt (failed its checksum) and is being rebuilt."""

@@ -13,6 +13,7 @@ import functools
 import importlib
 import os
 import sys
+import warnings
 from collections.abc import Callable
 from typing import Any, TypeVar
 
@@ -89,8 +90,13 @@ def encoding_safe_streams() -> None:
             reconfigure(errors="replace")
 
 
+def _one_line_warning(message: Any, category: Any, *args: Any, **kwargs: Any) -> str:
+    return f"warning: {message}\n"
+
+
 def main() -> None:
     """Entry point of the ``conrod`` console script."""
     encoding_safe_streams()
+    warnings.formatwarning = _one_line_warning
     _register_commands()
     app()
