@@ -25,7 +25,7 @@ def cheap_table_run() -> dict:
     case = example_dict("flores2006_table_load")
     case["load"]["table"] = str(FLORES_TABLE)
     case["solver"] = {"film": "short", "integrator": "quasi_static",
-                      "quasi_static_step_deg": 2.0, "output_step_deg": 5.0, "max_cycles": 2,
+                      "quasi_static_step_deg": 2.5, "output_step_deg": 5.0, "max_cycles": 2,
                       "min_cycles": 1}
     return case
 
@@ -34,7 +34,7 @@ def cheap_engine_run() -> dict:
     """Passenger-car diesel at 2000 rpm, short film, quasi-static, coarse."""
     case = example_dict("passenger_car_diesel_2000rpm")
     case["solver"] = {**case.get("solver", {}), "film": "short", "integrator": "quasi_static",
-                      "quasi_static_step_deg": 2.0, "output_step_deg": 5.0, "max_cycles": 2,
+                      "quasi_static_step_deg": 2.5, "output_step_deg": 5.0, "max_cycles": 2,
                       "min_cycles": 1}
     return case
 

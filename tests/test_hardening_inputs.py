@@ -190,6 +190,13 @@ def test_non_numeric_cell_names_line_and_column(tmp_path):
         read_load_columns(path)
 
 
+def test_fixed_step_must_divide_the_output_step():
+    case = mutated(cheap_table_run(), ("solver", "quasi_static_step_deg"), 2.0)
+    assert _error(case) == ("solver.quasi_static_step_deg = 2.0: out of range (allowed: a "
+                            "divisor of solver.output_step_deg = 5 (output_step_deg / k, "
+                            "k = 1, 2, ...) deg)")
+
+
 def test_mechanism_case_from_toml_names_the_file(tmp_path):
     path = write_case(tmp_path, mutated(cheap_mechanism(), ("engine", "speed"), "3000"))
     with pytest.raises(CaseError) as info:

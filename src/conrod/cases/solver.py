@@ -108,6 +108,12 @@ class SolverSection(Section):
             raise range_error(
                 f"solver.{step_name}", step, f">= {smallest:.3g} with max_cycles = "
                 f"{self.max_cycles} (budget {MAX_INTEGRATOR_STEPS} steps per run)", "deg")
+        if self.integrator != "adaptive":
+            ratio = self.output_step_deg / step
+            if ratio < 1.0 - 1e-9 or abs(ratio - round(ratio)) > 1e-9 * ratio:
+                raise range_error(f"solver.{step_name}", step, "a divisor of "
+                                  f"solver.output_step_deg = {self.output_step_deg:g} "
+                                  "(output_step_deg / k, k = 1, 2, ...)", "deg")
         smallest_output = LONGEST_CYCLE_DEG / MAX_OUTPUT_POINTS
         if self.output_step_deg < smallest_output:
             raise range_error("solver.output_step_deg", self.output_step_deg,

@@ -33,7 +33,6 @@ Mechanism (``conrod mechanism``):
 from __future__ import annotations
 
 import math
-from dataclasses import fields
 from typing import Any
 
 import numpy as np
@@ -55,15 +54,14 @@ def _angle(crank_angle: np.ndarray, index: int) -> str:
 
 
 def check_finite(record: Any, crank_angle: np.ndarray, what: str) -> None:
-    """ConvergenceError naming the first non-finite array field of a dataclass ``record``."""
-    for item in fields(record):
-        values = getattr(record, item.name)
+    """ConvergenceError naming the first non-finite float array attribute of ``record``."""
+    for name, values in vars(record).items():
         if isinstance(values, np.ndarray) and values.dtype.kind == "f":
             bad = ~np.isfinite(values)
             if np.any(bad):
                 column = int(np.flatnonzero(bad.reshape(-1, bad.shape[-1]).any(axis=0))[0])
                 where = _angle(crank_angle, column) if column < crank_angle.size else ""
-                raise ConvergenceError(f"{what}: {item.name} is not finite", where=where)
+                raise ConvergenceError(f"{what}: {name} is not finite", where=where)
 
 
 def check_run(results: Any, case: Any) -> list[str]:
