@@ -177,6 +177,15 @@ def test_seed_convexity_agrees_with_the_convex_hull(ratio):
         hull_convex)
 
 
+@pytest.mark.parametrize("diameter, clearance_max", [(0.0478, 120e-6), (0.026, 30e-6),
+                                                      (0.2, 400e-6)])
+def test_seed_region_turns_non_convex_at_two_thirds(diameter, clearance_max):
+    """Independent answer: the outline r ≈ Δmax/2 cos²ϕ + Δmin/2 sin²ϕ of a thin
+    clearance is convex iff Δmin >= 2/3 Δmax (r² + 2r'² − r r'' at ϕ = π/2)."""
+    assert seed_free_play_is_convex(diameter, clearance_max, 0.67 * clearance_max)
+    assert not seed_free_play_is_convex(diameter, clearance_max, 0.66 * clearance_max)
+
+
 def test_seed_geometry_on_a_strongly_worn_shell_warns(tmp_path):
     case = cheap_mechanism()
     case["clearance"]["contact_geometry"] = "seed"
