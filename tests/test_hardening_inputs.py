@@ -202,3 +202,33 @@ def test_mechanism_case_from_toml_names_the_file(tmp_path):
     with pytest.raises(CaseError) as info:
         mechanism_case(Case.from_toml(path))
     assert str(info.value).startswith(f"case file {str(path)!r}: engine.speed = '3000'")
+
+
+# -- command-line options ---------------------------------------------------------------------
+STEADY = ["steady", "--load", "1e4", "--speed-rpm", "3000", "--viscosity", "0.01",
+          "--diameter", "0.05", "--width", "0.05"]
+
+
+@pytest.mark.parametrize("args, expected", [
+    (["steady", "--length-to-diameter", "1", "--eccentricity", "0.5", "--grid", "4096x4096"],
+     "error: grid = '4096x4096': out of range (allowed: NTHETA * (NZ + 1) <= 300000 nodes)"),
+    ([*STEADY, "--radial-clearance", "0.05"],
+     "error: radial_clearance = 0.05: out of range (allowed: <= 0.05 x diameter/2 = "
+     "0.00125 m)"),
+    ([*STEADY[:2], "inf", *STEADY[3:], "--radial-clearance", "5e-5"],
+     "error: load = inf: out of range (allowed: finite, > 0)"),
+    (["run", str(FLORES_TABLE.parents[1] / "flores2006_table_load.toml"), "--out", "unused",
+      "--grid", "2048x512", "--film", "reynolds"],
+     "error: solver.n_theta x solver.n_z = '2048x512': out of range (allowed: n_theta * "
+     "(n_z + 1) <= 300000 nodes)"),
+])
+def test_command_line_options_are_checked(tmp_path, monkeypatch, args, expected):
+    from typer.testing import CliRunner
+
+    from conrod.cli.app import _register_commands, app
+
+    _register_commands()
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2
+    assert result.output.strip() == expected
