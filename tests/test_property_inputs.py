@@ -75,8 +75,8 @@ NASTY = st.one_of(
     st.just({}), st.dictionaries(st.sampled_from(["a", "width"]), st.floats(0, 1), max_size=2),
     st.lists(st.floats(0, 1), max_size=2), st.just(DELETE))
 """Values of any type, as a careless or hurried user might write them."""
-SCALE = st.sampled_from([0.0, -1.0, 1e-12, 1e-6, 1e-3, 0.1, 0.5, 0.8, 0.99, 1.01, 1.25, 2.0,
-                         10.0, 1e3, 1e6, 1e12])
+SCALE = st.sampled_from([0.0, -1.0, 1e-12, 1e-6, 1e-3, 0.1, 0.3, 0.5, 0.7, 0.8, 0.9, 0.99,
+                         1.01, 1.1, 1.25, 1.5, 2.0, 3.0, 10.0, 1e3, 1e6, 1e12])
 """Factors that turn a valid number into an extreme but well-typed one."""
 
 

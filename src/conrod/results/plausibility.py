@@ -24,7 +24,10 @@ Mechanism (``conrod mechanism``):
 * impact velocity above the crank-pin surface speed ω D/2 → warning (a clearance-joint
   impact is driven by the relative motion of the rod and the crank, whose scale is that
   speed);
-* contact force above :data:`MECHANISM_FORCE_LIMIT` → warning;
+* contact force above :data:`MECHANISM_FORCE_LIMIT`, or above
+  :data:`MECHANISM_FORCE_FACTOR` × (peak gas force + inertia force) → warning;
+* exact geometry on a shell whose curvature radius at the major vertex b²/a is below the
+  journal radius (two-point contact, modelled by the deeper point) → warning;
 * penetration deeper than :data:`PENETRATION_SHARE` of the joint's smallest radial
   clearance → warning;
 * ``contact_geometry = "seed"`` with a non-convex free-play region → warning.
@@ -47,6 +50,9 @@ CONTACT_FORCE_ERROR_FACTOR = 100.0
 """Contact force / peak bearing load above which a run is meaningless [-]."""
 MECHANISM_FORCE_LIMIT = 1.0e6
 """Joint contact force above which a mechanism run is flagged [N]."""
+MECHANISM_FORCE_FACTOR = 10.0
+"""Joint contact force / (peak gas force + peak inertia force m R ω²) above which a
+mechanism run is flagged (impact peaks exceed the load, but not tenfold) [-]."""
 
 
 def _angle(crank_angle: np.ndarray, index: int) -> str:
@@ -128,6 +134,18 @@ def _roughness_warnings(cycle: Any, case: Any) -> list[str]:
             "contact: asperities touch (consider [contact] model = \"greenwood_tripp\")"]
 
 
+def _mechanism_load_scale(results: Any, mechanism: Any) -> float:
+    """Peak gas force plus the inertia scale (m_piston + m_rod) R ω² [N]."""
+    crank = getattr(mechanism, "crank", None)
+    inertia = 0.0
+    if crank is not None and hasattr(crank, "piston_mass"):
+        inertia = (crank.piston_mass + crank.rod_mass) * crank.crank_radius * (
+            crank.crank_speed**2)
+    gas = getattr(results, "gas_force", None)
+    peak_gas = float(np.max(np.abs(gas))) if gas is not None and np.size(gas) else 0.0
+    return max(peak_gas + inertia, 1e-300)
+
+
 def check_mechanism(results: Any, mechanism: Any) -> list[str]:
     """Warnings for a clearance-mechanism run (``MechanismResults``, ``Mechanism``)."""
     from conrod.mechanism.geometry import seed_free_play_is_convex
@@ -144,14 +162,24 @@ def check_mechanism(results: Any, mechanism: Any) -> list[str]:
             warnings.append(f"{name}: impact velocity {float(speeds.max()):.3g} m/s is above "
                             f"the crank-pin surface speed {surface_speed:.3g} m/s")
         force = float(np.max(results.contact_force[index]))
+        load = _mechanism_load_scale(results, mechanism)
         if force > MECHANISM_FORCE_LIMIT:
             warnings.append(f"{name}: contact force {force:.3g} N is above "
                             f"{MECHANISM_FORCE_LIMIT:.0e} N")
+        elif force > MECHANISM_FORCE_FACTOR * load:
+            warnings.append(f"{name}: contact force {force:.3g} N is {force / load:.3g} x the "
+                            f"peak gas plus inertia force {load:.3g} N")
         depth = float(np.max(-results.gap[index]))
         if depth > PENETRATION_SHARE * joint.radial_clearance_min:
             warnings.append(f"{name}: penetration {depth:.3g} m is more than "
                             f"{PENETRATION_SHARE:g} of the radial clearance "
                             f"{joint.radial_clearance_min:.3g} m")
+        major, minor = 0.5 * (joint.diameter + joint.clearance_max), 0.5 * (
+            joint.diameter + joint.clearance_min)
+        if mechanism.contact_geometry == "exact" and minor**2 / major < 0.5 * joint.diameter:
+            warnings.append(f"{name}: the worn shell's curvature radius at the major vertex "
+                            f"b²/a = {minor**2 / major:.4g} m is below the journal radius: "
+                            "two-point contact is modelled by the deeper point only")
         if mechanism.contact_geometry == "seed" and not seed_free_play_is_convex(
                 joint.diameter, joint.clearance_max, joint.clearance_min):
             warnings.append(f"{name}: the seed contact geometry makes the free-play region "
