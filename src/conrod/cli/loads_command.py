@@ -59,7 +59,7 @@ def write_loads_outputs(loads: EngineLoads, out: Path) -> list[Path]:
         "load_vs_crank_angle.png": loads_plots.load_vs_crank_angle(loads),
         "wear_diagram.png": loads_plots.wear_diagram_figure(loads),
     }
-    with staged_result_folder(out) as stage:
+    with staged_result_folder(out, manifest=False) as stage:  # always these five files
         written = [
             write_csv(stage / "loads.csv", loads_table(loads)),
             write_json(stage / "loads_summary.json", summary),

@@ -9,8 +9,9 @@ complete new one, never a mix, never a half-written or temporary file.
 
 ``stage`` is a hidden sibling folder of ``out`` (same file system). When the block ends
 without an exception, a ``manifest.json`` (name, size and SHA-256 of every result file) is
-added, files of ``out`` that belong to no earlier result (no manifest lists them) are
-carried over by hard link, and the stage is swapped in: one atomic exchange of the two
+added (unless the command writes a fixed set of files), files of ``out`` that belong to no
+earlier result (no manifest lists them, the new result does not replace them) are carried
+over by hard link, and the stage is swapped in: one atomic exchange of the two
 folders (Linux ``renameat2(RENAME_EXCHANGE)``), or two renames elsewhere. On an exception
 (or a kill) ``out`` is untouched; a stage left behind by a killed process is removed by the
 next run that writes next to it.
@@ -68,8 +69,13 @@ def check_output_folder(out: str | os.PathLike[str], option: str = "--out") -> P
 
 
 @contextlib.contextmanager
-def staged_result_folder(out: str | os.PathLike[str]) -> Iterator[Path]:
-    """Yield an empty staging folder; swap it in as ``out`` when the block succeeds."""
+def staged_result_folder(out: str | os.PathLike[str], *, manifest: bool = True
+                         ) -> Iterator[Path]:
+    """Yield an empty staging folder; swap it in as ``out`` when the block succeeds.
+
+    manifest : bool  Add ``manifest.json`` (a command whose result is always the same
+        fixed set of files may leave it out; the set is still swapped in as a whole).
+    """
     target = Path(out).absolute()
     target.parent.mkdir(parents=True, exist_ok=True)
     _remove_abandoned_stages(target)
@@ -77,7 +83,8 @@ def staged_result_folder(out: str | os.PathLike[str]) -> Iterator[Path]:
                                   dir=target.parent))
     try:
         yield stage
-        _write_manifest(stage)
+        if manifest:
+            _write_manifest(stage)
         if target.is_dir():
             _carry_over_foreign_files(target, stage)
         _swap_in(stage, target)
