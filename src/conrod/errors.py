@@ -40,3 +40,15 @@ class ConvergenceError(ConrodError, RuntimeError):
         if residual == residual:  # not NaN
             detail += f" (residual {residual:.3g})"
         super().__init__(detail)
+
+
+class NonFiniteResultError(ConvergenceError, ValueError):
+    """A result holds NaN or infinity where only finite numbers may be written.
+
+    A :class:`ConvergenceError` (the CLI exits with code 3) and a ``ValueError`` (what
+    ``json.dumps(allow_nan=False)`` raises for the same fault).
+    """
+
+
+class CacheWarning(UserWarning):
+    """An on-disk cache was corrupt (failed its checksum) and is being rebuilt."""

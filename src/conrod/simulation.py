@@ -36,6 +36,7 @@ from conrod.orbit.integrators import Integrator
 from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
 from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
+from conrod.results.plausibility import check_run
 from conrod.results.summary import summarise
 
 DEFAULT_TABLE_LOAD_MASS = 1.0
@@ -141,7 +142,7 @@ class Simulation:
             self.film_model(), self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, self.solver.contact_film_thickness,
             _asperity_parameters(self.case),
-)
+        )
 
     # -- run --------------------------------------------------------------------------
     def run(self, progress: ProgressCallback | None = None) -> RunResults:
@@ -157,13 +158,14 @@ class Simulation:
             pressure_at_p_max=pressure, pressure_grid=grid,
             previous_cycle_eccentricity=_previous(orbit),
             contact=analyse_contact(self.case, cycle),
-)
+        )
+        warnings = summary.warnings + tuple(check_run(results, self.case))  # or ConvergenceError
         wall_time = time.perf_counter() - start
-        return dataclasses.replace(results,
-                                   summary=dataclasses.replace(summary, wall_time=wall_time))
+        summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)
+        return dataclasses.replace(results, summary=summary)
 
     def _thermal_orbit(self, problem: OrbitProblem, progress: ProgressCallback | None
-) -> _ThermalOrbit:
+    ) -> _ThermalOrbit:
         """Orbit, its characteristics and the effective temperature, iterated when μ
         depends on T (heat balance); the characteristics are solved once per orbit."""
         lubricant, s = self._lubricant, self.solver
@@ -232,7 +234,7 @@ def _heat_balance_temperature(cycle: CycleResults, lubricant) -> float | None:
     return effective_temperature(
         float(cycle.friction_power.mean()), float(cycle.side_flow.mean()),
         lubricant.supply_temperature, lubricant.density, lubricant.specific_heat,
-)
+    )
 
 
 def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None = None):
@@ -244,7 +246,7 @@ def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list 
         float(cycle.eccentricity_x[i]), float(cycle.eccentricity_y[i]),
         float(cycle.velocity_x[i]), float(cycle.velocity_y[i]),
         float(cycle.journal_speed[i]), float(cycle.shell_speed[i]), problem.viscosity,
-)
+    )
     session = problem.session(film_memory[i] if film_memory else None)
     field = session.solve(state, with_pressure=True).pressure
     if field is None:

@@ -18,9 +18,13 @@ from conrod.errors import CaseError
 
 
 class Section(BaseModel):
-    """A case-file section: unknown keys are errors, values are validated on assignment."""
+    """A case-file section in strict mode: unknown keys are errors, numbers must be numbers
+    (no ``true`` for 1, no ``"0.02"`` for 0.02), integers integers, NaN and infinity are
+    refused; values are validated on assignment."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+    model_config = ConfigDict(
+        extra="forbid", frozen=True, validate_default=True, strict=True, allow_inf_nan=False
+    )
 
 
 _UNIT = re.compile(r"\[([^\]]*)\]")
@@ -73,12 +77,43 @@ def _first_model(annotation: Any) -> type[BaseModel] | None:
     return None
 
 
+_TYPE_HINTS = {
+    "float_type": "a number is required (not text, not true/false)",
+    "int_type": "a whole number is required (not text, not true/false, no decimals)",
+    "string_type": "text in quotes is required",
+    "bool_type": "true or false is required",
+    "list_type": "a list [ ... ] is required",
+    "model_type": "a section (table) is required",
+    "dict_type": "a section (table) is required",
+    "finite_number": "a finite number is required (not nan or inf)",
+    "string_too_short": "must not be empty",
+}
+"""Plain wording of pydantic's type errors (what the case file must hold instead)."""
+
+
+def _shown(value: Any) -> str:
+    """The offending value as written, shortened to keep the message on one line."""
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _dotted(prefix: str, loc: tuple[Any, ...]) -> str:
+    """'bearing.grooves[0].width' from a pydantic location."""
+    text = prefix
+    for part in loc:
+        if isinstance(part, int):
+            text += f"[{part}]"
+        else:
+            text += ("." if text else "") + str(part)
+    return text
+
+
 def _describe(root: type[BaseModel], error: Any, prefix: str) -> str:
-    loc = tuple(p for p in error["loc"] if not isinstance(p, int) or True)
-    dotted = ".".join(str(p) for p in (prefix, *loc) if p != "")
+    loc = tuple(p for p in error["loc"] if not str(p).startswith(("function-", "lax-")))
+    dotted = _dotted(prefix, loc)
     value = error.get("input")
     kind = error["type"]
-    model, name = _resolve_model(root, loc)
+    model, name = _resolve_model(root, tuple(p for p in loc if not isinstance(p, int)))
     if kind == "extra_forbidden":
         valid = sorted(model.model_fields)
         hint = difflib.get_close_matches(name, valid, n=1, cutoff=0.5)
@@ -91,11 +126,12 @@ def _describe(root: type[BaseModel], error: Any, prefix: str) -> str:
         unit = field_unit(model, name)
         return f"{dotted}: required field is missing" + (f" [{unit}]" if unit else "")
     text = str(error["msg"]).removeprefix("Value error, ")
-    if isinstance(value, dict):  # a section-level (cross-field) check: its text says it all
+    if kind == "value_error" and isinstance(value, dict):  # a cross-field check: says it all
         return text
+    text = _TYPE_HINTS.get(kind, text)
     unit = field_unit(model, name)
     allowed = field_range(model, name)
-    message = f"{dotted} = {value!r}: {text}"
+    message = f"{dotted or 'case'} = {_shown(value)}: {text}"
     if allowed:
         message += f" (allowed: {allowed}" + (f" {unit}" if unit else "") + ")"
     elif unit:

@@ -23,10 +23,14 @@ from __future__ import annotations
 
 import math
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from conrod.cases.base import Section, range_error
 from conrod.film.base import BearingGeometry, FeedHole, Groove
+
+MAX_RELATIVE_CLEARANCE = 0.05
+"""Largest radial clearance / journal radius c/R: thin-film (Reynolds) theory needs c ≪ R
+(engine bearings: 0.0005–0.003) [-]."""
 
 
 class GrooveSection(Section):
@@ -78,11 +82,24 @@ class BearingSection(Section):
     feed_holes: list[FeedHoleSection] = Field(default_factory=list,
                                               description="Oil-feed holes in the shell [-]")
 
+    @model_validator(mode="after")
+    def _consistent(self) -> BearingSection:
+        """Clearance thin against the radius (features: :meth:`check_features_inside_width`,
+        called for the whole case by :func:`conrod.cases.rules.check_case`)."""
+        radius = 0.5 * self.diameter
+        if self.radial_clearance is not None:
+            largest = MAX_RELATIVE_CLEARANCE * radius
+            if self.radial_clearance > largest:
+                raise range_error("bearing.radial_clearance", self.radial_clearance,
+                                  f"> 0 and <= {MAX_RELATIVE_CLEARANCE:g} x journal radius "
+                                  f"= {largest:g}", "m")
+        return self
+
     def geometry(self) -> BearingGeometry:
         """SI :class:`BearingGeometry` with the supply features (needs the clearance)."""
         if self.radial_clearance is None:
             raise range_error("bearing.radial_clearance", None, "> 0", "m")
-        self._check_features_inside_width()
+        self.check_features_inside_width()
         return BearingGeometry(
             diameter=self.diameter, width=self.width, radial_clearance=self.radial_clearance,
             grooves=tuple(g.to_groove() for g in self.grooves),
@@ -91,12 +108,24 @@ class BearingSection(Section):
             cavitation_pressure=self.cavitation_pressure,
 )
 
-    def _check_features_inside_width(self) -> None:
+    def check_features_inside_width(self) -> None:
+        """Every groove and hole lies inside the width and leaves a land on both sides."""
         half = 0.5 * self.width
-        allowed = f">= {-half:g} and <= {half:g}"
-        positions = [(f"grooves[{k}]", g.axial_position) for k, g in enumerate(self.grooves)]
-        positions += [(f"feed_holes[{k}]", h.axial_position)
-                      for k, h in enumerate(self.feed_holes)]
-        for name, position in positions:
-            if abs(position) > half:
-                raise range_error(f"bearing.{name}.axial_position", position, allowed, "m")
+        features = [(f"grooves[{k}]", g.axial_position, g.width, "width")
+                    for k, g in enumerate(self.grooves)]
+        features += [(f"feed_holes[{k}]", h.axial_position, h.diameter, "diameter")
+                     for k, h in enumerate(self.feed_holes)]
+        for name, position, size, size_name in features:
+            if size >= self.width:
+                raise range_error(f"bearing.{name}.{size_name}", size,
+                                  f"> 0 and < bearing.width = {self.width:g}", "m")
+            reach = half - 0.5 * size
+            if abs(position) >= reach:
+                raise range_error(f"bearing.{name}.axial_position", position,
+                                  f"> {-reach:g} and < {reach:g} (the {size_name} "
+                                  f"{size:g} m inside the bearing width {self.width:g} m)", "m")
+        for k, hole in enumerate(self.feed_holes):
+            if hole.diameter >= 0.5 * math.pi * self.diameter:
+                raise range_error(f"bearing.feed_holes[{k}].diameter", hole.diameter,
+                                  f"< half the journal circumference "
+                                  f"{0.5 * math.pi * self.diameter:g}", "m")

@@ -25,15 +25,19 @@ from conrod.cases.housing import HousingSection
 from conrod.cases.load import LoadTableSection
 from conrod.cases.lubricant import LubricantSection
 from conrod.cases.mechanism import ClearanceSection
+from conrod.cases.rules import check_case
 from conrod.cases.solver import SolverSection
 from conrod.errors import CaseError
+from conrod.io.text import read_utf8
 
 
 class Case(Section):
     """A whole case file. Sections are optional here; each command says which it needs."""
 
-    title: str = Field(default="", description="Free text shown on reports [-]")
-    source: str = Field(default="", description="Citation of where the numbers come from [-]")
+    title: str | None = Field(default=None, min_length=1,
+                              description="Free text shown on reports [-]")
+    source: str | None = Field(default=None, min_length=1,
+                               description="Citation of where the numbers come from [-]")
     engine: EngineSection | None = None
     bearing: BearingSection | None = None
     lubricant: LubricantSection | None = None
@@ -51,6 +55,11 @@ class Case(Section):
             self.housing.rod_geometry(self.bearing.diameter, rod_length)
         return self
 
+    @model_validator(mode="after")
+    def _cross_section_rules(self) -> Case:
+        check_case(self)
+        return self
+
     _base_dir: Path = PrivateAttr(default_factory=Path.cwd)
     _path: Path | None = PrivateAttr(default=None)
 
@@ -58,15 +67,17 @@ class Case(Section):
     def from_toml(cls, path: str | os.PathLike[str]) -> Case:
         """Read and validate a case file; raise :class:`CaseError` on any problem."""
         path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as error:
-            raise CaseError(f"case file {str(path)!r}: cannot be read ({error.strerror})") from None
+        text = read_utf8(path, "case file")
         try:
             data = tomllib.loads(text)
         except tomllib.TOMLDecodeError as error:
             raise CaseError(f"case file {str(path)!r}: not valid TOML ({error})") from None
-        return cls.from_dict(data, base_dir=path.resolve().parent, path=path)
+        try:
+            return cls.from_dict(data, base_dir=path.resolve().parent, path=path)
+        except CaseError as error:
+            lines = str(error).splitlines()
+            raise CaseError("\n".join(f"case file {str(path)!r}: {line}" for line in lines)
+                            ) from None
 
     @classmethod
     def from_dict(

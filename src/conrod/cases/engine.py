@@ -52,7 +52,7 @@ class EngineSection(Section):
         "three-mass rod model when given",
 )
     pressure_trace: Path | None = Field(
-        default=None,
+        default=None, strict=False,
         description="CSV file with columns crank_angle_deg, pressure_Pa (absolute) over 0..720 [-]",
 )
     pressure_model: PressureModelSection | None = None

@@ -18,7 +18,9 @@ from conrod.cases.base import Section
 class LoadTableSection(Section):
     """Load diagram in the bearing frame read from CSV."""
 
-    table: Path = Field(description="CSV with columns crank_angle_deg, load_x_N, load_y_N [-]")
+    table: Path = Field(
+        strict=False, description="CSV with columns crank_angle_deg, load_x_N, load_y_N [-]"
+    )
     speed: float = Field(
         gt=0.0, le=30000.0, description="Crank speed n mapping angle to time [rpm]"
 )

@@ -7,12 +7,22 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
-from conrod.cases.base import Section
+from conrod.cases.base import Section, range_error
 from conrod.registry import FilmName, IntegratorName
 
 AdaptiveMethod = Literal["Radau", "BDF", "LSODA"]
+
+LONGEST_CYCLE_DEG = 720.0
+"""Longest load cycle (four-stroke) [deg]; budgets assume it."""
+MAX_INTEGRATOR_STEPS = 2_000_000
+"""Step budget of a run: (cycle / step) × max_cycles of the step the integrator uses
+(rk2: step_deg, quasi_static: quasi_static_step_deg, adaptive: at least max_step_deg) [-]."""
+MAX_OUTPUT_POINTS = 100_000
+"""Most result rows per cycle (cycle / output_step_deg) [-]."""
+MAX_GRID_NODES = 300_000
+"""Most film grid nodes n_theta × (n_z + 1) [-]."""
 
 
 class SolverSection(Section):
@@ -23,65 +33,93 @@ class SolverSection(Section):
         default="adaptive",
         description="adaptive (implicit, error-controlled), rk2 ([D0] fixed step) "
         "or quasi_static (massless mobility) [-]",
-)
+    )
     adaptive_method: AdaptiveMethod = Field(
         default="Radau", description="scipy solve_ivp method of the adaptive integrator [-]"
-)
+    )
     max_step_deg: float = Field(
         default=1.0, gt=0.0, le=1.0, description="Largest step of the adaptive integrator [deg]"
-)
+    )
     step_deg: float = Field(
         default=0.01, gt=0.0, le=5.0,
         description="Fixed step of rk2 and quasi_static [deg] (rk2 needs a small one: stiff film)",
-)
+    )
     quasi_static_step_deg: float = Field(
         default=0.5, gt=0.0, le=5.0, description="Fixed step of the quasi_static integrator [deg]"
-)
+    )
     relative_tolerance: float = Field(
         default=1.0e-6, gt=0.0, le=1.0e-2, description="Relative tolerance (adaptive) [-]"
-)
+    )
     absolute_tolerance: float = Field(
         default=1.0e-4, gt=0.0, le=1.0,
         description="Absolute tolerance on position/c and velocity/(c ω) (adaptive) [-]",
-)
+    )
     output_step_deg: float = Field(
         default=1.0, gt=0.0, le=10.0, description="Crank-angle spacing of the results [deg]"
-)
+    )
     max_cycles: int = Field(default=8, ge=1, le=200, description="Most cycles to integrate [-]")
     min_cycles: int = Field(default=2, ge=1, le=200, description="Fewest cycles to integrate [-]")
     periodicity_tolerance: float = Field(
         default=1.0e-3, gt=0.0, le=1.0,
         description="Periodic when max |e_k − e_(k−1)|/c at equal angles is below this [-]",
-)
+    )
     film_tolerance: float = Field(
         default=1.0e-12, gt=0.0, le=1.0e-3,
         description="Iteration tolerance of grid films in the orbit; tight, because the "
         "implicit integrator differentiates the film force with ~1e-8 steps [-]",
-)
+    )
     n_theta: int = Field(
         default=72, ge=8, le=2048, multiple_of=2,
         description="Circumferential grid intervals (= nodes, periodic), even [-]",
-)
+    )
     n_z: int = Field(
         default=16, ge=4, le=512, multiple_of=2,
         description="Axial grid intervals (n_z + 1 nodes), even [-]",
-)
+    )
     mass_x: float | None = Field(
         default=None, gt=0.0, le=1.0e5,
         description="Moving mass along film x (rod axis for a big end) [kg]",
-)
+    )
     mass_y: float | None = Field(
         default=None, gt=0.0, le=1.0e5, description="Moving mass along film y [kg]"
-)
+    )
     contact_film_thickness: float = Field(
         default=0.0, ge=0.0, le=1.0e-4,
         description="Film thickness at which hard contact starts (contact circle radius "
         "c − this) [m]",
-)
+    )
     thermal_iterations: int = Field(
         default=6, ge=0, le=50,
         description="Most heat-balance iterations (0: viscosity at supply temperature) [-]",
-)
+    )
     thermal_tolerance: float = Field(
         default=0.5, gt=0.0, le=50.0, description="Heat-balance convergence on temperature [K]"
-)
+    )
+
+    @model_validator(mode="after")
+    def _within_budget(self) -> SolverSection:
+        """Steps, result rows and grid nodes within the budgets, refused before any run."""
+        step_name = {"rk2": "step_deg", "quasi_static": "quasi_static_step_deg",
+                     "adaptive": "max_step_deg"}[self.integrator]
+        step = getattr(self, step_name)
+        smallest = LONGEST_CYCLE_DEG * self.max_cycles / MAX_INTEGRATOR_STEPS
+        if step < smallest:
+            raise range_error(
+                f"solver.{step_name}", step, f">= {smallest:.3g} with max_cycles = "
+                f"{self.max_cycles} (budget {MAX_INTEGRATOR_STEPS} steps per run)", "deg")
+        if self.integrator != "adaptive":
+            ratio = self.output_step_deg / step
+            if ratio < 1.0 - 1e-9 or abs(ratio - round(ratio)) > 1e-9 * ratio:
+                raise range_error(f"solver.{step_name}", step, "a divisor of "
+                                  f"solver.output_step_deg = {self.output_step_deg:g} "
+                                  "(output_step_deg / k, k = 1, 2, ...)", "deg")
+        smallest_output = LONGEST_CYCLE_DEG / MAX_OUTPUT_POINTS
+        if self.output_step_deg < smallest_output:
+            raise range_error("solver.output_step_deg", self.output_step_deg,
+                              f">= {smallest_output:.3g} (budget {MAX_OUTPUT_POINTS} rows "
+                              "per cycle)", "deg")
+        nodes = self.n_theta * (self.n_z + 1)
+        if nodes > MAX_GRID_NODES:
+            raise range_error("solver.n_theta x solver.n_z", f"{self.n_theta}x{self.n_z}",
+                              f"n_theta * (n_z + 1) <= {MAX_GRID_NODES} nodes", "")
+        return self

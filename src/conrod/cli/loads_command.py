@@ -14,6 +14,7 @@ import typer
 
 from conrod.cases.case import Case
 from conrod.cli.app import exits_cleanly
+from conrod.io.result_folder import check_output_folder
 from conrod.loads.engine_loads import compute_engine_loads
 
 
@@ -30,8 +31,9 @@ def register(app: typer.Typer) -> None:
         step: Annotated[
             float, typer.Option("--step", help="Crank-angle step [deg]; divides 720")
         ] = 1.0,
-) -> None:
+    ) -> None:
         """Engine loads on the big-end bearing: table, summary, polar and wear diagrams."""
+        check_output_folder(out)
         case = Case.from_toml(case_file)
         case.require("loads", "engine", "bearing")
         loads = compute_engine_loads(case, step_deg=step)
@@ -42,7 +44,7 @@ def register(app: typer.Typer) -> None:
             f"{summary['peak_load_crank_angle_deg']:.1f} deg, "
             f"mean {summary['mean_load_N'] / 1e3:.2f} kN, "
             f"oil hole at {summary['oil_hole_angle_deg']:.1f} deg -> {out}"
-)
+        )
 
 
 def _write(loads, out: Path) -> None:

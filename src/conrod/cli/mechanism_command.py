@@ -21,10 +21,13 @@ from conrod.cases.base import range_error
 from conrod.cases.case import Case
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
+from conrod.io.interrupts import raise_if_interrupted
+from conrod.io.result_folder import check_output_folder
 from conrod.mechanism.results import MechanismRun
 from conrod.mechanism.setup import MechanismCase, mechanism_case
 from conrod.mechanism.simulation import simulate
 from conrod.mechanism.sweep import SweepRun, parse_sweep_option, run_sweep
+from conrod.results.plausibility import check_mechanism
 
 SWEEP_LIMITS = {"speed": (0.0, 30000.0, "rpm"), "load": (0.0, 5.0, "-")}
 """Allowed (exclusive lower, inclusive upper) bounds of swept values and their unit."""
@@ -60,8 +63,9 @@ def register(app: typer.Typer) -> None:
             "repeatable")] = None,
         jobs: Annotated[int, typer.Option(
             "--jobs", min=1, help="Worker processes for --sweep (1 = in this process)")] = 1,
-) -> None:
+    ) -> None:
         """Slider-crank with clearances in both rod bearings: gaps, forces, impacts ([D3])."""
+        check_output_folder(out)
         case = Case.from_toml(case_file)
         base = mechanism_case(case)
         if sweep:
@@ -69,7 +73,7 @@ def register(app: typer.Typer) -> None:
             started = time.perf_counter()
             with typer.progressbar(length=speeds.size * loads.size, label="sweep") as bar:
                 result = run_sweep(base, speeds, loads, jobs=jobs,
-                                   progress=lambda done, total: bar.update(1))
+                                   progress=lambda done, total: _advance(bar))
             finished = SweepRun(result, time.perf_counter() - started)
             _write(finished, out)
             best = result.best()
@@ -77,13 +81,21 @@ def register(app: typer.Typer) -> None:
                        f"{best['load_scale']:g} (κ = {best['impact_velocity_ratio']:.3g}) -> {out}")
             return
         results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)
-        run = MechanismRun(results, base.speed_rpm, base.load_scale)
+        run = MechanismRun(results, base.speed_rpm, base.load_scale,
+                           tuple(check_mechanism(results, base.mechanism)))
         summary = run.summary()
         _write(run, out)
         typer.echo(
             f"{summary['impacts_per_cycle']} impacts/cycle; max impact velocity big end "
             f"{summary['max_impact_velocity_big_end_m_s']:.3g} m/s, small end "
             f"{summary['max_impact_velocity_small_end_m_s']:.3g} m/s -> {out}")
+        for warning in summary["warnings"]:
+            typer.echo(f"warning: {warning}", err=True)
+
+
+def _advance(bar) -> None:
+    raise_if_interrupted()
+    bar.update(1)
 
 
 def _write(results, out: Path) -> None:

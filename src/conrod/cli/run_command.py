@@ -9,6 +9,7 @@ from typing import Annotated, Any
 import typer
 
 from conrod.cli.app import exits_cleanly
+from conrod.io.interrupts import raise_if_interrupted
 from conrod.registry import FILM_NAMES, INTEGRATOR_NAMES
 
 PROGRESS_AFTER_S = 1.0
@@ -25,6 +26,7 @@ class _Progress:
         self.task: Any = None
 
     def __call__(self, stage: str, cycle: int, error: float) -> None:
+        raise_if_interrupted()
         if self.bar is None and time.perf_counter() - self.start > PROGRESS_AFTER_S:
             from rich.console import Console
             from rich.progress import Progress
@@ -57,13 +59,15 @@ def register(app: typer.Typer) -> None:
         step_deg: Annotated[float | None, typer.Option(help="Fixed step of rk2 [deg].")] = None,
         grid: Annotated[str | None, typer.Option(help="Film grid NTHETAxNZ, e.g. 72x16.")] = None,
         figures: Annotated[bool, typer.Option(help="Write the figures.")] = True,
-) -> None:
+    ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
         import conrod.plotting  # noqa: F401  (registers the figures)
         from conrod.cases.case import Case
+        from conrod.io.result_folder import check_output_folder
         from conrod.results.output import write_results
         from conrod.simulation import Simulation
 
+        check_output_folder(out)
         case = Case.from_toml(case_file)
         n_theta, n_z = _grid(grid)
         simulation = Simulation(case, film=film, integrator=integrator, max_cycles=max_cycles,
@@ -79,7 +83,7 @@ def register(app: typer.Typer) -> None:
             f"h_min {s.h_min * 1e6:.3f} µm at {_deg(s.h_min_crank_angle)}°, "
             f"p_max {s.p_max / 1e6:.2f} MPa at {_deg(s.p_max_crank_angle)}°, "
             f"{s.cycles} cycles, {s.wall_time:.2f} s → {out}"
-)
+        )
         for warning in s.warnings:
             typer.echo(f"warning: {warning}", err=True)
 

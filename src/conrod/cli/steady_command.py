@@ -18,6 +18,8 @@ from enum import StrEnum
 
 import typer
 
+from conrod.cases.bearing import MAX_RELATIVE_CLEARANCE
+from conrod.cases.solver import MAX_GRID_NODES
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry
@@ -54,6 +56,9 @@ def parse_grid(text: str | None) -> tuple[int, int] | None:
     if n_theta < 8 or n_z < 2 or n_theta % 2 or n_z % 2:
         raise CaseError(f"grid = {text!r}: out of range (allowed: even NTHETA >= 8, "
                         "even NZ >= 2)")
+    if n_theta * (n_z + 1) > MAX_GRID_NODES:
+        raise CaseError(f"grid = {text!r}: out of range (allowed: NTHETA * (NZ + 1) <= "
+                        f"{MAX_GRID_NODES} nodes)")
     return n_theta, n_z
 
 
@@ -113,8 +118,12 @@ def register(app: typer.Typer) -> None:
                             "--load --speed-rpm --viscosity --diameter --width "
                             f"--radial-clearance (missing: {', '.join(missing)})")
         for name, value in needed.items():
-            if not value > 0.0:
-                raise CaseError(f"{name} = {value!r}: out of range (allowed: > 0)")
+            if not (math.isfinite(value) and value > 0.0):
+                raise CaseError(f"{name} = {value!r}: out of range (allowed: finite, > 0)")
+        if radial_clearance > MAX_RELATIVE_CLEARANCE * 0.5 * diameter:
+            raise CaseError(f"radial_clearance = {radial_clearance!r}: out of range (allowed: "
+                            f"<= {MAX_RELATIVE_CLEARANCE:g} x diameter/2 = "
+                            f"{MAX_RELATIVE_CLEARANCE * 0.5 * diameter:g} m)")
         geometry = BearingGeometry(diameter, width, radial_clearance)
         answer = solve_for_load(load, speed_rpm * math.pi / 30.0, viscosity, geometry,
                                 model.value, cells, friction.value)

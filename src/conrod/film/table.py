@@ -14,7 +14,9 @@ the exact rigid-bearing values in Raimondi & Boyd's full-film convention,
 M_j = −2πμR³L(ω_j − ω_b)/(c√(1−ε²)) − e F_t/2, M_b = +2πμR³L(ω_j − ω_b)/(c√(1−ε²)) − e F_t/2.
 
 Tables are stored as ``<sha256>.npz`` in ``cache_dir`` (default ``~/.cache/conrod/tables``),
-the key hashing the geometry, the base model and its grid, and the table grid.
+the key hashing the geometry, the base model and its grid, and the table grid. Each file
+stores a SHA-256 checksum of its tables; a file that is unreadable, truncated, of the wrong
+shape, non-finite or fails the checksum is rebuilt with a :class:`~conrod.errors.CacheWarning`.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ import hashlib
 import json
 import math
 import time
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -31,7 +34,7 @@ from typing import Any
 import numba as nb
 import numpy as np
 
-from conrod.errors import CaseError
+from conrod.errors import CacheWarning, CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 from conrod.film.capabilities import (
     CompiledKernel,
@@ -52,7 +55,7 @@ from conrod.film.table_kernel import (
 )
 from conrod.io.atomic import atomic_path
 
-TABLE_FORMAT = 3
+TABLE_FORMAT = 4
 """Bumped whenever the stored content changes meaning (part of the cache key) [-]."""
 DEFAULT_CACHE_DIR = Path.home() / ".cache" / "conrod" / "tables"
 QUANTITIES = ("log_magnitude", "turning", "side_flow", "supply_flow", "max_pressure",
@@ -159,16 +162,18 @@ class TabulatedFilm:
     def _load_or_build(self) -> dict[str, np.ndarray]:
         path = self.cache_path()
         if self.use_cache and path.exists():
-            with np.load(path) as stored:
+            tables = read_cached_tables(path, (self.n_eps, self.n_direction))
+            if tables is not None:
                 self.loaded_from_cache = True
-                return {q: stored[q].copy() for q in QUANTITIES}
+                return tables
         start = time.perf_counter()
         tables = build_squeeze_tables(self.base, self.eccentricities(), self.directions())
         self.build_seconds = time.perf_counter() - start
         if self.use_cache:
             save: Any = np.savez  # numpy's stub types the keyword arrays as allow_pickle
             with atomic_path(path) as tmp:
-                save(tmp, **tables)
+                save(tmp, checksum=np.frombuffer(tables_checksum(tables), dtype=np.uint8),
+                     **tables)
         return tables
 
     def directions(self) -> np.ndarray:
@@ -280,6 +285,40 @@ class TabulatedFilm:
         errors_arr = np.asarray(errors)
         return {"max_relative": float(errors_arr.max()),
                 "rms_relative": float(np.sqrt(np.mean(errors_arr**2))), "n_points": n_points}
+
+
+def tables_checksum(tables: dict[str, np.ndarray]) -> bytes:
+    """SHA-256 over the names, shapes and bytes of the tabulated quantities."""
+    digest = hashlib.sha256()
+    for name in QUANTITIES:
+        values = np.ascontiguousarray(tables[name], dtype=np.float64)
+        digest.update(f"{name}{values.shape}".encode())
+        digest.update(values.tobytes())
+    return digest.digest()
+
+
+def read_cached_tables(path: Path, shape: tuple[int, int]) -> dict[str, np.ndarray] | None:
+    """Tables stored at ``path`` if intact: readable, every quantity of ``shape``, finite,
+    matching the stored checksum. Otherwise None, with a :class:`CacheWarning` (the caller
+    rebuilds and overwrites the file)."""
+    try:
+        with open(path, "rb") as handle, np.load(handle, allow_pickle=False) as stored:
+            tables = {q: np.array(stored[q], dtype=np.float64) for q in QUANTITIES}
+            checksum = bytes(np.asarray(stored["checksum"], dtype=np.uint8))
+    except Exception as error:  # truncated, garbage, empty, old format: all mean rebuild
+        reason = f"unreadable ({type(error).__name__})"
+    else:
+        if any(values.shape != shape for values in tables.values()):
+            reason = "wrong table shape"
+        elif not all(np.all(np.isfinite(values)) for values in tables.values()):
+            reason = "non-finite values"
+        elif checksum != tables_checksum(tables):
+            reason = "checksum mismatch"
+        else:
+            return tables
+    warnings.warn(f"film table cache {str(path)!r} is corrupt ({reason}); rebuilding it",
+                  CacheWarning, stacklevel=3)
+    return None
 
 
 def random_state(rng: np.random.Generator, clearance: float, eps_max: float) -> FilmState:

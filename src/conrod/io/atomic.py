@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import math
 import os
 import tempfile
 from collections.abc import Iterator, Mapping
@@ -15,6 +16,8 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from conrod.errors import NonFiniteResultError
 
 _FILE_MODE = 0o644
 """Permissions of result files (mkstemp creates 0600)."""
@@ -61,10 +64,45 @@ def _json_default(value: Any) -> Any:
     raise TypeError(f"cannot write {type(value).__name__} to JSON")
 
 
+def first_non_finite(data: Any, where: str = "") -> tuple[str, Any] | None:
+    """(dotted key, value) of the first NaN or infinite number in nested data, else None."""
+    if isinstance(data, Mapping):
+        items: Any = ((f"{where}.{key}" if where else str(key), value)
+                      for key, value in data.items())
+    elif isinstance(data, list | tuple | np.ndarray):
+        items = ((f"{where}[{index}]", value) for index, value in enumerate(data))
+    else:
+        if isinstance(data, float | np.floating) and not math.isfinite(data):
+            return where, data
+        return None
+    for key, value in items:
+        found = first_non_finite(value, key)
+        if found is not None:
+            return found
+    return None
+
+
 def write_json(target: str | os.PathLike[str], data: Mapping[str, Any]) -> Path:
-    """Write ``data`` as indented JSON atomically; NaN/inf are refused (not valid JSON)."""
+    """Write ``data`` as indented JSON atomically.
+
+    NaN and infinity are not JSON: a result holding one raises
+    :class:`~conrod.errors.ConvergenceError` naming the file and the field, and nothing is
+    written.
+    """
+    found = first_non_finite(data)
+    if found is not None:
+        raise NonFiniteResultError(f"non-finite result {found[0]} = {found[1]} in "
+                               f"{Path(target).name}; nothing written")
     text = json.dumps(data, indent=2, default=_json_default, allow_nan=False)
     return write_text(target, text + "\n")
+
+
+def _check_finite_columns(file: str, names: list[str], arrays: list[np.ndarray]) -> None:
+    for name, values in zip(names, arrays, strict=True):
+        if values.dtype.kind == "f" and not np.all(np.isfinite(values)):
+            row = int(np.flatnonzero(~np.isfinite(values))[0])
+            raise NonFiniteResultError(f"non-finite result {name} = {values[row]} in {file}, "
+                                   f"row {row + 1}; nothing written")
 
 
 def write_csv(
@@ -73,12 +111,17 @@ def write_csv(
     *,
     float_format: str = "%.9g",
 ) -> Path:
-    """Write equal-length 1-D ``columns`` (name → values) as CSV atomically."""
+    """Write equal-length 1-D ``columns`` (name → values) as CSV atomically.
+
+    Only finite numbers are written: a NaN or infinite value raises
+    :class:`~conrod.errors.ConvergenceError` naming the file, the column and the row.
+    """
     names = list(columns)
     arrays = [np.asarray(columns[name]) for name in names]
     lengths = {a.shape for a in arrays}
     if len(lengths) != 1 or len(next(iter(lengths))) != 1:
         raise ValueError(f"CSV columns must be 1-D and equal length, got shapes {lengths}")
+    _check_finite_columns(Path(target).name, names, arrays)
     with atomic_path(target) as tmp, open(tmp, "w", encoding="utf-8", newline="") as handle:
         handle.write(",".join(names) + "\n")
         table = np.column_stack(

@@ -24,6 +24,7 @@ from conrod.cases.base import range_error
 from conrod.cases.case import Case
 from conrod.cases.engine import PressureModelSection
 from conrod.errors import CaseError
+from conrod.io.text import csv_data_lines, read_utf8
 from conrod.loads.kinematics import piston_displacement_series
 
 CYCLE = 4.0 * math.pi
@@ -80,7 +81,7 @@ class TracePressure(_GaugeMixin):
         """Absolute pressure [Pa], periodic linear interpolation of the trace."""
         return np.interp(
             np.asarray(crank_angle, dtype=float), self.crank_angle, self.pressure, period=CYCLE
-)
+        )
 
 
 @dataclass(frozen=True)
@@ -132,11 +133,11 @@ class ParametricPressure(_GaugeMixin):
         s_plateau = self._displacement(plateau_end)
         expansion = (
             p_z * ((clearance_height + s_plateau) / (clearance_height + s)) ** self.expansion_index
-)
+        )
         compression = (
             self.intake_pressure
             * ((clearance_height + stroke) / (clearance_height + s)) ** self.compression_index
-)
+        )
         conditions = [
             phi <= rise_end,
             phi <= plateau_end,
@@ -156,7 +157,7 @@ class ParametricPressure(_GaugeMixin):
     @classmethod
     def from_section(
         cls, model: PressureModelSection, crank_radius: float, rod_length: float
-) -> ParametricPressure:
+    ) -> ParametricPressure:
         """Build from ``[engine.pressure_model]``; check p_z ≥ p_c (else CaseError)."""
         pressure = cls(
             crank_radius=crank_radius,
@@ -169,7 +170,7 @@ class ParametricPressure(_GaugeMixin):
             compression_index=model.compression_index,
             expansion_index=model.expansion_index,
             ambient=model.ambient_pressure,
-)
+        )
         p_c = pressure.compression_end_pressure
         if model.max_pressure < p_c:
             raise range_error(
@@ -177,7 +178,7 @@ class ParametricPressure(_GaugeMixin):
                 model.max_pressure,
                 f">= compression-end pressure p_a*eps^n1 = {p_c:.4g}",
                 "Pa",
-)
+            )
         return pressure
 
 
@@ -186,26 +187,14 @@ def _trace_error(path: Path, line: int, message: str) -> CaseError:
 
 
 def _read_rows(path: Path) -> tuple[list[int], list[list[str]], dict[str, int]]:
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as error:
-        raise CaseError(
-            f"pressure trace {str(path)!r}: cannot be read ({error.strerror})"
-) from None
-    lines = [
-        (n, s)
-        for n, s in enumerate(text.splitlines(), start=1)
-        if s.strip() and not s.lstrip().startswith("#")
-    ]
-    if not lines:
-        raise CaseError(f"pressure trace {str(path)!r}: file is empty")
+    lines = csv_data_lines(read_utf8(path, "pressure trace"), path, "pressure trace")
     rows = list(csv.reader([s for _, s in lines]))
     header = {name.strip(): i for i, name in enumerate(rows[0])}
     for needed in ("crank_angle_deg", "pressure_Pa"):
         if needed not in header:
             raise _trace_error(
                 path, lines[0][0], f"missing column '{needed}' (header: {', '.join(header)})"
-)
+            )
     return [n for n, _ in lines[1:]], rows[1:], header
 
 
@@ -238,14 +227,14 @@ def read_pressure_trace(path: Path) -> tuple[np.ndarray, np.ndarray]:
         if pressure <= 0.0:
             raise _trace_error(
                 path, line, f"pressure_Pa = {pressure:g} must be > 0 (absolute) [Pa]"
-)
+            )
         if angles and angle <= angles[-1]:
             raise _trace_error(
                 path,
                 line,
                 f"crank_angle_deg = {angle:g} is not above the "
                 f"previous {angles[-1]:g} (angles must increase)",
-)
+            )
         angles.append(angle)
         pressures.append(pressure)
     if len(angles) < 4:
@@ -260,7 +249,7 @@ def _check_coverage(path: Path, angles: np.ndarray, numbers: list[int]) -> None:
         raise CaseError(
             f"pressure trace {str(path)!r}: angles span {span:g} deg "
             f"({angles[0]:g}..{angles[-1]:g}); one cycle of 720 deg is expected"
-)
+        )
     gaps = np.diff(angles)
     wrap_gap = 720.0 - span
     worst = int(np.argmax(gaps))
@@ -270,12 +259,12 @@ def _check_coverage(path: Path, angles: np.ndarray, numbers: list[int]) -> None:
             numbers[worst + 1],
             f"missing angles: gap of {gaps[worst]:g} deg from {angles[worst]:g} to "
             f"{angles[worst + 1]:g} (allowed: <= {MAX_TRACE_GAP_DEG:g} deg)",
-)
+        )
     if wrap_gap > MAX_TRACE_GAP_DEG:
         raise CaseError(
             f"pressure trace {str(path)!r}: covers only {angles[0]:g}..{angles[-1]:g} "
             f"deg; the full 720 deg cycle is needed (missing angles)"
-)
+        )
 
 
 def _drop_duplicate_end(angles: np.ndarray, pressures: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -298,9 +287,9 @@ def build_pressure(case: Case) -> CylinderPressure:
     if engine.pressure_trace is not None:
         ambient = (
             engine.ambient_pressure if engine.ambient_pressure is not None else DEFAULT_AMBIENT
-)
+        )
         return pressure_from_trace(case.resolve(engine.pressure_trace), ambient)
     assert engine.pressure_model is not None
     return ParametricPressure.from_section(
         engine.pressure_model, engine.crank_radius, engine.rod_length
-)
+    )

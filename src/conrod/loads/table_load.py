@@ -3,7 +3,8 @@
 The CSV has the columns ``crank_angle_deg, load_x_N, load_y_N`` (bearing/film frame, load
 pressing the journal on the shell), optionally ``journal_speed_rad_s`` and
 ``shell_speed_rad_s`` per angle (e.g. a rod-frame journal speed ω − dβ/dt); otherwise the
-speeds of ``[load]`` apply. Lines starting with ``#`` are comments (provenance).
+speeds of ``[load]`` apply. Lines starting with ``#`` are comments (provenance); a row
+starting with a spreadsheet error value such as ``#N/A`` is an error. UTF-8 text.
 One cycle of ``cycle_deg``; a closing row at ``first + cycle_deg`` is dropped (periodic).
 """
 
@@ -16,6 +17,7 @@ import numpy as np
 
 from conrod.cases.load import LoadTableSection
 from conrod.errors import CaseError
+from conrod.io.text import csv_data_lines, read_utf8
 from conrod.loads.cycle import LoadCycle
 from conrod.units import rpm_to_rad_s
 
@@ -24,31 +26,43 @@ OPTIONAL_COLUMNS = ("journal_speed_rad_s", "shell_speed_rad_s")
 
 
 def read_load_columns(path: Path) -> dict[str, np.ndarray]:
-    """Read the table as column name → float array; :class:`CaseError` on any problem."""
-    try:
-        lines = path.read_text(encoding="utf-8").splitlines()
-    except OSError as error:
-        raise CaseError(f"load.table {str(path)!r}: cannot be read ({error.strerror})") from None
-    rows = [line for line in lines if line.strip() and not line.lstrip().startswith("#")]
-    if len(rows) < 5:
-        raise CaseError(f"load.table {str(path)!r}: needs a header and at least 4 rows")
-    header = [name.strip() for name in rows[0].split(",")]
+    """Read the table as column name → float array; :class:`CaseError` on any problem
+    (naming the file, the line, the column, the value and what is allowed)."""
+    what = "load.table"
+    lines = csv_data_lines(read_utf8(path, what), path, what)
+    if len(lines) < 5:
+        raise CaseError(f"{what} {str(path)!r}: needs a header and at least 4 data rows "
+                        f"(found {len(lines) - 1})")
+    header = [name.strip() for name in lines[0][1].split(",")]
     missing = [name for name in REQUIRED_COLUMNS if name not in header]
     if missing:
         raise CaseError(
-            f"load.table {str(path)!r}: missing column(s) {', '.join(missing)} "
+            f"{what} {str(path)!r}, line {lines[0][0]}: missing column(s) {', '.join(missing)} "
             f"(found: {', '.join(header)}; required: {', '.join(REQUIRED_COLUMNS)})"
-)
-    try:
-        data = np.array([[float(v) for v in row.split(",")] for row in rows[1:]], dtype=float)
-    except ValueError as error:
-        raise CaseError(f"load.table {str(path)!r}: non-numeric value ({error})") from None
-    if data.ndim != 2 or data.shape[1] != len(header):
-        raise CaseError(f"load.table {str(path)!r}: every row needs {len(header)} values")
-    if not np.all(np.isfinite(data)):
-        raise CaseError(f"load.table {str(path)!r}: contains NaN or infinite values")
+        )
+    data = np.array([_row_values(path, number, line, header) for number, line in lines[1:]])
     names = REQUIRED_COLUMNS + tuple(n for n in OPTIONAL_COLUMNS if n in header)
     return {name: data[:, header.index(name)] for name in names}
+
+
+def _row_values(path: Path, number: int, line: str, header: list[str]) -> list[float]:
+    """Finite floats of one data row, or a CaseError naming line, column and value."""
+    cells = line.split(",")
+    if len(cells) != len(header):
+        raise CaseError(f"load.table {str(path)!r}, line {number}: {len(cells)} values, "
+                        f"expected {len(header)} ({', '.join(header)})")
+    values = []
+    for name, cell in zip(header, cells, strict=True):
+        try:
+            value = float(cell)
+        except ValueError:
+            raise CaseError(f"load.table {str(path)!r}, line {number}: {name} = "
+                            f"{cell.strip()!r} is not a number") from None
+        if not math.isfinite(value):
+            raise CaseError(f"load.table {str(path)!r}, line {number}: {name} = "
+                            f"{cell.strip()} is not finite (allowed: finite numbers)")
+        values.append(value)
+    return values
 
 
 def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
@@ -62,7 +76,7 @@ def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
         raise CaseError(
             f"load.table {str(path)!r}: crank angles span "
             f"{angle_deg[-1] - angle_deg[0]:g} deg, more than load.cycle_deg = {section.cycle_deg}"
-)
+        )
     crank_speed = rpm_to_rad_s(section.speed)
     journal = crank_speed if section.journal_speed is None else section.journal_speed
     journal_speed = columns.get("journal_speed_rad_s", np.full(angle_deg.size, float(journal)))
@@ -75,7 +89,7 @@ def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
         shell_speed=shell_speed[keep],
         crank_speed=crank_speed,
         cycle=math.radians(section.cycle_deg),
-)
+    )
 
 
 def _closes_cycle(angle_deg: np.ndarray, section: LoadTableSection) -> bool:

@@ -114,6 +114,33 @@ def contact_force(depth: float, depth_rate: float, stiffness: float, exponent: f
     return max(elastic + damping * depth_rate, 0.0), elastic
 
 
+def seed_free_play_is_convex(diameter: float, clearance_max: float, clearance_min: float,
+                             samples: int = 3600) -> bool:
+    """True when the seed geometry's free-play region r(ϕ) ≤ p(ϕ) − D/2 is convex.
+
+    A region bounded by the polar curve r(ϕ) is convex iff r² + 2r'² − r r'' ≥ 0 for every
+    ϕ (its curvature keeps its sign). With p(ϕ) of a worn shell and D comparable to the
+    shell, the subtraction of D/2 dents the region along the minor axis once Δmin falls
+    well below Δmax (about Δmin < 2/3 Δmax for engine joints); the seed's radial
+    penetration is then not a distance and impacts along the dent are spurious. Exact
+    geometry (:func:`exact_contact`) has a convex region for every ellipse.
+    """
+    import numpy as np
+
+    major, minor, eccentricity_sq = shell_semi_axes(diameter, clearance_max, clearance_min)
+    angle = np.linspace(0.0, 2.0 * math.pi, samples, endpoint=False)
+    cosine, sine = np.cos(angle), np.sin(angle)
+    q = 1.0 - eccentricity_sq * cosine**2
+    p = minor / np.sqrt(q)
+    dq = 2.0 * eccentricity_sq * cosine * sine
+    d2q = 2.0 * eccentricity_sq * (cosine**2 - sine**2)
+    slope = -0.5 * minor * q**-1.5 * dq
+    curvature = minor * (0.75 * q**-2.5 * dq**2 - 0.5 * q**-1.5 * d2q)
+    radius = p - 0.5 * diameter
+    measure = radius**2 + 2.0 * slope**2 - radius * curvature
+    return bool(np.all(measure >= -1e-12 * major**2))
+
+
 def damping_coefficient(damping_factor: float, stiffness: float, effective_mass: float) -> float:
     """[D3] damping β = 2 μ √(c m_eff) [N s/m for α = 1]."""
     return 2.0 * damping_factor * math.sqrt(stiffness * effective_mass)

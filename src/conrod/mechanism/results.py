@@ -139,13 +139,17 @@ class MechanismRun:
     results : MechanismResults  Time histories and impacts.
     speed_rpm : float  Crank speed [rpm].
     load_scale : float  Gas-force factor [-].
+    warnings : tuple of str  Plausibility warnings
+        (:func:`conrod.results.plausibility.check_mechanism`).
     """
 
     results: MechanismResults
     speed_rpm: float
     load_scale: float
+    warnings: tuple[str, ...] = ()
 
     def summary(self) -> dict:
-        """``summary.json`` items: the operating point and :meth:`MechanismResults.summary`."""
+        """``summary.json`` items: the operating point, :meth:`MechanismResults.summary` and
+        the plausibility warnings."""
         return {"speed_rpm": self.speed_rpm, "load_scale": self.load_scale,
-                **self.results.summary()}
+                **self.results.summary(), "warnings": list(self.warnings)}

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from conrod.cases.case import Case
-from conrod.cases.mechanism import ClearanceSection, JointClearanceSection
+from conrod.cases.mechanism import MAX_STEPS_PER_CYCLE, ClearanceSection, JointClearanceSection
 from conrod.mechanism.model import ROD_INERTIA_FACTOR, ClearanceJoint, CrankTrain, Mechanism
 from conrod.mechanism.simulation import CYCLE, RunSettings
 from conrod.units import rpm_to_rad_s
@@ -63,7 +63,8 @@ def settings_from_section(section: ClearanceSection) -> RunSettings:
     return RunSettings(cycles=section.cycles, tolerance=section.tolerance,
                        output_step=math.radians(section.output_step_deg),
                        max_step=math.radians(section.max_step_deg),
-                       impact_separation=section.impact_separation)
+                       impact_separation=section.impact_separation,
+                       max_steps=section.cycles * MAX_STEPS_PER_CYCLE)
 
 
 def gas_force_table(case: Case, points: int = GAS_TABLE_POINTS) -> np.ndarray:

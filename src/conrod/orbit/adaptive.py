@@ -20,6 +20,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from conrod.errors import ConvergenceError
+from conrod.io.interrupts import raise_if_interrupted
 from conrod.orbit.contact import contact_acceleration, contact_normal_force
 from conrod.orbit.problem import OrbitProblem, OrbitState, load_table, periodic_sample
 from conrod.orbit.trajectory import CycleTrajectory
@@ -112,14 +113,14 @@ class _Phases:
                 float(phi), np.asarray(u, dtype=float),
                 self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),
                 self.c, float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
-)
+            )
         c, w = self.c, self.omega
         x, y, vx, vy = u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w
         big_x, big_y, _ = self.forces(phi, x, y, vx, vy)
         scale = c * w * w
         return np.array(
             [u[2], u[3], big_x / (self.p.mass_x * scale), big_y / (self.p.mass_y * scale)]
-)
+        )
 
     def hit(self, phi: float, u: np.ndarray) -> float:
         return math.hypot(u[0], u[1]) * self.c / self.rc - 1.0
@@ -136,7 +137,7 @@ class _Phases:
         ax, ay, _, _ = contact_acceleration(
             x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
             self.p.dry_friction, self.rc, surface, True,
-)
+        )
         tangential = -ax * math.sin(w[0]) + ay * math.cos(w[0])
         return np.array([w[1] * self.c / self.rc, tangential / (self.c * self.omega**2)])
 
@@ -147,7 +148,7 @@ class _Phases:
         p_c, s = contact_normal_force(
             x, y, vx, vy, big_x, big_y, self.p.mass_x, self.p.mass_y,
             self.p.dry_friction, self.rc, surface,
-)
+        )
         return (p_c, s) if with_sign else p_c
 
     def leave(self, phi: float, w: np.ndarray) -> float:
@@ -187,7 +188,7 @@ def adaptive_cycle(
         if last:
             return CycleTrajectory.from_table(
                 phi_out, table, _state(phases, sol.y[:, -1], contact), steps
-)
+            )
         phi = phi_end
         current, contact = _switch(phases, phi, sol.y[:, -1], contact)
     raise ConvergenceError("contact chattering: too many contact entries/exits",
@@ -204,13 +205,36 @@ def _solve_segment(rhs, phi, end, current, event, settings, session):
     for method in methods:
         session.restore(start)
         sol = solve_ivp(
-            rhs, (phi, end), current, method=method, events=event, dense_output=True,
-            max_step=math.radians(settings.max_step_deg),
+            _budgeted(rhs, settings), (phi, end), current, method=method, events=event,
+            dense_output=True, max_step=math.radians(settings.max_step_deg),
             rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
-)
+        )
         if sol.status >= 0:
             return sol
     return sol
+
+
+EVALUATIONS_PER_MIN_STEP = 400
+"""Budget of film-force evaluations of one solve_ivp segment per step of max_step_deg
+over the cycle (a normal cycle needs ~15); a stiffer run fails instead of hanging [-]."""
+
+
+def _budgeted(rhs, settings):
+    """``rhs`` that raises ConvergenceError once it was called more than the budget."""
+    budget = EVALUATIONS_PER_MIN_STEP * math.ceil(720.0 / settings.max_step_deg)
+    calls = [0]
+
+    def counted(phi: float, u: np.ndarray) -> np.ndarray:
+        calls[0] += 1
+        raise_if_interrupted()
+        if calls[0] > budget:
+            raise ConvergenceError(
+                f"adaptive orbit integration exceeded its budget of {budget} film "
+                "evaluations per cycle (stiff: check speed, viscosity and clearance)",
+                where=f"crank angle {math.degrees(phi):.2f} deg")
+        return rhs(phi, u)
+
+    return counted
 
 
 def _scaled(state: OrbitState, c: float, w: float, phases: _Phases) -> np.ndarray:

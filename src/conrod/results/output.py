@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import Any
 
 from conrod.io.atomic import atomic_path, write_csv, write_json, write_text
+from conrod.io.result_folder import staged_result_folder
 
 MANIFEST = "manifest.json"
 """File name of the manifest, written last [-]."""
@@ -91,18 +92,19 @@ def result_kind(results: Any) -> str:
 def write_results(
     results: Any, out_dir: str | os.PathLike[str], *, figures: bool = True
 ) -> list[Path]:
-    """Write the tables (and figures) of ``results`` into ``out_dir`` atomically, then
-    ``manifest.json``; return the paths written (manifest last)."""
-    out = Path(out_dir)
+    """Write the tables (and figures) of ``results`` and ``manifest.json`` as one result set:
+    into a staging folder that replaces ``out_dir`` whole
+    (:func:`conrod.io.result_folder.staged_result_folder`, which adds each file's size and
+    SHA-256 to the manifest); return the paths written (manifest last)."""
     table_specs = tables(results)
     figure_specs = _figure_specs(results) if figures else ()
     contents = [(spec, spec.build()) for spec in table_specs]
     built = [(spec, spec.build()) for spec in figure_specs]  # nothing written if one fails
-    out.mkdir(parents=True, exist_ok=True)
-    paths = [_write_table(out / spec.file, content) for spec, content in contents]
-    paths += [_save(figure, out / spec.file) for spec, figure in built]
-    paths.append(write_json(out / MANIFEST, manifest(results, table_specs, figure_specs)))
-    return paths
+    with staged_result_folder(out_dir) as stage:  # the whole set swapped in at once
+        paths = [_write_table(stage / spec.file, content) for spec, content in contents]
+        paths += [_save(figure, stage / spec.file) for spec, figure in built]
+        paths.append(write_json(stage / MANIFEST, manifest(results, table_specs, figure_specs)))
+    return [Path(out_dir) / path.relative_to(stage) for path in paths]
 
 
 def manifest(results: Any, table_specs, figure_specs) -> dict[str, Any]:

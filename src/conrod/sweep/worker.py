@@ -33,11 +33,13 @@ def compute_into(case, command: str, out_dir: Path, figures: bool) -> None:
         from conrod.mechanism.results import MechanismRun
         from conrod.mechanism.setup import mechanism_case
         from conrod.mechanism.simulation import simulate
+        from conrod.results.plausibility import check_mechanism
 
         base = mechanism_case(case)
         results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)
-        write_variant_results(MechanismRun(results, base.speed_rpm, base.load_scale),
-                              out_dir, figures=figures)
+        run = MechanismRun(results, base.speed_rpm, base.load_scale,
+                           tuple(check_mechanism(results, base.mechanism)))
+        write_variant_results(run, out_dir, figures=figures)
         return
     from conrod.simulation import Simulation
 

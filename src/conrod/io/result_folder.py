@@ -1,0 +1,197 @@
+"""Result folders written as a whole: the folder holds the complete old result or the
+complete new one, never a mix, never a half-written or temporary file.
+
+.. code-block:: python
+
+    check_output_folder(out)              # before any computation: CaseError if unusable
+    with staged_result_folder(out) as stage:
+        write_csv(stage / "cycle.csv", ...)   # every file of the result goes into ``stage``
+
+``stage`` is a hidden sibling folder of ``out`` (same file system). When the block ends
+without an exception, a ``manifest.json`` (name, size and SHA-256 of every result file) is
+added (unless the command writes a fixed set of files), files of ``out`` that belong to no
+earlier result (no manifest lists them, the new result does not replace them) are carried
+over by hard link, and the stage is swapped in: one atomic exchange of the two
+folders (Linux ``renameat2(RENAME_EXCHANGE)``), or two renames elsewhere. On an exception
+(or a kill) ``out`` is untouched; a stage left behind by a killed process is removed by the
+next run that writes next to it.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import ctypes
+import hashlib
+import json
+import os
+import shutil
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+
+from conrod.errors import CaseError
+from conrod.io.interrupts import raise_if_interrupted
+
+MANIFEST = "manifest.json"
+"""Name of the file listing the result files of a folder."""
+STAGE_TAG = ".conrod-stage-"
+"""Part of the name of a staging folder: ``.<out name>.conrod-stage-<pid>-<random>``."""
+_RENAME_EXCHANGE = 2
+_AT_FDCWD = -100
+
+
+def check_output_folder(out: str | os.PathLike[str], option: str = "--out") -> Path:
+    """Check that results can be written to ``out``; raise :class:`CaseError` if not.
+
+    Done before any computation: ``out`` must be a folder or not exist yet, no part of
+    its path may be a file, it must not be (or contain) the current folder, and its
+    parent must accept a new entry. Returns ``out`` as an absolute path.
+    """
+    path = Path(out).absolute()
+    shown = f"{option} {str(out)!r}"
+    if path.exists() and not path.is_dir():
+        raise CaseError(f"{shown}: is an existing file (allowed: a folder, new or existing)")
+    if Path.cwd() == path or path in Path.cwd().parents:
+        raise CaseError(f"{shown}: is the current folder or contains it (allowed: a "
+                        "results subfolder, e.g. results/run1)")
+    existing = path.parent
+    while not existing.exists():
+        existing = existing.parent
+    if not existing.is_dir():
+        raise CaseError(f"{shown}: {str(existing)!r} is a file, not a folder")
+    try:
+        probe = tempfile.mkdtemp(prefix=".conrod-probe-", dir=existing)
+    except OSError as error:
+        raise CaseError(f"{shown}: cannot write in {str(existing)!r} "
+                        f"({error.strerror or type(error).__name__})") from None
+    os.rmdir(probe)
+    return path
+
+
+@contextlib.contextmanager
+def staged_result_folder(out: str | os.PathLike[str], *, manifest: bool = True
+                         ) -> Iterator[Path]:
+    """Yield an empty staging folder; swap it in as ``out`` when the block succeeds.
+
+    manifest : bool  Add ``manifest.json`` (a command whose result is always the same
+        fixed set of files may leave it out; the set is still swapped in as a whole).
+    """
+    target = Path(out).absolute()
+    target.parent.mkdir(parents=True, exist_ok=True)
+    _remove_abandoned_stages(target)
+    stage = Path(tempfile.mkdtemp(prefix=f".{target.name}{STAGE_TAG}{os.getpid()}-",
+                                  dir=target.parent))
+    try:
+        yield stage
+        if manifest:
+            _write_manifest(stage)
+        if target.is_dir():
+            _carry_over_foreign_files(target, stage)
+        _swap_in(stage, target)
+    except BaseException:
+        shutil.rmtree(stage, ignore_errors=True)
+        raise
+
+
+def result_files(folder: Path) -> dict[str, dict]:
+    """Every regular file below ``folder`` (relative POSIX name → bytes and SHA-256)."""
+    files = {}
+    for path in sorted(p for p in folder.rglob("*") if p.is_file()):
+        name = path.relative_to(folder).as_posix()
+        if name != MANIFEST:
+            digest = hashlib.sha256(path.read_bytes()).hexdigest()
+            files[name] = {"bytes": path.stat().st_size, "sha256": digest}
+    return files
+
+
+def _write_manifest(stage: Path) -> None:
+    """manifest.json listing the staged files (merged into one the writer made)."""
+    manifest_path = stage / MANIFEST
+    manifest: dict = {}
+    if manifest_path.is_file():
+        with contextlib.suppress(ValueError):
+            loaded = json.loads(manifest_path.read_text(encoding="utf-8"))
+            manifest = loaded if isinstance(loaded, dict) else {}
+    manifest["files"] = result_files(stage)
+    manifest_path.write_text(json.dumps(manifest, indent=2) + "\n", encoding="utf-8")
+
+
+def _listed_files(folder: Path) -> set[str]:
+    """Top-level names of the result files listed in ``folder``'s manifest."""
+    try:
+        files = json.loads((folder / MANIFEST).read_text(encoding="utf-8")).get("files", {})
+    except (OSError, ValueError, AttributeError):
+        return set()
+    return {str(name).split("/")[0] for name in files} | {MANIFEST}
+
+
+def _carry_over_foreign_files(target: Path, stage: Path) -> None:
+    """Hard-link (or copy) into ``stage`` what ``target`` holds besides its last result."""
+    listed = _listed_files(target)
+    for entry in target.iterdir():
+        if entry.name in listed or (stage / entry.name).exists():
+            continue
+        if entry.is_dir() and not entry.is_symlink():
+            shutil.copytree(entry, stage / entry.name, symlinks=True, copy_function=_link)
+        else:
+            _link(entry, stage / entry.name)
+
+
+def _link(source: os.PathLike[str] | str, target: os.PathLike[str] | str) -> None:
+    try:
+        os.link(source, target, follow_symlinks=False)
+    except OSError:
+        shutil.copy2(source, target, follow_symlinks=False)
+
+
+def _swap_in(stage: Path, target: Path) -> None:
+    """Make ``stage`` the folder ``target`` in one step; remove what was there."""
+    raise_if_interrupted()  # Ctrl-C while writing: keep the old result
+    os.chmod(stage, 0o755)  # mkdtemp makes it 0700
+    if not target.exists():
+        os.rename(stage, target)
+        return
+    if _exchange(stage, target):
+        shutil.rmtree(stage, ignore_errors=True)  # now holds the previous result
+        return
+    old = Path(tempfile.mkdtemp(prefix=f".{target.name}{STAGE_TAG}{os.getpid()}-",
+                                dir=target.parent))
+    os.rmdir(old)
+    os.rename(target, old)
+    os.rename(stage, target)
+    shutil.rmtree(old, ignore_errors=True)
+
+
+def _exchange(first: Path, second: Path) -> bool:
+    """Atomically exchange two paths (Linux renameat2); False where unsupported."""
+    try:
+        renameat2 = ctypes.CDLL(None, use_errno=True).renameat2
+    except (AttributeError, OSError):
+        return False
+    result = renameat2(_AT_FDCWD, os.fsencode(first), _AT_FDCWD, os.fsencode(second),
+                       _RENAME_EXCHANGE)
+    return result == 0
+
+
+def _remove_abandoned_stages(target: Path) -> None:
+    """Remove stages next to ``target`` whose writing process no longer exists."""
+    prefix = f".{target.name}{STAGE_TAG}"
+    for entry in target.parent.glob(f"{glob_escape(prefix)}*"):
+        pid_text = entry.name[len(prefix):].split("-")[0]
+        if pid_text.isdigit() and not _alive(int(pid_text)):
+            shutil.rmtree(entry, ignore_errors=True)
+
+
+def glob_escape(text: str) -> str:
+    """``text`` with glob metacharacters escaped."""
+    return "".join(f"[{c}]" if c in "*?[" else c for c in text)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True

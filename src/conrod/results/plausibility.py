@@ -1,0 +1,188 @@
+"""Physical plausibility of results: pure functions, results in → warnings out.
+
+A result that cannot be physical raises :class:`~conrod.errors.ConvergenceError` naming
+where (field and crank angle); a doubtful one gives a warning sentence that goes into
+``summary.json["warnings"]`` and on stderr.
+
+Orbit (``conrod run``):
+
+* non-finite values → error;
+* negative peak pressure or film thickness, film thickness above the largest possible
+  2c → error;
+* contact force above :data:`CONTACT_FORCE_ERROR_FACTOR` × the peak load → error, above
+  :data:`CONTACT_FORCE_WARNING_FACTOR` × → warning (a rigid journal cannot press harder
+  than load plus inertia);
+* journal-centre displacement beyond the clearance by more than
+  :data:`PENETRATION_SHARE` of it → warning;
+* minimum film thickness below the combined roughness σ while hard contact is not active
+  (the asperities would touch: mixed lubrication not modelled) → warning;
+* heat-balance temperature above ``lubricant.max_temperature`` → warning.
+
+Mechanism (``conrod mechanism``):
+
+* non-finite values → error;
+* impact velocity above the crank-pin surface speed ω D/2 → warning (a clearance-joint
+  impact is driven by the relative motion of the rod and the crank, whose scale is that
+  speed);
+* contact force above :data:`MECHANISM_FORCE_LIMIT`, or above
+  :data:`MECHANISM_FORCE_FACTOR` × (peak gas force + inertia force) → warning;
+* exact geometry on a shell whose curvature radius at the major vertex b²/a is below the
+  journal radius (two-point contact, modelled by the deeper point) → warning;
+* penetration deeper than :data:`PENETRATION_SHARE` of the joint's smallest radial
+  clearance → warning;
+* ``contact_geometry = "seed"`` with a non-convex free-play region → warning.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from conrod.errors import ConvergenceError
+
+PENETRATION_SHARE = 0.5
+"""Penetration (or excursion beyond the clearance) allowed as a share of the clearance [-]."""
+CONTACT_FORCE_WARNING_FACTOR = 3.0
+"""Contact force / peak bearing load above which a run is flagged [-]."""
+CONTACT_FORCE_ERROR_FACTOR = 100.0
+"""Contact force / peak bearing load above which a run is meaningless [-]."""
+MECHANISM_FORCE_LIMIT = 1.0e6
+"""Joint contact force above which a mechanism run is flagged [N]."""
+MECHANISM_FORCE_FACTOR = 10.0
+"""Joint contact force / (peak gas force + peak inertia force m R ω²) above which a
+mechanism run is flagged (impact peaks exceed the load, but not tenfold) [-]."""
+
+
+def _angle(crank_angle: np.ndarray, index: int) -> str:
+    return f"crank angle {math.degrees(float(crank_angle[index])):.1f} deg"
+
+
+def check_finite(record: Any, crank_angle: np.ndarray, what: str) -> None:
+    """ConvergenceError naming the first non-finite float array attribute of ``record``."""
+    for name, values in vars(record).items():
+        if isinstance(values, np.ndarray) and values.dtype.kind == "f":
+            bad = ~np.isfinite(values)
+            if np.any(bad):
+                column = int(np.flatnonzero(bad.reshape(-1, bad.shape[-1]).any(axis=0))[0])
+                where = _angle(crank_angle, column) if column < crank_angle.size else ""
+                raise ConvergenceError(f"{what}: {name} is not finite", where=where)
+
+
+def check_run(results: Any, case: Any) -> list[str]:
+    """Warnings for an orbit run; ConvergenceError where the result is meaningless.
+
+    results : RunResults; case : Case (``[contact]``, ``[lubricant]`` are read).
+    """
+    cycle, c = results.cycle, results.clearance
+    angle = cycle.crank_angle
+    check_finite(cycle, angle, "orbit result")
+    _check_film_range(cycle, c)
+    warnings = _contact_force_warnings(cycle)
+    excursion = float(np.max(cycle.eccentricity_ratio)) - 1.0
+    if excursion > PENETRATION_SHARE:
+        i = int(np.argmax(cycle.eccentricity_ratio))
+        warnings.append(f"journal centre {excursion:.2g} c beyond the clearance circle at "
+                        f"{_angle(angle, i)} (allowed: <= {PENETRATION_SHARE:g} c)")
+    warnings += _roughness_warnings(cycle, case)
+    temperature = results.summary.effective_temperature
+    limit = case.lubricant.max_temperature if case.lubricant is not None else math.inf
+    if temperature is not None and temperature > limit:
+        warnings.append(f"heat-balance temperature {temperature:.1f} °C is above the oil's "
+                        f"valid range (lubricant.max_temperature = {limit:g} °C)")
+    return warnings
+
+
+def _check_film_range(cycle: Any, clearance: float) -> None:
+    angle = cycle.crank_angle
+    for name, values, low, high in (("p_max", cycle.p_max, 0.0, math.inf),
+                                    ("h_min", cycle.h_min, 0.0, 2.0 * clearance)):
+        bad = (values < low) | (values > high)
+        if np.any(bad):
+            i = int(np.flatnonzero(bad)[0])
+            unit = "Pa" if name == "p_max" else "m"
+            raise ConvergenceError(
+                f"film model out of its range: {name} = {values[i]:.3g} {unit} (physical: "
+                f">= {low:g}" + (f" and <= {high:.3g} {unit})" if high < math.inf else ")"),
+                where=_angle(angle, i))
+
+
+def _contact_force_warnings(cycle: Any) -> list[str]:
+    load = float(np.max(np.hypot(cycle.load_x, cycle.load_y)))
+    force = float(np.max(cycle.contact_force))
+    if load <= 0.0 or force <= CONTACT_FORCE_WARNING_FACTOR * load:
+        return []
+    i = int(np.argmax(cycle.contact_force))
+    text = (f"contact force {force:.3g} N at {_angle(cycle.crank_angle, i)} is "
+            f"{force / load:.3g} x the peak load {load:.3g} N")
+    if force > CONTACT_FORCE_ERROR_FACTOR * load:
+        raise ConvergenceError(f"implausible result: {text} (film model past its range?)")
+    return [text + f" (plausible: <= {CONTACT_FORCE_WARNING_FACTOR:g} x)"]
+
+
+def _roughness_warnings(cycle: Any, case: Any) -> list[str]:
+    contact = getattr(case, "contact", None)
+    if contact is None or contact.model != "hard":
+        return []
+    thin = (cycle.h_min < contact.roughness) & ~np.asarray(cycle.in_contact, dtype=bool)
+    if not np.any(thin):
+        return []
+    i = int(np.flatnonzero(thin)[0])
+    return [f"film thickness {cycle.h_min[i] * 1e6:.3g} µm at {_angle(cycle.crank_angle, i)} "
+            f"is below the combined roughness {contact.roughness * 1e6:.3g} µm without "
+            "contact: asperities touch (consider [contact] model = \"greenwood_tripp\")"]
+
+
+def _mechanism_load_scale(results: Any, mechanism: Any) -> float:
+    """Peak gas force plus the inertia scale (m_piston + m_rod) R ω² [N]."""
+    crank = getattr(mechanism, "crank", None)
+    inertia = 0.0
+    if crank is not None and hasattr(crank, "piston_mass"):
+        inertia = (crank.piston_mass + crank.rod_mass) * crank.crank_radius * (
+            crank.crank_speed**2)
+    gas = getattr(results, "gas_force", None)
+    peak_gas = float(np.max(np.abs(gas))) if gas is not None and np.size(gas) else 0.0
+    return max(peak_gas + inertia, 1e-300)
+
+
+def check_mechanism(results: Any, mechanism: Any) -> list[str]:
+    """Warnings for a clearance-mechanism run (``MechanismResults``, ``Mechanism``)."""
+    from conrod.mechanism.geometry import seed_free_play_is_convex
+    from conrod.mechanism.results import JOINT_NAMES
+
+    check_finite(results, results.crank_angle, "mechanism result")
+    warnings = []
+    surface_speed = abs(mechanism.crank.crank_speed) * 0.5 * mechanism.big_end.diameter
+    impacts = results.settled_impacts()
+    joints = (mechanism.big_end, mechanism.small_end)
+    for index, (name, joint) in enumerate(zip(JOINT_NAMES, joints, strict=True)):
+        speeds = impacts.of_joint(index)
+        if speeds.size and float(speeds.max()) > surface_speed:
+            warnings.append(f"{name}: impact velocity {float(speeds.max()):.3g} m/s is above "
+                            f"the crank-pin surface speed {surface_speed:.3g} m/s")
+        force = float(np.max(results.contact_force[index]))
+        load = _mechanism_load_scale(results, mechanism)
+        if force > MECHANISM_FORCE_LIMIT:
+            warnings.append(f"{name}: contact force {force:.3g} N is above "
+                            f"{MECHANISM_FORCE_LIMIT:.0e} N")
+        elif force > MECHANISM_FORCE_FACTOR * load:
+            warnings.append(f"{name}: contact force {force:.3g} N is {force / load:.3g} x the "
+                            f"peak gas plus inertia force {load:.3g} N")
+        depth = float(np.max(-results.gap[index]))
+        if depth > PENETRATION_SHARE * joint.radial_clearance_min:
+            warnings.append(f"{name}: penetration {depth:.3g} m is more than "
+                            f"{PENETRATION_SHARE:g} of the radial clearance "
+                            f"{joint.radial_clearance_min:.3g} m")
+        major, minor = 0.5 * (joint.diameter + joint.clearance_max), 0.5 * (
+            joint.diameter + joint.clearance_min)
+        if mechanism.contact_geometry == "exact" and minor**2 / major < 0.5 * joint.diameter:
+            warnings.append(f"{name}: the worn shell's curvature radius at the major vertex "
+                            f"b²/a = {minor**2 / major:.4g} m is below the journal radius: "
+                            "two-point contact is modelled by the deeper point only")
+        if mechanism.contact_geometry == "seed" and not seed_free_play_is_convex(
+                joint.diameter, joint.clearance_max, joint.clearance_min):
+            warnings.append(f"{name}: the seed contact geometry makes the free-play region "
+                            "non-convex for this worn shell; impacts may be spurious (use "
+                            "clearance.contact_geometry = \"exact\")")
+    return warnings
