@@ -29,6 +29,7 @@ from conrod.film import reynolds_kernel as kernel
 from conrod.film import reynolds_multigrid as multigrid
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.characteristics import FilmGrid
+from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
 
 FrictionConvention = Literal["full_film", "film_fraction"]
@@ -56,13 +57,16 @@ class _Problem:
     h_rate: np.ndarray
     fixed: np.ndarray
     fixed_values: np.ndarray
+    cavitation: float = 0.0
+    """Cavitation bound of the solved variable (reduced pressure when piezoviscous) [Pa]."""
 
     def coarsened(self) -> _Problem:
         """The same problem on every other node (coinciding nodes, exact subsampling)."""
         g = self.grid
         coarse = FilmGrid(g.radius, g.width, g.n_theta // 2, g.n_z // 2)
         return _Problem(coarse, self.h[::2, ::2].copy(), self.h_rate[::2, ::2].copy(),
-                        self.fixed[::2, ::2].copy(), self.fixed_values[::2, ::2].copy())
+                        self.fixed[::2, ::2].copy(), self.fixed_values[::2, ::2].copy(),
+                        self.cavitation)
 
 
 @dataclass
@@ -87,6 +91,9 @@ class ReynoldsFilm:
     warm_start : bool  Start from the last converged field when available.
     use_symmetry : bool  Solve only z ≤ 0 when the problem is symmetric about the
         mid-plane (supply features symmetric, no deformation field; multigrid only).
+    pressure_viscosity : PressureViscosity or None  μ(p) law: the solver works on the
+        reduced pressure q(p) (:mod:`conrod.film.piezoviscosity`) and maps back; the
+        warm-start field is q. None = isoviscous.
     """
 
     geometry: BearingGeometry
@@ -100,6 +107,7 @@ class ReynoldsFilm:
     relaxation: float | None = None
     warm_start: bool = True
     use_symmetry: bool = True
+    pressure_viscosity: PressureViscosity | None = None
     name: str = "reynolds"
     _last_pressure: np.ndarray | None = field(default=None, init=False, repr=False)
 
@@ -140,17 +148,30 @@ class ReynoldsFilm:
     def force(self, state: FilmState) -> tuple[float, float]:
         """Film force on the journal (F_x, F_y) [N]."""
         problem = self._problem(state)
-        pressure, _ = self._solve_pressure(problem, state)
+        reduced, _ = self._solve_pressure(problem, state)
+        pressure = self._physical(reduced, state)
         return chars.pressure_force(pressure, self.film_grid, self._force_weights)
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """All film characteristics for one state (friction convention in ``extra``)."""
         problem = self._problem(state)
-        pressure, info = self._solve_pressure(problem, state)
-        result = self._characteristics(problem, pressure, state, info)
+        reduced, info = self._solve_pressure(problem, state)
+        pressure = self._physical(reduced, state)
+        result = self._characteristics(problem, reduced, pressure, state, info)
         if with_pressure:
             result.pressure = pressure
         return result
+
+    # ------------------------------------------------- piezoviscous hooks (q ↔ p)
+    def _reduced(self, pressure: float, state: FilmState) -> float:
+        """Solved variable for a pressure [Pa]: q(p) when piezoviscous, else p."""
+        law = self.pressure_viscosity
+        return pressure if law is None else float(law.to_reduced(pressure, state.viscosity))
+
+    def _physical(self, reduced: np.ndarray, state: FilmState) -> np.ndarray:
+        """Pressure field [Pa] from the solved field (identity when isoviscous)."""
+        law = self.pressure_viscosity
+        return reduced if law is None else law.from_reduced(reduced, state.viscosity)
 
     # ----------------------------------------------------------------- internals
     def _problem(self, state: FilmState) -> _Problem:
@@ -174,13 +195,14 @@ class ReynoldsFilm:
         h_rate = -state.velocity_x * self._cos - state.velocity_y * self._sin
         h_rate = np.repeat(h_rate, self.n_z + 1, axis=1)
         fixed = self._edges | self._supply
-        values = np.where(self._supply, g.supply_pressure, 0.0)
+        values = np.where(self._supply, self._reduced(g.supply_pressure, state), 0.0)
         if self.ambient_line_at_max_gap:
             psi = math.atan2(state.eccentricity_y, state.eccentricity_x)
             column = nearest_theta_index(psi + math.pi, self.film_grid)
             fixed[column, :] = True
             values[column, :] = 0.0
-        return _Problem(self.film_grid, h, h_rate, fixed, values)
+        return _Problem(self.film_grid, h, h_rate, fixed, values,
+                        self._reduced(g.cavitation_pressure, state))
 
     def _levels(self, problem: _Problem) -> list[_Problem]:
         """Coarse-to-fine problems: up to three nested grids for a cold start."""
@@ -203,7 +225,7 @@ class ReynoldsFilm:
         pressure[level.fixed] = level.fixed_values[level.fixed]
         if self.method == "multigrid":
             cycles, change = multigrid.solve_on_grid(
-                pressure, level.h, source, level.fixed, g, self.geometry.cavitation_pressure,
+                pressure, level.h, source, level.fixed, g, level.cavitation,
                 tolerance, self.max_iterations, symmetric,
             )
             sweeps = cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS)
@@ -211,7 +233,7 @@ class ReynoldsFilm:
             omega = self.relaxation if self.relaxation is not None else optimal_relaxation(g)
             sweeps, change = kernel.sor_solve(
                 pressure, a_east, a_north, source, level.fixed,
-                self.geometry.cavitation_pressure, omega, tolerance, self.max_iterations,
+                level.cavitation, omega, tolerance, self.max_iterations,
             )
         if not change <= tolerance:
             raise ConvergenceError(
@@ -236,8 +258,7 @@ class ReynoldsFilm:
             total = 0
             for k, level in enumerate(levels):
                 if k > 0:
-                    pressure = np.maximum(kernel.prolongate(pressure),
-                                          self.geometry.cavitation_pressure)
+                    pressure = np.maximum(kernel.prolongate(pressure), level.cavitation)
                 final = k == len(levels) - 1
                 tolerance = self.tolerance if final else 10.0 * self.tolerance
                 sweeps, change = self._sweep(level, pressure, state, tolerance)
@@ -246,17 +267,19 @@ class ReynoldsFilm:
         return pressure, {"sweeps": float(total), "relative_update": change,
                           "warm_start": float(warm), "multigrid": float(self.method == "multigrid")}
 
-    def _characteristics(self, problem: _Problem, pressure: np.ndarray, state: FilmState,
-                         info: dict) -> FilmResult:
+    def _characteristics(self, problem: _Problem, reduced: np.ndarray, pressure: np.ndarray,
+                         state: FilmState, info: dict) -> FilmResult:
+        """Characteristics; flows and cavitation from the solved (reduced) field, forces,
+        p_max and shear from the pressure with μ(p)."""
         grid, h = self.film_grid, problem.h
-        g = self.geometry
+        p_cav = problem.cavitation
         omega_sum = state.journal_speed + state.shell_speed
         a_east, a_north, source = kernel.assemble_coefficients(
             h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
         )
-        inflow = kernel.node_imbalance(pressure, a_east, a_north, source) / (12.0 * state.viscosity)
+        inflow = kernel.node_imbalance(reduced, a_east, a_north, source) / (12.0 * state.viscosity)
         free = ~problem.fixed
-        cavitated = free & (pressure <= g.cavitation_pressure)
+        cavitated = free & (reduced <= p_cav)
         leaking = self._edges.copy()
         leaking[:, 0] &= ~cavitated[:, 1]
         leaking[:, -1] &= ~cavitated[:, -2]
@@ -265,15 +288,20 @@ class ReynoldsFilm:
         if self.friction == "film_fraction":
             direction = 1 if omega_sum >= 0.0 else -1
             fraction = kernel.film_fraction_swift_stieber(
-                pressure, h, problem.fixed, g.cavitation_pressure, direction)
+                reduced, h, problem.fixed, p_cav, direction)
+        law = self.pressure_viscosity
+        viscosity = (state.viscosity if law is None
+                     else state.viscosity * law.viscosity_ratio(pressure, state.viscosity))
         torque_j, torque_b = chars.friction_torques(
-            pressure, h, grid, state.journal_speed, state.shell_speed, state.viscosity, fraction)
+            pressure, h, grid, state.journal_speed, state.shell_speed, viscosity, fraction)
         fx, fy = chars.pressure_force(pressure, grid, self._force_weights)
         h_min, h_angle = chars.minimum_film(h, grid)
         p_max, p_angle = chars.peak_pressure(pressure, grid)
         info = dict(info)
         info["cavitation_flow_m3_per_s"] = float(inflow[lost].sum())
         info["friction_full_film"] = float(self.friction == "full_film")
+        if law is not None:
+            info.update(law.diagnostics(reduced, pressure, state.viscosity))
         return FilmResult(
             force_x=fx, force_y=fy,
             friction_torque_journal=torque_j, friction_torque_shell=torque_b,
@@ -281,8 +309,7 @@ class ReynoldsFilm:
             supply_flow=float(inflow[problem.fixed & ~self._edges].sum()),
             min_film_thickness=h_min, min_film_angle=h_angle,
             max_pressure=p_max, max_pressure_angle=p_angle,
-            cavitated_fraction=chars.cavitated_fraction(
-                pressure, free, g.cavitation_pressure, grid),
+            cavitated_fraction=chars.cavitated_fraction(reduced, free, p_cav, grid),
             friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
             extra=info,
         )
