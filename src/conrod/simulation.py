@@ -104,7 +104,8 @@ class Simulation:
 
     def film(self) -> FilmModel:
         """The film model of ``[solver] film``."""
-        return build_film_model(self.solver, self.geometry())
+        return build_film_model(self.solver, self.geometry(),
+                                pressure_viscosity=self.case.lubricant.pressure_viscosity_law())
 
     def problem(self, viscosity: float | None = None) -> OrbitProblem:
         """Orbit problem at ``viscosity`` [Pa s] (default: at the supply temperature)."""
@@ -180,7 +181,8 @@ def _heat_balance_temperature(
     cycle = cycle_characteristics(problem, orbit.last)
     return effective_temperature(
         float(cycle.friction_power.mean()), float(cycle.side_flow.mean()),
-        lubricant.supply_temperature, lubricant.density, lubricant.specific_heat,
+        lubricant.supply_temperature, lubricant.density_at(lubricant.supply_temperature),
+        lubricant.specific_heat,
     )
 
 

@@ -86,7 +86,8 @@ class OrbitProblem:
     @property
     def is_short_bearing(self) -> bool:
         """True when the compiled short-bearing fast path applies."""
-        return type(self.film) is ShortBearingFilm and self.asperity is None
+        return (type(self.film) is ShortBearingFilm and self.asperity is None
+                and self.film.pressure_viscosity is None)
 
     def with_viscosity(self, viscosity: float) -> OrbitProblem:
         """Same problem with another viscosity [Pa s]."""
@@ -110,7 +111,7 @@ class OrbitProblem:
 
     def _film_force(self, history: FilmHistory | None) -> ForceFunction:
         mu, film = self.viscosity, self.film
-        if type(film) is ShortBearingFilm:
+        if type(film) is ShortBearingFilm and film.pressure_viscosity is None:
             g = film.geometry
             radius, width, c = g.radius, g.width, g.radial_clearance
 

@@ -239,7 +239,8 @@ def squeeze_applies(problem) -> bool:
     from conrod.film.reynolds import ReynoldsFilm
 
     film = problem.film
-    if type(film) is not ReynoldsFilm or problem.asperity is not None:
+    if (type(film) is not ReynoldsFilm or problem.asperity is not None
+            or film.pressure_viscosity is not None):  # forces need the map q → p
         return False
     g = film.geometry
     return (film.method == "multigrid" and not film.ambient_line_at_max_gap

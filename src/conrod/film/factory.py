@@ -54,18 +54,24 @@ def _grid_kwargs(solver: Any) -> dict[str, Any]:
 
 
 def build_film_model(
-    case_or_solver: Any, geometry: BearingGeometry, name: str | None = None
+    case_or_solver: Any, geometry: BearingGeometry, name: str | None = None,
+    pressure_viscosity: Any = None,
 ) -> FilmModel:
     """Film model for ``geometry`` from a :class:`Case` or its ``[solver]`` section.
 
     ``name`` overrides ``solver.film``. Grid models (reynolds, mass_conserving) receive
     ``n_theta``, ``n_z`` and ``film_tolerance``; ``table`` tabulates a Reynolds film on that
     grid; ``mobility`` builds its map from a Reynolds film on that grid; ``short`` with a full
-    central groove becomes :class:`GroovedShortBearingFilm`.
+    central groove becomes :class:`GroovedShortBearingFilm`. ``pressure_viscosity``
+    (a :class:`~conrod.film.piezoviscosity.PressureViscosity`, default: the case's
+    ``[lubricant]`` law) goes to the short and grid films; the map films refuse it.
     """
     solver = getattr(case_or_solver, "solver", case_or_solver)
     film_name = name or getattr(solver, "film", "short")
+    law = pressure_viscosity or _case_pressure_viscosity(case_or_solver)
     cls = _film_class(film_name)
+    if law is not None:
+        return _piezoviscous_film(cls, film_name, geometry, solver, law)
     if film_name in _GRID_MODELS:
         return _construct(cls, geometry, _grid_kwargs(solver))
     if film_name == "short" and central_groove_width(geometry) > 0.0:
@@ -77,6 +83,26 @@ def build_film_model(
         grid = {k: v for k, v in _grid_kwargs(solver).items() if k != "tolerance"}
         return _construct(cls, geometry, grid)
     return cls(geometry)
+
+
+def _case_pressure_viscosity(case_or_solver: Any) -> Any:
+    lubricant = getattr(case_or_solver, "lubricant", None)
+    return None if lubricant is None else lubricant.pressure_viscosity_law()
+
+
+def _piezoviscous_film(cls: Any, film_name: str, geometry: BearingGeometry, solver: Any,
+                       law: Any) -> FilmModel:
+    """Film with a pressure-dependent viscosity (short and grid films only)."""
+    if film_name in ("table", "mobility"):
+        raise CaseError(
+            f"solver.film = {film_name!r}: cannot be combined with lubricant.pressure_viscosity "
+            f"= {law.law!r} (its maps assume force ∝ μω); use film = 'short', 'reynolds' or "
+            "'mass_conserving', or pressure_viscosity = 'none'")
+    if film_name in _GRID_MODELS:
+        return cls(geometry, pressure_viscosity=law, **_grid_kwargs(solver))
+    if central_groove_width(geometry) > 0.0:
+        return GroovedShortBearingFilm.from_geometry(geometry, law)
+    return cls(geometry, pressure_viscosity=law)
 
 
 def _construct(cls: Any, geometry: BearingGeometry, kwargs: dict[str, Any]) -> FilmModel:
@@ -112,13 +138,15 @@ class GroovedShortBearingFilm:
     name: str = "short"
 
     @classmethod
-    def from_geometry(cls, geometry: BearingGeometry) -> GroovedShortBearingFilm:
+    def from_geometry(cls, geometry: BearingGeometry,
+                      pressure_viscosity: Any = None) -> GroovedShortBearingFilm:
         """Two-land film of ``geometry`` (with a full central groove)."""
         groove = central_groove_width(geometry)
         land_geometry = dataclasses.replace(
             geometry, width=0.5 * (geometry.width - groove), grooves=(), feed_holes=()
         )
-        return cls(geometry, _film_class("short")(land_geometry), groove)
+        land = _film_class("short")(land_geometry, pressure_viscosity=pressure_viscosity)
+        return cls(geometry, land, groove)
 
     def force(self, state: FilmState) -> tuple[float, float]:
         """Film force on the journal (F_x, F_y) [N]: both lands."""
