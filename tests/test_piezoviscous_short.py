@@ -83,3 +83,20 @@ def test_factory_passes_law_and_maps_refuse_it():
         with pytest.raises(CaseError, match="pressure_viscosity"):
             build_film_model(solver, BearingGeometry(D, L, C), name=name,
                              pressure_viscosity=BARUS)
+
+
+def test_simulation_builds_the_case_law_and_refuses_maps(repo):
+    import tomllib
+
+    from conrod.cases.case import Case
+    from conrod.simulation import Simulation
+
+    path = repo / "examples" / "passenger_car_diesel_2000rpm.toml"
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    data["lubricant"].update(pressure_viscosity="barus", pressure_viscosity_coefficient=1.5e-8)
+    case = Case.from_dict(data, base_dir=path.parent, path=path)
+    film = Simulation(case).film()
+    assert film.pressure_viscosity == case.lubricant.pressure_viscosity_law()
+    data["solver"] = {**data.get("solver", {}), "film": "table"}
+    with pytest.raises(CaseError, match="force ∝ μω"):
+        Simulation(Case.from_dict(data, base_dir=path.parent, path=path)).film()
