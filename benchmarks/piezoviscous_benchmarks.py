@@ -7,7 +7,8 @@ Solve timing: D = 50 mm, L = 20 mm, c = 25 µm, μ₀ = 6.5 mPa s, ω_j = 210 ra
 ε = 0.9 (p_max ≈ 40 MPa isoviscous, Barus α p_max ≈ 0.6), journal creeping by 0.2 % c per
 call as in an orbit step; median of 30 warm solves after one cold solve (numba compiled).
 Orbit rows: ``examples/passenger_car_diesel_2000rpm.toml`` (rigid bearing, μ₀ = 6.5 mPa s as
-shipped), isoviscous and with pressure–viscosity laws of typical engine oils.
+shipped) and ``examples/ruston_hornsby_6vebx_mk3.toml`` (μ₀ = 15 mPa s), isoviscous and with
+pressure–viscosity laws of typical engine oils.
 """
 
 from __future__ import annotations
@@ -66,9 +67,10 @@ def short_call_time(law: PressureViscosity | None, count: int = 2000) -> float:
     return 1e6 * (time.perf_counter() - start) / count
 
 
-def orbit_row(lubricant: dict, solver: dict) -> str:
+def orbit_row(lubricant: dict, solver: dict,
+              example: str = "passenger_car_diesel_2000rpm.toml") -> str:
     """Table cells h_min, p_max, friction, wall time of one periodic orbit (or the error)."""
-    path = ROOT / "examples" / "passenger_car_diesel_2000rpm.toml"
+    path = ROOT / "examples" / example
     data = tomllib.loads(path.read_text(encoding="utf-8"))
     data["lubricant"].update(lubricant)
     data.setdefault("solver", {}).update(solver)
@@ -116,6 +118,15 @@ def main() -> None:
     for label, solver, name in runs:
         lines.append(f"| {label} | {name} | {orbit_row(ORBIT_LAWS[name], solver)}")
         print(lines[-1], flush=True)
+    lines += ["", "## Ruston & Hornsby 6VEB-X Mk III (moderately loaded), rigid, periodic orbit",
+              "", "| film | law | h_min [µm] | p_max [MPa] | mean friction power [W] | wall [s] |",
+              "| --- | --- | --- | --- | --- | --- |"]
+    for label, solver in (("short (two lands), adaptive", {}), ("reynolds 72×16, quasi_static",
+                                                                 REYNOLDS)):
+        for name in ("isoviscous", "Roelands z = 0.6"):
+            row = orbit_row(ORBIT_LAWS[name], solver, "ruston_hornsby_6vebx_mk3.toml")
+            lines.append(f"| {label} | {name} | {row}")
+            print(lines[-1], flush=True)
     write_text(OUTPUT, "\n".join(lines) + "\n")
     print("\n".join(lines))
 
