@@ -75,3 +75,15 @@ def test_zero_coefficient_is_identity_and_roelands_slope():
 def test_roelands_needs_viscosity_above_its_asymptote():
     with pytest.raises(CaseError, match="Roelands"):
         PressureViscosity("roelands", roelands_index=0.6).to_reduced(1e6, 1e-5)
+
+
+def test_limit_where_reduced_pressure_rounds_to_its_asymptote():
+    """α p_L = 100: q(p_L) equals 1/α in floating point; the inverse stays finite and
+    monotone and returns p_L there (no division by zero)."""
+    law = PressureViscosity("barus", coefficient=1.0e-7, limit_pressure=1.0e9)
+    q_limit, _ = law.limit(MU0)
+    assert q_limit == 1.0 / law.coefficient
+    q = q_limit * np.array([0.5, 0.999999, 1.0 - 1e-16, 1.0, 1.0 + 1e-12])
+    p = law.from_reduced(q, MU0)
+    assert np.all(np.isfinite(p)) and np.all(np.diff(p) >= 0.0)
+    assert law.from_reduced(q_limit, MU0) == law.limit_pressure

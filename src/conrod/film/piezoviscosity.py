@@ -192,9 +192,12 @@ class PressureViscosity:
         """Pressure p(q) [Pa] for μ₀ [Pa s]; finite for every finite q."""
         q = np.asarray(reduced, dtype=float)
         q_limit, ratio_limit = self.limit(mu0)
-        inside = self._exact_pressure(np.minimum(q, q_limit), mu0)
-        return np.where(q <= q_limit, inside,
-                        self.limit_pressure + (q - q_limit) * ratio_limit)
+        below = q < q_limit
+        with np.errstate(divide="ignore", invalid="ignore"):  # q(p_L) may round to q(∞)
+            inside = self._exact_pressure(np.where(below, q, 0.0), mu0)
+        inside = np.minimum(np.where(np.isfinite(inside), inside, self.limit_pressure),
+                            self.limit_pressure)
+        return np.where(below, inside, self.limit_pressure + (q - q_limit) * ratio_limit)
 
     def initial_coefficient(self, mu0: float) -> float:
         """Pressure-viscosity coefficient at p = 0, d ln μ/dp [1/Pa]."""
