@@ -100,3 +100,12 @@ def test_simulation_builds_the_case_law_and_refuses_maps(repo):
     data["solver"] = {**data.get("solver", {}), "film": "table"}
     with pytest.raises(CaseError, match="force ∝ μω"):
         Simulation(Case.from_dict(data, base_dir=path.parent, path=path)).film()
+
+
+def test_table_over_a_piezoviscous_base_is_refused():
+    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.film.table import TabulatedFilm
+
+    base = ReynoldsFilm(BearingGeometry(D, L, C), 36, 8, pressure_viscosity=BARUS)
+    with pytest.raises(CaseError, match="force ∝ μω"):
+        TabulatedFilm(base, use_cache=False)
