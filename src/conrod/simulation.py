@@ -127,7 +127,8 @@ class Simulation:
         """The film model: the one given, else the one of ``[solver] film``."""
         if self._film is not None:
             return self._film
-        return build_film_model(self.solver, self.geometry())
+        return build_film_model(self.solver, self.geometry(),
+                                pressure_viscosity=self.case.lubricant.pressure_viscosity_law())
 
     def integrator(self) -> Integrator | str:
         """The orbit integrator: the object given, else the name of ``[solver]``."""
@@ -233,7 +234,8 @@ def _heat_balance_temperature(cycle: CycleResults, lubricant) -> float | None:
     """T_eff [°C] from the mean friction power and side flow of the cycle."""
     return effective_temperature(
         float(cycle.friction_power.mean()), float(cycle.side_flow.mean()),
-        lubricant.supply_temperature, lubricant.density, lubricant.specific_heat,
+        lubricant.supply_temperature, lubricant.density_at(lubricant.supply_temperature),
+        lubricant.specific_heat,
     )
 
 

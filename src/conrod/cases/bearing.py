@@ -17,6 +17,16 @@ Angles of supply features are in degrees, measured on the shell in the film fram
     [[bearing.feed_holes]]
     angle = 0.0
     diameter = 0.005
+
+    [[bearing.axial_grooves]]     # axial groove centred at θ = 180°
+    angle = 180.0
+    width = 0.003                # circumferential width [m]
+    length = 0.020               # axial length [m], default: the full shell width
+
+An axial groove becomes a :class:`~conrod.film.base.Groove` of angular extent
+width/R centred on ``angle`` and axial width ``length`` centred at mid-width, so every
+grid film (and the steady calculator) holds it at the supply pressure; a groove
+narrower than the grid spacing still marks its nearest column of nodes.
 """
 
 from __future__ import annotations
@@ -63,6 +73,21 @@ class FeedHoleSection(Section):
         return FeedHole(math.radians(self.angle), self.diameter, self.axial_position)
 
 
+class AxialGrooveSection(Section):
+    """Axial oil groove in the shell held at the supply pressure."""
+
+    angle: float = Field(ge=-360.0, le=360.0, description="Angle θ of the groove centre [deg]")
+    width: float = Field(gt=0.0, le=1.0, description="Circumferential width of the groove [m]")
+    length: float | None = Field(default=None, gt=0.0, le=5.0,
+                                 description="Axial length, default the shell width [m]")
+
+    def to_groove(self, radius: float, shell_width: float) -> Groove:
+        """SI :class:`Groove` on a journal of ``radius`` [m] and ``shell_width`` [m]."""
+        extent = self.width / radius
+        length = shell_width if self.length is None else self.length
+        return Groove(math.radians(self.angle) - 0.5 * extent, extent, length, 0.0)
+
+
 class BearingSection(Section):
     """Geometry of the big-end (or any journal) bearing and its oil supply."""
 
@@ -81,6 +106,8 @@ class BearingSection(Section):
                                          description="Oil grooves in the shell [-]")
     feed_holes: list[FeedHoleSection] = Field(default_factory=list,
                                               description="Oil-feed holes in the shell [-]")
+    axial_grooves: list[AxialGrooveSection] = Field(
+        default_factory=list, description="Axial oil grooves in the shell [-]")
 
     @model_validator(mode="after")
     def _consistent(self) -> BearingSection:
@@ -102,7 +129,8 @@ class BearingSection(Section):
         self.check_features_inside_width()
         return BearingGeometry(
             diameter=self.diameter, width=self.width, radial_clearance=self.radial_clearance,
-            grooves=tuple(g.to_groove() for g in self.grooves),
+            grooves=tuple(g.to_groove() for g in self.grooves) + tuple(
+                g.to_groove(0.5 * self.diameter, self.width) for g in self.axial_grooves),
             feed_holes=tuple(h.to_feed_hole() for h in self.feed_holes),
             supply_pressure=self.supply_pressure,
             cavitation_pressure=self.cavitation_pressure,
@@ -129,3 +157,10 @@ class BearingSection(Section):
                 raise range_error(f"bearing.feed_holes[{k}].diameter", hole.diameter,
                                   f"< half the journal circumference "
                                   f"{0.5 * math.pi * self.diameter:g}", "m")
+        for k, groove in enumerate(self.axial_grooves):
+            if groove.length is not None and groove.length > self.width:
+                raise range_error(f"bearing.axial_grooves[{k}].length", groove.length,
+                                  f"<= {self.width:g}", "m")
+            if groove.width >= math.pi * self.diameter:
+                raise range_error(f"bearing.axial_grooves[{k}].width", groove.width,
+                                  f"< {math.pi * self.diameter:g} (the circumference)", "m")

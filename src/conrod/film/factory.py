@@ -10,23 +10,45 @@ from typing import Any
 
 import numpy as np
 
+from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel
 from conrod.registry import film_class
 
 
 def build_film_model(
-    case_or_solver: Any, geometry: BearingGeometry, name: str | None = None
+    case_or_solver: Any, geometry: BearingGeometry, name: str | None = None,
+    pressure_viscosity: Any = None,
 ) -> FilmModel:
     """Film model for ``geometry`` from a :class:`Case` or its ``[solver]`` section.
 
     ``name`` overrides ``solver.film``. Grid models (reynolds, mass_conserving) take
     ``n_theta``, ``n_z`` and ``film_tolerance``; ``table`` tabulates a Reynolds film on that
     grid; ``mobility`` builds its map from a Reynolds film on that grid; ``short`` with a full
-    central groove becomes :class:`GroovedShortBearingFilm`.
+    central groove becomes :class:`GroovedShortBearingFilm`. ``pressure_viscosity``
+    (a :class:`~conrod.film.piezoviscosity.PressureViscosity`, default: the case's
+    ``[lubricant]`` law) goes to the short and grid films; the map films refuse it.
     """
     solver = getattr(case_or_solver, "solver", case_or_solver)
-    return film_class(name or solver.film).from_settings(geometry, solver)
+    film_name = name or solver.film
+    law = pressure_viscosity or _case_pressure_viscosity(case_or_solver)
+    if law is None:
+        return film_class(film_name).from_settings(geometry, solver)
+    if film_name in ("table", "mobility"):
+        raise CaseError(
+            f"solver.film = {film_name!r}: cannot be combined with lubricant.pressure_viscosity "
+            f"= {law.law!r} (its maps assume force ∝ μω); use film = 'short', 'reynolds' or "
+            "'mass_conserving', or pressure_viscosity = 'none'")
+    if film_name == "short" and central_groove_width(geometry) > 0.0:
+        return GroovedShortBearingFilm.from_geometry(geometry, law)
+    film = film_class(film_name).from_settings(geometry, solver)
+    return dataclasses.replace(film, pressure_viscosity=law)
+
+
+def _case_pressure_viscosity(case_or_solver: Any) -> Any:
+    """The case's pressure–viscosity law (None when isoviscous or given a bare solver)."""
+    lubricant = getattr(case_or_solver, "lubricant", None)
+    return None if lubricant is None else lubricant.pressure_viscosity_law()
 
 
 def central_groove_width(geometry: BearingGeometry) -> float:
@@ -55,15 +77,15 @@ class GroovedShortBearingFilm:
     name: str = "short"
 
     @classmethod
-    def from_geometry(cls, geometry: BearingGeometry) -> GroovedShortBearingFilm:
+    def from_geometry(cls, geometry: BearingGeometry,
+                      pressure_viscosity: Any = None) -> GroovedShortBearingFilm:
         """Two-land film of ``geometry`` (with a full central groove)."""
         groove = central_groove_width(geometry)
         land_geometry = dataclasses.replace(
             geometry, width=0.5 * (geometry.width - groove), grooves=(), feed_holes=()
-)
-        from conrod.film.short_bearing import ShortBearingFilm
-
-        return cls(geometry, ShortBearingFilm(land_geometry), groove)
+        )
+        land = film_class("short")(land_geometry, pressure_viscosity=pressure_viscosity)
+        return cls(geometry, land, groove)
 
     def force(self, state: FilmState) -> tuple[float, float]:
         """Film force on the journal (F_x, F_y) [N]: both lands."""
@@ -94,10 +116,13 @@ class GroovedShortBearingFilm:
         """No memory."""
         return None
 
-    def compiled_kernel(self) -> CompiledKernel:
-        """Twice the land's closed-form force; the orbit's generic compiled Newton loop."""
+    def compiled_kernel(self) -> CompiledKernel | None:
+        """Twice the land's closed-form force; the orbit's generic compiled Newton loop
+        (None when the lands have a pressure-dependent viscosity)."""
         from conrod.film.short_bearing import kernel_force, radial_damping
 
+        if self.land.pressure_viscosity is not None:
+            return None
         g = self.land.geometry
         return CompiledKernel(kernel_force, (g.radius, g.width, g.radial_clearance, 2.0),
                               None, radial_damping)

@@ -235,10 +235,11 @@ def linearise_by_differences(film, state: FilmState, relative_step: float = 1.0e
 
 
 def linearise(film, state: FilmState) -> FilmLinearisation:
-    """Stiffness and damping of any film model: the active-set solve for the Reynolds
-    film, central differences otherwise."""
+    """Stiffness and damping of any film model: the active-set solve for the isoviscous
+    Reynolds film, central differences otherwise (a pressure-dependent viscosity maps the
+    solved field nonlinearly to the pressure)."""
     from conrod.film.reynolds import ReynoldsFilm
 
-    if isinstance(film, ReynoldsFilm):
+    if isinstance(film, ReynoldsFilm) and film.pressure_viscosity is None:
         return linearise_reynolds(film, state)
     return linearise_by_differences(film, state)

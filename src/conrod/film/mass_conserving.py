@@ -46,6 +46,7 @@ from conrod.film.mass_conserving_kernel import (
     elrod_adams_steady,
     projected_sor,
 )
+from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.supply import nearest_theta_index, supply_mask
 
 FULL = 1.0 - 1.0e-9
@@ -107,6 +108,9 @@ class MassConservingFilm:
         multigrid of :mod:`conrod.film.reynolds_multigrid` (broken-film nodes held at p_cav
         like Dirichlet nodes; only z ≤ 0 is solved when film fraction, sources and supply
         are mirror-symmetric about the mid-plane) or plain projected SOR.
+    pressure_viscosity : PressureViscosity or None  μ(p) law: the p–ϑ problem is solved
+        for the reduced pressure q(p) (:mod:`conrod.film.piezoviscosity`; the Couette flux
+        has no μ, so the Elrod–Adams complementarity maps exactly) and mapped back.
     """
 
     geometry: BearingGeometry
@@ -117,6 +121,7 @@ class MassConservingFilm:
     omega: float | None = None
     friction: Literal["film_fraction", "full_film"] = "film_fraction"
     method: Literal["multigrid", "sor"] = "multigrid"
+    pressure_viscosity: PressureViscosity | None = None
     name: str = "mass_conserving"
     last_iterations: int = field(default=0, init=False)
 
@@ -212,7 +217,7 @@ class MassConservingFilm:
                             "(allowed: > 0 m); the journal touches the shell")
         return FilmFields(
             h=h, a_east=a_east, a_north=a_north, couette_east=couette, squeeze=squeeze,
-            edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed.copy(),
+            edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed_values(state),
             has_deformation=state.deformation is not None,
 )
 
@@ -228,10 +233,10 @@ class MassConservingFilm:
 ) -> tuple[FilmResult, np.ndarray]:
         f = self.fields(state)
         fraction = self._fraction(history, f)
-        pressure = self._start_pressure(f, fraction, warm)
+        pressure = self._start_pressure(f, fraction, warm, state)
         source = convection(f.couette_east, fraction) + f.squeeze * fraction
         active = f.free & (fraction >= FULL)
-        sweeps, change = self._solve_full_film(pressure, active, f, source)
+        sweeps, change = self._solve_full_film(pressure, active, f, source, state)
         self._check(sweeps, change, state)
         imbalance, from_edges, from_supply = cell_balance(
             pressure, fraction, f.free, f.edge, f.a_east, f.a_north, f.couette_east, f.squeeze)
@@ -246,7 +251,7 @@ class MassConservingFilm:
         result.extra.update(iterations=float(sweeps), relative_change=change,
                             content_rate_m3_per_s=content_rate)
         if with_pressure:
-            result.pressure = pressure + self.geometry.cavitation_pressure
+            result.pressure = self.gauge_pressure(pressure, state)
         return result, pressure.copy()
 
     def force(self, state: FilmState) -> tuple[float, float]:
@@ -255,10 +260,11 @@ class MassConservingFilm:
         return result.force_x, result.force_y
 
     def _solve_full_film(
-        self, pressure: np.ndarray, active: np.ndarray, f: FilmFields, source: np.ndarray
-) -> tuple[int, float]:
+        self, pressure: np.ndarray, active: np.ndarray, f: FilmFields, source: np.ndarray,
+        state: FilmState,
+    ) -> tuple[int, float]:
         """Pressure on the full-film nodes (in place on p̃); returns (sweeps, change)."""
-        p_cav = self.geometry.cavitation_pressure
+        p_cav = self.reduced_cavitation(state)
         if self.method == "sor":
             return projected_sor(pressure, active, f.a_east, f.a_north, source, -p_cav,
                                  self._omega, self.tolerance, self.max_iterations)
@@ -302,9 +308,9 @@ class MassConservingFilm:
         inlet = nearest_theta_index(psi + math.pi, self.film_grid)
         if inlet_line:
             f.supply[inlet, 1:-1] = True
-            f.fixed_pressure[inlet, :] = -self.geometry.cavitation_pressure
+            f.fixed_pressure[inlet, :] = -self.reduced_cavitation(state)
         fraction = np.ones_like(f.h)
-        pressure = self._start_pressure(f, fraction, None)
+        pressure = self._start_pressure(f, fraction, None, state)
         if cavitation == "jfo":
             sweeps, change = elrod_adams_steady(
                 pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east, f.squeeze,
@@ -314,7 +320,7 @@ class MassConservingFilm:
             source = convection(f.couette_east, fraction) + f.squeeze
             sweeps, change = projected_sor(
                 pressure, f.free.copy(), f.a_east, f.a_north, source,
-                -self.geometry.cavitation_pressure, self._omega, self.tolerance,
+                -self.reduced_cavitation(state), self._omega, self.tolerance,
                 self.max_iterations,
 )
         self._check(sweeps, change, state)
@@ -324,7 +330,7 @@ class MassConservingFilm:
                             film_end_angle_rad=film_end_angle(theta, pressure, inlet),
                             inlet_flow_m3_per_s=result.supply_flow)
         if with_pressure:
-            result.pressure = pressure + self.geometry.cavitation_pressure
+            result.pressure = self.gauge_pressure(pressure, state)
         return result
 
     # ------------------------------------------------------------------- helpers
@@ -334,9 +340,31 @@ class MassConservingFilm:
         fraction = np.clip(np.asarray(history, dtype=float), 0.0, 1.0)
         return np.where(f.free, fraction, 1.0)
 
+    # ------------------------------------------------- piezoviscous hooks (q ↔ p)
+    def reduced_cavitation(self, state: FilmState) -> float:
+        """Cavitation bound of the solved variable, q(p_cav) or p_cav [Pa]."""
+        p_cav = self.geometry.cavitation_pressure
+        law = self.pressure_viscosity
+        return p_cav if law is None else float(law.to_reduced(p_cav, state.viscosity))
+
+    def _fixed_values(self, state: FilmState) -> np.ndarray:
+        """Shifted Dirichlet values q(p) − q(p_cav) (p − p_cav when isoviscous) [Pa]."""
+        if self.pressure_viscosity is None:
+            return self._fixed.copy()
+        supply = float(self.pressure_viscosity.to_reduced(self.geometry.supply_pressure,
+                                                          state.viscosity))
+        return np.where(self._supply, supply, 0.0) - self.reduced_cavitation(state)
+
+    def gauge_pressure(self, shifted: np.ndarray, state: FilmState) -> np.ndarray:
+        """Gauge pressure p [Pa] from the solved, shifted field p̃ (or q̃)."""
+        law = self.pressure_viscosity
+        if law is None:
+            return shifted + self.geometry.cavitation_pressure
+        return law.from_reduced(shifted + self.reduced_cavitation(state), state.viscosity)
+
     def _start_pressure(self, f: FilmFields, fraction: np.ndarray,
-                        warm: np.ndarray | None) -> np.ndarray:
-        offset = -self.geometry.cavitation_pressure
+                        warm: np.ndarray | None, state: FilmState) -> np.ndarray:
+        offset = -self.reduced_cavitation(state)
         start = warm if warm is not None else np.full(f.h.shape, offset)
         pressure = np.where(f.free, start, f.fixed_pressure)
         return np.ascontiguousarray(np.where(f.free & (fraction < FULL), 0.0, pressure))

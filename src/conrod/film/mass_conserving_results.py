@@ -37,7 +37,7 @@ def film_characteristics(
     theta, _ = model.grid()
     dx, dz = model.spacing()
     d_theta = 2.0 * math.pi / theta.size
-    gauge = pressure + g.cavitation_pressure
+    gauge = model.gauge_pressure(pressure, state)
     weights = axial_weights(pressure.shape[1], dz)
     line_load = gauge @ weights
     force_x = -g.radius * d_theta * float(np.cos(theta) @ line_load)
@@ -46,6 +46,9 @@ def film_characteristics(
     wedge_part = g.radius * d_theta * float(np.sum(0.5 * gauge * dh_dtheta * weights))
     sliding = state.journal_speed - state.shell_speed
     shear = fraction if model.friction == "film_fraction" else 1.0
+    law = model.pressure_viscosity
+    if law is not None:  # μ(p)/μ₀ in the Couette shear
+        shear = shear * law.viscosity_ratio(gauge, state.viscosity)
     couette = (g.radius**3 * d_theta * state.viscosity * sliding
                * float(np.sum(shear / f.h * weights)))
     edge_in, supply_in = (flow / (12.0 * state.viscosity) for flow in inflows)
@@ -53,6 +56,10 @@ def film_characteristics(
     k_p = int(np.argmax(gauge))
     free = f.free
     content = float(np.sum((fraction * f.h)[free])) * dx * dz
+    extra = {"film_content_m3": content}
+    if law is not None:
+        extra.update(law.diagnostics(pressure + model.reduced_cavitation(state), gauge,
+                                     state.viscosity))
     return FilmResult(
         force_x=force_x, force_y=force_y,
         friction_torque_journal=wedge_part - couette,
@@ -64,5 +71,5 @@ def film_characteristics(
         max_pressure_angle=float(theta[k_p // gauge.shape[1]]),
         cavitated_fraction=float(np.mean(pressure[free] <= 0.0)) if free.any() else 0.0,
         friction_power=abs((wedge_part - couette) * sliding),
-        extra={"film_content_m3": content},
-)
+        extra=extra,
+    )

@@ -31,6 +31,7 @@ from conrod.film import reynolds_multigrid as multigrid
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest
 from conrod.film.characteristics import FilmGrid
+from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
 
 FrictionConvention = Literal["full_film", "film_fraction"]
@@ -72,13 +73,16 @@ class _Problem:
     h_rate: np.ndarray
     fixed: np.ndarray
     fixed_values: np.ndarray
+    cavitation: float = 0.0
+    """Cavitation bound of the solved variable (reduced pressure when piezoviscous) [Pa]."""
 
     def coarsened(self) -> _Problem:
         """The same problem on every other node (coinciding nodes, exact subsampling)."""
         g = self.grid
         coarse = FilmGrid(g.radius, g.width, g.n_theta // 2, g.n_z // 2)
         return _Problem(coarse, self.h[::2, ::2].copy(), self.h_rate[::2, ::2].copy(),
-                        self.fixed[::2, ::2].copy(), self.fixed_values[::2, ::2].copy())
+                        self.fixed[::2, ::2].copy(), self.fixed_values[::2, ::2].copy(),
+                        self.cavitation)
 
 
 @dataclass
@@ -104,6 +108,9 @@ class ReynoldsFilm:
         when it holds one; False: every solve is cold.
     use_symmetry : bool  Solve only z ≤ 0 when the problem is symmetric about the
         mid-plane (supply features symmetric, no deformation field; multigrid only).
+    pressure_viscosity : PressureViscosity or None  μ(p) law: the solver works on the
+        reduced pressure q(p) (:mod:`conrod.film.piezoviscosity`) and maps back; the
+        warm-start field is q. None = isoviscous.
     """
 
     geometry: BearingGeometry
@@ -117,6 +124,7 @@ class ReynoldsFilm:
     relaxation: float | None = None
     warm_start: bool = True
     use_symmetry: bool = True
+    pressure_viscosity: PressureViscosity | None = None
     name: str = "reynolds"
 
     def __post_init__(self) -> None:
@@ -177,17 +185,19 @@ class ReynoldsFilm:
                           memory: ReynoldsMemory) -> tuple[float, float, ReynoldsMemory]:
         """Film force (F_x, F_y) [N] warm-started from ``memory``, and the new memory."""
         problem = self._problem(state)
-        pressure, _ = self._solve_pressure(problem, state, memory)
+        reduced, _ = self._solve_pressure(problem, state, memory)
+        pressure = self._physical(reduced, state)
         fx, fy = chars.pressure_force(pressure, self.film_grid, self._force_weights)
-        return fx, fy, ReynoldsMemory(pressure)
+        return fx, fy, ReynoldsMemory(reduced)  # the warm start holds the solved field
 
     def sensitivities(self, state: FilmState):
         """Force, stiffness K = −∂F/∂e [N/m] and damping C = −∂F/∂ė [N s/m] from one
         solve and two adjoint solves on the converged active set
-        (:func:`conrod.film.linearised.linearise_reynolds`)."""
-        from conrod.film.linearised import linearise_reynolds
+        (:func:`conrod.film.linearised.linearise_reynolds`); central differences of the
+        force when the viscosity depends on pressure."""
+        from conrod.film.linearised import linearise
 
-        return linearise_reynolds(self, state)
+        return linearise(self, state)
 
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """All film characteristics for one state (cold solve)."""
@@ -199,24 +209,37 @@ class ReynoldsFilm:
         """All characteristics (friction convention in ``extra``) warm-started from
         ``memory``, and the memory after the solve."""
         problem = self._problem(state)
-        pressure, info = self._solve_pressure(problem, state, memory)
-        result = self._characteristics(problem, pressure, state, info)
+        reduced, info = self._solve_pressure(problem, state, memory)
+        pressure = self._physical(reduced, state)
+        result = self._characteristics(problem, reduced, pressure, state, info)
         if with_pressure:
             result.pressure = pressure
-        return result, ReynoldsMemory(pressure)
+        return result, ReynoldsMemory(reduced)
 
     def compiled_kernel(self) -> CompiledKernel | None:
         """Booker's squeeze-direction loop (:mod:`conrod.film.reynolds_squeeze`), exact for a
-        rigid multigrid film with p_supply = p_cav = 0 and no inlet line; else None."""
+        rigid, isoviscous multigrid film with p_supply = p_cav = 0 and no inlet line; else None."""
         g = self.geometry
         exact = (self.method == "multigrid" and not self.ambient_line_at_max_gap
-                 and g.supply_pressure == 0.0 and g.cavitation_pressure == 0.0)
+                 and g.supply_pressure == 0.0 and g.cavitation_pressure == 0.0
+                 and self.pressure_viscosity is None)  # homogeneous in v_s only if isoviscous
         return CompiledKernel(None, (), self._squeeze_cycle) if exact else None
 
     def _squeeze_cycle(self, request: QuasiStaticRequest) -> Any:
         from conrod.film.reynolds_squeeze import squeeze_cycle
 
         return squeeze_cycle(self, request)
+
+    # ------------------------------------------------- piezoviscous hooks (q ↔ p)
+    def _reduced(self, pressure: float, state: FilmState) -> float:
+        """Solved variable for a pressure [Pa]: q(p) when piezoviscous, else p."""
+        law = self.pressure_viscosity
+        return pressure if law is None else float(law.to_reduced(pressure, state.viscosity))
+
+    def _physical(self, reduced: np.ndarray, state: FilmState) -> np.ndarray:
+        """Pressure field [Pa] from the solved field (identity when isoviscous)."""
+        law = self.pressure_viscosity
+        return reduced if law is None else law.from_reduced(reduced, state.viscosity)
 
     # ----------------------------------------------------------------- internals
     def _problem(self, state: FilmState) -> _Problem:
@@ -240,13 +263,14 @@ class ReynoldsFilm:
         h_rate = -state.velocity_x * self._cos - state.velocity_y * self._sin
         h_rate = np.repeat(h_rate, self.n_z + 1, axis=1)
         fixed = self._edges | self._supply
-        values = np.where(self._supply, g.supply_pressure, 0.0)
+        values = np.where(self._supply, self._reduced(g.supply_pressure, state), 0.0)
         if self.ambient_line_at_max_gap:
             psi = math.atan2(state.eccentricity_y, state.eccentricity_x)
             column = nearest_theta_index(psi + math.pi, self.film_grid)
             fixed[column, :] = True
             values[column, :] = 0.0
-        return _Problem(self.film_grid, h, h_rate, fixed, values)
+        return _Problem(self.film_grid, h, h_rate, fixed, values,
+                        self._reduced(g.cavitation_pressure, state))
 
     def _levels(self, problem: _Problem) -> list[_Problem]:
         """Coarse-to-fine problems: up to three nested grids for a cold start, none
@@ -271,7 +295,7 @@ class ReynoldsFilm:
         pressure[level.fixed] = level.fixed_values[level.fixed]
         if self.method == "multigrid":
             cycles, change = multigrid.solve_on_grid(
-                pressure, level.h, source, level.fixed, g, self.geometry.cavitation_pressure,
+                pressure, level.h, source, level.fixed, g, level.cavitation,
                 tolerance, self.max_iterations, symmetric,
 )
             sweeps = cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS)
@@ -279,8 +303,8 @@ class ReynoldsFilm:
             omega = self.relaxation if self.relaxation is not None else optimal_relaxation(g)
             sweeps, change = kernel.sor_solve(
                 pressure, a_east, a_north, source, level.fixed,
-                self.geometry.cavitation_pressure, omega, tolerance, self.max_iterations,
-)
+                level.cavitation, omega, tolerance, self.max_iterations,
+            )
         if not change <= tolerance:
             raise ConvergenceError(
                 f"Reynolds {self.method} on {g.n_theta}x{g.n_z} after {sweeps} sweeps",
@@ -305,8 +329,7 @@ class ReynoldsFilm:
             total = 0
             for k, level in enumerate(levels):
                 if k > 0:
-                    pressure = np.maximum(kernel.prolongate(pressure),
-                                          self.geometry.cavitation_pressure)
+                    pressure = np.maximum(kernel.prolongate(pressure), level.cavitation)
                 final = k == len(levels) - 1
                 tolerance = (self.tolerance if final
                              else max(10.0 * self.tolerance, NESTED_TOLERANCE))
@@ -315,17 +338,19 @@ class ReynoldsFilm:
         return pressure, {"sweeps": float(total), "relative_update": change,
                           "warm_start": float(warm), "multigrid": float(self.method == "multigrid")}
 
-    def _characteristics(self, problem: _Problem, pressure: np.ndarray, state: FilmState,
-                         info: dict) -> FilmResult:
+    def _characteristics(self, problem: _Problem, reduced: np.ndarray, pressure: np.ndarray,
+                         state: FilmState, info: dict) -> FilmResult:
+        """Characteristics; flows and cavitation from the solved (reduced) field, forces,
+        p_max and shear from the pressure with μ(p)."""
         grid, h = self.film_grid, problem.h
-        g = self.geometry
+        p_cav = problem.cavitation
         omega_sum = state.journal_speed + state.shell_speed
         a_east, a_north, source = kernel.assemble_coefficients(
             h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
-)
-        inflow = kernel.node_imbalance(pressure, a_east, a_north, source) / (12.0 * state.viscosity)
+        )
+        inflow = kernel.node_imbalance(reduced, a_east, a_north, source) / (12.0 * state.viscosity)
         free = ~problem.fixed
-        cavitated = free & (pressure <= g.cavitation_pressure)
+        cavitated = free & (reduced <= p_cav)
         leaking = self._edges.copy()
         leaking[:, 0] &= ~cavitated[:, 1]
         leaking[:, -1] &= ~cavitated[:, -2]
@@ -334,15 +359,20 @@ class ReynoldsFilm:
         if self.friction == "film_fraction":
             direction = 1 if omega_sum >= 0.0 else -1
             fraction = kernel.film_fraction_swift_stieber(
-                pressure, h, problem.fixed, g.cavitation_pressure, direction)
+                reduced, h, problem.fixed, p_cav, direction)
+        law = self.pressure_viscosity
+        viscosity = (state.viscosity if law is None
+                     else state.viscosity * law.viscosity_ratio(pressure, state.viscosity))
         torque_j, torque_b = chars.friction_torques(
-            pressure, h, grid, state.journal_speed, state.shell_speed, state.viscosity, fraction)
+            pressure, h, grid, state.journal_speed, state.shell_speed, viscosity, fraction)
         fx, fy = chars.pressure_force(pressure, grid, self._force_weights)
         h_min, h_angle = chars.minimum_film(h, grid)
         p_max, p_angle = chars.peak_pressure(pressure, grid)
         info = dict(info)
         info["cavitation_flow_m3_per_s"] = float(inflow[lost].sum())
         info["friction_full_film"] = float(self.friction == "full_film")
+        if law is not None:
+            info.update(law.diagnostics(reduced, pressure, state.viscosity))
         return FilmResult(
             force_x=fx, force_y=fy,
             friction_torque_journal=torque_j, friction_torque_shell=torque_b,
@@ -350,8 +380,7 @@ class ReynoldsFilm:
             supply_flow=float(inflow[problem.fixed & ~self._edges].sum()),
             min_film_thickness=h_min, min_film_angle=h_angle,
             max_pressure=p_max, max_pressure_angle=p_angle,
-            cavitated_fraction=chars.cavitated_fraction(
-                pressure, free, g.cavitation_pressure, grid),
+            cavitated_fraction=chars.cavitated_fraction(reduced, free, p_cav, grid),
             friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
             extra=info,
 )

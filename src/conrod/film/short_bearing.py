@@ -18,6 +18,7 @@ import numpy as np
 
 from conrod.film.base import BearingGeometry, FilmResult, FilmState, film_thickness
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest, refuse_deformation
+from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.short_bearing_kernel import (
     ECCENTRICITY_LIMIT,
     short_bearing_force,
@@ -64,11 +65,14 @@ class ShortBearingFilm:
     geometry : BearingGeometry  Bearing geometry (supply features are ignored: the
         short-bearing theory has ambient pressure on both edges only).
     n_theta, n_z : int  Grid of the pressure field returned on request [-].
+    pressure_viscosity : PressureViscosity or None  μ(p) law: the closed form holds for
+        the reduced pressure, forces by quadrature (:mod:`conrod.film.short_piezoviscous`).
     """
 
     geometry: BearingGeometry
     n_theta: int = 144
     n_z: int = 17
+    pressure_viscosity: PressureViscosity | None = None
     name: str = "short"
 
     @classmethod
@@ -91,8 +95,11 @@ class ShortBearingFilm:
         """The short-bearing film has no memory."""
         return None
 
-    def compiled_kernel(self) -> CompiledKernel:
-        """Closed-form force, Booker's exact massless inversion, radial damping."""
+    def compiled_kernel(self) -> CompiledKernel | None:
+        """Closed-form force, Booker's exact massless inversion, radial damping; None with
+        a pressure-dependent viscosity (the compiled closed form is isoviscous)."""
+        if self.pressure_viscosity is not None:
+            return None
         g = self.geometry
         params = (g.radius, g.width, g.radial_clearance, 1.0)
         return CompiledKernel(kernel_force, params, self._quasi_static_cycle, radial_damping)
@@ -112,6 +119,8 @@ class ShortBearingFilm:
         """Film force on the journal (F_x, F_y) [N]; refuses a deformation field."""
         refuse_deformation(state, self.name)
         g = self.geometry
+        if self.pressure_viscosity is not None:
+            return self._piezoviscous(state)[0]
         return short_bearing_force(
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             state.journal_speed + state.shell_speed, state.viscosity,
@@ -134,7 +143,12 @@ class ShortBearingFilm:
             eps, e_rate / c, whirl, omega_sum, state.viscosity, g.radius, g.width, c
 )
         fx, fy = self.force(state)
+        extra: dict[str, float] = {}
+        if self.pressure_viscosity is not None:
+            (fx, fy), f_t, extra = self._piezoviscous(state)
         torque_j, torque_b = self._friction_torques(state, eps, f_t * eps * c)
+        couette_excess = self._couette_excess(state, eps, alpha, speed)
+        torque_j, torque_b = torque_j - couette_excess, torque_b + couette_excess
         p_peak, p_angle = self._peak_pressure(state, eps, alpha, speed, psi)
         side_flow = g.width * g.radius * c * speed
         sliding = state.journal_speed - state.shell_speed
@@ -145,11 +159,46 @@ class ShortBearingFilm:
             min_film_thickness=c * (1.0 - eps), min_film_angle=psi % (2.0 * math.pi),
             max_pressure=p_peak, max_pressure_angle=p_angle,
             cavitated_fraction=0.5 if speed > 0.0 else 0.0,
-            friction_power=abs(torque_j * sliding) if sliding else 0.0,
-)
+            friction_power=abs(torque_j * sliding) if sliding else 0.0, extra=extra,
+        )
         if with_pressure:
             result.pressure = self.pressure_field(state)
         return result
+
+    # ------------------------------------------------- piezoviscous hooks (q ↔ p)
+    def _piezoviscous(self, state: FilmState) -> tuple[tuple[float, float], float, dict]:
+        """((F_x, F_y) [N], F_t [N], diagnostics) with pressure-dependent viscosity."""
+        from conrod.film.short_piezoviscous import piezoviscous_polar
+
+        g, c = self.geometry, self.geometry.radial_clearance
+        ex, ey = state.eccentricity_x, state.eccentricity_y
+        e = math.hypot(ex, ey)
+        if e > 1.0e-12 * c:
+            cos_psi, sin_psi = ex / e, ey / e
+            e_rate = (ex * state.velocity_x + ey * state.velocity_y) / e
+            whirl = (ex * state.velocity_y - ey * state.velocity_x) / (e * e)
+        else:
+            v = math.hypot(state.velocity_x, state.velocity_y)
+            if v == 0.0:
+                return (0.0, 0.0), 0.0, {}
+            cos_psi, sin_psi, e_rate, whirl = state.velocity_x / v, state.velocity_y / v, v, 0.0
+        f_r, f_t, _, _, extra = piezoviscous_polar(
+            e / c, e_rate / c, whirl, state.journal_speed + state.shell_speed,
+            state.viscosity, g.radius, g.width, c, self.pressure_viscosity)
+        force = (f_r * cos_psi - f_t * sin_psi, f_r * sin_psi + f_t * cos_psi)
+        return force, f_t, extra
+
+    def _couette_excess(self, state: FilmState, eps: float, alpha: float,
+                        speed: float) -> float:
+        """Extra Couette moment of μ(p) − μ₀ on the active arc [N m] (0 when isoviscous)."""
+        if self.pressure_viscosity is None:
+            return 0.0
+        from conrod.film.short_piezoviscous import piezoviscous_couette_excess
+
+        g = self.geometry
+        return piezoviscous_couette_excess(
+            eps, alpha, speed, state.viscosity, g.radius, g.width, g.radial_clearance,
+            state.journal_speed - state.shell_speed, self.pressure_viscosity)
 
     def _friction_torques(
         self, state: FilmState, eps: float, e_times_ft: float
@@ -174,7 +223,10 @@ class ShortBearingFilm:
         shape = -np.sin(theta_rel - alpha) / (1.0 - eps * np.cos(theta_rel)) ** 3
         k = int(np.argmax(shape))
         scale = 3.0 * state.viscosity * speed * g.width**2 / (4.0 * g.radial_clearance**2)
-        return float(scale * shape[k]), float((theta_rel[k] + psi) % (2.0 * math.pi))
+        peak = float(scale * shape[k])
+        if self.pressure_viscosity is not None:
+            peak = float(self.pressure_viscosity.from_reduced(peak, state.viscosity))
+        return peak, float((theta_rel[k] + psi) % (2.0 * math.pi))
 
     def pressure_field(self, state: FilmState) -> np.ndarray:
         """Short-bearing pressure p(θ, z) [Pa] on :meth:`grid`, cavitated part at 0."""
@@ -186,5 +238,7 @@ class ShortBearingFilm:
         omega_sum = state.journal_speed + state.shell_speed
         source = 6.0 * state.viscosity * (omega_sum * dh_dtheta + 2.0 * dh_dt)
         profile = 0.25 * g.width**2 - z**2
-        pressure = -source[:, None] * profile[None, :] / (2.0 * h[:, None] ** 3)
-        return np.maximum(pressure, 0.0)
+        pressure = np.maximum(-source[:, None] * profile[None, :] / (2.0 * h[:, None] ** 3), 0.0)
+        if self.pressure_viscosity is not None:
+            pressure = self.pressure_viscosity.from_reduced(pressure, state.viscosity)
+        return pressure

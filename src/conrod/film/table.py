@@ -125,6 +125,9 @@ class TabulatedFilm:
     def __post_init__(self) -> None:
         self.geometry = self.base.geometry
         check_tabulable(self.geometry)
+        if getattr(self.base, "pressure_viscosity", None) is not None:
+            raise CaseError("table film over a piezoviscous base: not allowed (the table "
+                            "assumes force ∝ μω); use the base film directly")
         if self.n_eps < 3 or self.n_direction < 8 or self.n_direction % 2:
             raise CaseError(f"table grid n_eps = {self.n_eps}, n_direction = {self.n_direction}: "
                             "allowed n_eps >= 3, n_direction even >= 8")
