@@ -35,7 +35,7 @@ COMMANDS = {"run": ["flores2006_table_load", "passenger_car_diesel_2000rpm",
                     "passenger_car_diesel_1000rpm", "ruston_hornsby_6vebx_mk3",
                     "kamaz_740_truck_diesel"],
             "loads": ["passenger_car_diesel_2000rpm", "kamaz_740_truck_diesel"],
-            "mechanism": ["seed003_worn_rod_bearings"]}
+            "mechanism": ["kulayev_worn_rod_bearings"]}
 FIELD = re.compile(r"^(error|not converged): (case file '[^']*': )?([a-z_]+(\[\d+\])?"
                    r"(\.[a-z_]+(\[\d+\])?)*( = |: )|(load\.table|pressure trace|case file) '"
                    r"|--out '|run needs|film = |supply_pressure = |cavitation_pressure = )")

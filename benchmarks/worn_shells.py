@@ -51,7 +51,7 @@ def main(count: int) -> None:
         ratio, angle = rng.uniform(0.3, 1.0), rng.uniform(-90.0, 90.0)
         speed, load = rng.uniform(1000.0, 4000.0), rng.uniform(0.3, 1.0)
         for geometry in ("seed", "exact"):
-            data = Case.from_toml(REPO / "examples" / "seed003_worn_rod_bearings.toml")
+            data = Case.from_toml(REPO / "examples" / "kulayev_worn_rod_bearings.toml")
             raw = data.model_dump(exclude_none=True)
             big = raw["clearance"]["big_end"]
             big.update(clearance_max=clearance_max, clearance_min=ratio * clearance_max,

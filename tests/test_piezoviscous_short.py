@@ -95,11 +95,11 @@ def test_simulation_builds_the_case_law_and_refuses_maps(repo):
     data = tomllib.loads(path.read_text(encoding="utf-8"))
     data["lubricant"].update(pressure_viscosity="barus", pressure_viscosity_coefficient=1.5e-8)
     case = Case.from_dict(data, base_dir=path.parent, path=path)
-    film = Simulation(case).film()
+    film = Simulation(case).film_model()
     assert film.pressure_viscosity == case.lubricant.pressure_viscosity_law()
     data["solver"] = {**data.get("solver", {}), "film": "table"}
     with pytest.raises(CaseError, match="force ∝ μω"):
-        Simulation(Case.from_dict(data, base_dir=path.parent, path=path)).film()
+        Simulation(Case.from_dict(data, base_dir=path.parent, path=path)).film_model()
 
 
 def test_table_over_a_piezoviscous_base_is_refused():
