@@ -1,4 +1,4 @@
-"""Timing of the contact kernels and post-processing (issue 5). Run:
+"""Timing of the contact kernels and post-processing. Run:
 ``python benchmarks/contact_benchmarks.py`` — prints a Markdown table (after compilation).
 """
 

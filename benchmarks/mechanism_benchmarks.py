@@ -1,4 +1,4 @@
-"""Clearance-mechanism benchmarks (issue 6): run and sweep times, accuracy vs tolerance, and
+"""Clearance-mechanism benchmarks: run and sweep times, accuracy vs tolerance, and
 the in-house compiled integrator against SciPy's stiff/non-stiff solvers on the same RHS.
 
 Run:  python benchmarks/mechanism_benchmarks.py   (writes benchmarks/mechanism_benchmarks.md)

@@ -83,16 +83,16 @@ class HousingSection(Section):
     poisson_ratio: float = Field(default=0.3, ge=0.0, lt=0.5, description="Poisson ratio ν [-]")
     density: float = Field(default=7850.0, gt=100.0, le=25000.0,
                            description="Density ρ (steel default) [kg/m^3]")
-    mesh_file: Path | None = Field(default=None, description=(
+    mesh_file: Path | None = Field(default=None, strict=False, description=(
         "2-D mesh (gmsh .msh or any meshio format) in metres, big-end bore centred at the "
         "origin, physical groups big_end_bore (required) and clamp [-]"))
     clamp_group: str = Field(default="clamp", description=(
         "Physical group held fixed in mesh_file; falls back to small_end_bore [-]"))
     thickness: float | None = _length(
         "Plane-stress thickness of an imported mesh; default bearing width [m]", 2.0)
-    compliance_file: Path | None = Field(default=None, description=(
+    compliance_file: Path | None = Field(default=None, strict=False, description=(
         "Compliance matrix (.npz with angle_deg and compliance_m_per_N, or .csv) [-]"))
-    inertia_file: Path | None = Field(default=None, description=(
+    inertia_file: Path | None = Field(default=None, strict=False, description=(
         ".npz with angle_deg and inertia_base_m (n, 4): inertia base fields [-]"))
     stress_angles: list[float] = Field(default_factory=list, description=(
         "Crank angles of the stress analysis; empty: peak load and 360 [deg]"))

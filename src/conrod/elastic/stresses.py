@@ -140,7 +140,7 @@ def rigid_run_pressures(case, crank_angles_deg: list[float]):
     simulation = Simulation(case)
     results = simulation.run()
     cycle = results.cycle
-    film = simulation.film()
+    film = simulation.film_model()
     viscosity = results.summary.viscosity
     theta, z = film.grid()
     fields = []
