@@ -41,7 +41,7 @@ def cheap_engine_run() -> dict:
 
 def cheap_mechanism() -> dict:
     """Worn-shell mechanism example, one cycle, coarse output and loose tolerance."""
-    case = example_dict("seed003_worn_rod_bearings")
+    case = example_dict("kulayev_worn_rod_bearings")
     case["clearance"].update(cycles=1, tolerance=1.0e-3, output_step_deg=2.0)
     return case
 

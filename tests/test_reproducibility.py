@@ -27,7 +27,7 @@ RUN_EXAMPLES = ["flores2006_table_load", "passenger_car_diesel_2000rpm",
                 "passenger_car_diesel_1000rpm", "ruston_hornsby_6vebx_mk3",
                 "kamaz_740_truck_diesel"]
 ENGINE_EXAMPLES = ["passenger_car_diesel_2000rpm", "passenger_car_diesel_1000rpm",
-                   "kamaz_740_truck_diesel", "seed003_worn_rod_bearings"]
+                   "kamaz_740_truck_diesel", "kulayev_worn_rod_bearings"]
 TIMING_KEYS = (b'"wall_time_s"',)
 """summary.json lines that hold a measured duration (the only non-reproducible field)."""
 
@@ -84,7 +84,7 @@ def test_loads_are_byte_identical(tmp_path, name):
 
 
 def test_mechanism_example_is_byte_identical(tmp_path):
-    base = mechanism_case(Case.from_toml(EXAMPLES / "seed003_worn_rod_bearings.toml"))
+    base = mechanism_case(Case.from_toml(EXAMPLES / "kulayev_worn_rod_bearings.toml"))
     for attempt in ("first", "second"):
         results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)
         write_csv(tmp_path / attempt / "mechanism.csv", mechanism_table(results))

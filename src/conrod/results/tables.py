@@ -83,8 +83,15 @@ def cycle_table(results: RunResults) -> dict[str, np.ndarray]:
 
 
 def summary_items(results: RunResults) -> dict:
-    """summary.json content, including the contact post-processing items."""
-    items = results.summary.as_json_items()
+    """summary.json content: the headline, conrod version, case hash and resolved solver
+    settings first, then the summary and the contact post-processing items."""
+    from conrod import __version__
+    from conrod.results.summary import headline
+
+    items = {"headline": headline(results), "conrod_version": __version__,
+             "case_hash_sha256": results.case_hash, "converged": results.summary.periodic,
+             "solver_settings": results.settings}
+    items.update(results.summary.as_json_items())
     if results.contact is not None:
         items.update(results.contact.summary_items())
     return items
