@@ -154,3 +154,43 @@ def test_with_validates_the_changed_copy():
     assert faster.content_hash() != case.content_hash()
     with pytest.raises(CaseError, match="engine.speed"):
         case.with_(engine__speed=-5)
+
+
+def test_run_api_and_dataframe_with_units(tmp_path):
+    """conrod.run on a case object; every DataFrame column name ends in its unit and the
+    values agree with the fields (angles converted to degrees)."""
+    import conrod
+
+    case = conrod.Case.from_dict(_periodic_case(), base_dir=EXAMPLES)
+    results = conrod.run(case)
+    frame = results.cycle.to_dataframe()
+    units = ("_deg", "_m", "_m_s", "_Pa", "_N_m", "_W", "_m3_s", "_N", "_rad_s", "_1")
+    assert all(name.endswith(units) for name in frame.columns if name != "in_contact")
+    assert np.array_equal(frame["h_min_m"].to_numpy(), results.cycle.h_min)
+    assert np.allclose(frame["crank_angle_deg"].to_numpy(), np.degrees(results.cycle.crank_angle))
+
+
+def test_no_figures_writes_no_png_and_a_rerun_leaves_no_stale_file(runner, tmp_path):
+    case = write_case(tmp_path, _periodic_case())
+    out = tmp_path / "o"
+    first = runner.invoke(app, ["run", str(case), "--out", str(out), "--accept-warnings"])
+    assert first.exit_code == 0, first.output
+    assert list(out.glob("*.png"))
+    (out / "notes.txt").write_text("mine")  # a file of the user's, not of conrod's
+    second = runner.invoke(app, ["run", str(case), "--out", str(out), "--no-figures",
+                                 "--accept-warnings"])
+    assert second.exit_code == 0, second.output
+    assert not list(out.rglob("*.png"))  # the previous figures are gone, none written
+    manifest = json.loads((out / "manifest.json").read_text())
+    listed = {entry["file"] for entry in manifest["tables"]} | {"manifest.json"}
+    assert {p.name for p in out.iterdir()} == listed | {"notes.txt"}
+
+
+@pytest.mark.parametrize("command", ["housing", "stress", "sweep"])
+def test_every_command_checks_out_before_computing(runner, tmp_path, command):
+    taken = tmp_path / "taken"
+    taken.write_text("keep me")
+    result = runner.invoke(app, [command, str(EXAMPLES / "passenger_car_diesel_2000rpm.toml"),
+                                 "--out", str(taken)])
+    assert result.exit_code == 2 and "is an existing file" in result.output
+    assert taken.read_text() == "keep me"

@@ -78,6 +78,21 @@ class CycleResults:
         """Crank angle [deg]."""
         return np.degrees(self.crank_angle)
 
+    def to_dataframe(self) -> Any:
+        """The cycle as a pandas DataFrame, one row per output angle, the columns of
+        ``cycle.csv`` with the unit in each name (``h_min_m``, ``p_max_Pa``,
+        ``crank_angle_deg``, ...; angles in degrees)."""
+        import pandas as pd
+
+        from conrod.results.tables import CYCLE_COLUMNS, DATAFRAME_NAMES
+
+        columns = {}
+        for column, (name, convert) in CYCLE_COLUMNS.items():
+            values = np.asarray(getattr(self, name))
+            columns[DATAFRAME_NAMES.get(column, column)] = (
+                convert(values) if convert is not None else values)
+        return pd.DataFrame(columns)
+
 
 @dataclass(frozen=True)
 class RunSummary:

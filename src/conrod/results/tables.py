@@ -45,6 +45,11 @@ CYCLE_COLUMNS = {
 }
 """cycle.csv column → (CycleResults field, conversion). eccentricity_x/_y are in [m]."""
 
+DATAFRAME_NAMES = {"eccentricity_x": "eccentricity_x_m", "eccentricity_y": "eccentricity_y_m",
+                   "eccentricity_ratio": "eccentricity_ratio_1"}
+"""cycle.csv columns renamed in :meth:`CycleResults.to_dataframe` so that every name ends
+in its unit (``_1``: dimensionless)."""
+
 LOADS_COLUMNS = (
     ("crank_angle_deg", lambda r: r.crank_angle_deg),
     ("cylinder_pressure_Pa", lambda r: r.cylinder_pressure),
