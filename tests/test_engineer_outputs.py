@@ -194,3 +194,43 @@ def test_every_command_checks_out_before_computing(runner, tmp_path, command):
                                  "--out", str(taken)])
     assert result.exit_code == 2 and "is an existing file" in result.output
     assert taken.read_text() == "keep me"
+
+
+@pytest.mark.parametrize("peak_deg", [0.0, 5.0, 180.0, 357.5])
+def test_pressure_map_peak_lies_inside_the_plot_away_from_its_edges(peak_deg):
+    """A field whose peak sits at ``peak_deg`` (also at the 0°/360° seam) is drawn with the
+    peak in the middle of the window: at least 90° from either edge."""
+    import conrod.plotting.orbit_plots as orbit_plots
+    from conrod import Case, Simulation
+
+    results = Simulation(Case.from_dict(_periodic_case(), base_dir=EXAMPLES)).run()
+    theta = np.linspace(0.0, 2.0 * np.pi, 145)
+    z = np.linspace(-0.01, 0.01, 9)
+    distance = np.angle(np.exp(1j * (theta - np.radians(peak_deg))))
+    field = 1e6 * np.exp(-(distance / 0.2) ** 2)[:, None] * np.cos(z / 0.02)[None, :]
+    results = dataclasses.replace(results, pressure_at_p_max=field, pressure_grid=(theta, z))
+    ax = orbit_plots.plot_pressure_map(results).axes[0]
+    mesh = ax.collections[0]
+    values = np.asarray(mesh.get_array()).reshape(z.size, -1)
+    edges = mesh.get_coordinates()[0, :, 0]
+    column = int(np.argmax(values.max(axis=0)))
+    x_peak = 0.5 * (edges[column] + edges[column + 1])
+    left, right = ax.get_xlim()
+    assert min(x_peak - left, right - x_peak) > 90.0
+    assert np.isclose(x_peak % 360.0, peak_deg % 360.0, atol=2.6)
+
+
+def test_run_registers_the_film_thickness_map_and_envelope():
+    """Independent answer for the envelope: h = c − |e| at the shell angle facing the
+    journal centre, so min over θ and φ of the map equals min over φ of c − |e|."""
+    import conrod.plotting  # noqa: F401
+    from conrod import Case, Simulation
+    from conrod.plotting.film_maps import film_thickness_over_cycle
+    from conrod.results.output import figures
+
+    results = Simulation(Case.from_dict(_periodic_case(), base_dir=EXAMPLES)).run()
+    files = {spec.file for spec in figures(results)}
+    assert {"film_thickness_map.png", "min_film_envelope.png"} <= files
+    _, h = film_thickness_over_cycle(results)
+    e = np.hypot(results.cycle.eccentricity_x, results.cycle.eccentricity_y)
+    assert h.min() == pytest.approx((results.clearance - e).min(), rel=1e-4)

@@ -7,7 +7,13 @@ from conrod.contact.analysis import ContactResults
 from conrod.loads.engine_loads import EngineLoads
 from conrod.mechanism.results import MechanismRun
 from conrod.mechanism.sweep import SweepRun
-from conrod.plotting import contact_plots, loads_plots, mechanism_plots, orbit_plots
+from conrod.plotting import (
+    contact_plots,
+    film_maps,
+    loads_plots,
+    mechanism_plots,
+    orbit_plots,
+)
 from conrod.results.cycle_results import RunResults
 from conrod.results.output import FigureSpec, figures
 
@@ -29,6 +35,14 @@ def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
                    "Film pressure p [MPa] over shell angle θ [deg] and axial position z [mm] "
                    "at the crank angle of the largest p_max.",
                    lambda: orbit_plots.plot_pressure_map(results)),
+        FigureSpec("film_thickness_map.png", "Film thickness over shell and cycle",
+                   "Film thickness h [µm] over crank angle φ [deg] and shell angle θ [deg] "
+                   "(rigid bore), with the contact threshold h_c and the angle of h_min.",
+                   lambda: film_maps.plot_film_thickness_map(results)),
+        FigureSpec("min_film_envelope.png", "Shell envelope of minimum film thickness",
+                   "Smallest film thickness [µm] each shell angle θ [deg] sees over the cycle, "
+                   "and the crank angle [deg] where it occurs.",
+                   lambda: film_maps.plot_min_film_envelope(results)),
 )
     return own + (figures(results.contact) if results.contact is not None else ())
 
