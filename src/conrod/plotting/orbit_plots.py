@@ -105,11 +105,24 @@ def plot_film_thickness_and_pressure(results: RunResults) -> Figure:
     top.set_ylim(bottom=0.0)
     bottom.plot(cycle.crank_angle_deg, cycle.p_max / 1e6, color="C1")
     bottom.set_ylabel("p_max [MPa]")
+    _exhaust_note(bottom, results)
     bottom.set_xlabel("crank angle φ [deg]")
     for ax in (top, bottom):
         ax.grid(True, lw=0.3)
     fig.suptitle("Minimum film thickness and maximum film pressure", fontsize=10)
     return fig
+
+
+def _exhaust_note(ax, results: RunResults) -> None:
+    """Mark the exhaust opening of the parametric gas-pressure model ([D3] §2): the cylinder
+    pressure steps there from expansion to exhaust pressure, and so does every load."""
+    opening = (results.model or {}).get("exhaust_opening_deg")
+    if opening is None:
+        return
+    ax.axvline(float(opening), color="0.5", ls=":", lw=0.8)
+    ax.annotate("exhaust opens: step of the\ngas-pressure model", (float(opening), 1.0),
+                xycoords=("data", "axes fraction"), xytext=(4, -4), textcoords="offset points",
+                fontsize=7, va="top", color="0.35")
 
 
 def plot_friction_and_flow(results: RunResults) -> Figure:
