@@ -18,11 +18,17 @@ from conrod.loads.engine_loads import EngineLoads
 KN = 1.0e-3
 
 
-def _label_angles(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, every: float) -> None:
-    """Mark the points at multiples of ``every`` degrees; label those not crowding others."""
-    marks = np.isclose(np.mod(angle_deg + 1e-9, every), 0.0, atol=1e-6)
+def _label_angles(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, every: float,
+                  span: float | None = None) -> None:
+    """Mark the points at multiples of ``every`` degrees; label those not crowding others
+    (closer than 5 % of ``span``, default the extent of the finite points; NaN points are
+    not drawn)."""
+    marks = np.isclose(np.mod(angle_deg + 1e-9, every), 0.0, atol=1e-6) & np.isfinite(x + y)
     axes.plot(x[marks], y[marks], "o", ms=3, color="k")
-    span = max(float(np.ptp(x)), float(np.ptp(y)), 1e-300)
+    if span is None:
+        finite = np.isfinite(x + y)
+        span = max(float(np.ptp(x[finite])), float(np.ptp(y[finite]))) if finite.any() else 0.0
+    span = max(span, 1e-300)
     placed: list[tuple[float, float]] = [(0.0, 0.0)]  # keep the pole O readable
     for xi, yi, ai in zip(x[marks], y[marks], angle_deg[marks], strict=True):
         if min(math.hypot(xi - px, yi - py) for px, py in placed) < 0.05 * span:
@@ -74,12 +80,13 @@ def _mark_poles(axes, pole) -> None:
 
 
 def _zoom_on_low_loads(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, pole) -> None:
-    """Zoom on the gas-exchange part of the diagram (within the 75th percentile of |S|)."""
+    """Zoom on the gas-exchange part of the diagram (1.5 x the median |S|)."""
     radius = np.hypot(x, y)
-    extent = 1.3 * float(np.percentile(radius, 75.0))
+    extent = 1.5 * float(np.median(radius))
     near = radius <= extent
     axes.plot(np.append(x, x[0]), np.append(y, y[0]), lw=1.0, color="C0")
-    _label_angles(axes, np.where(near, x, np.nan), np.where(near, y, np.nan), angle_deg, 30.0)
+    _label_angles(axes, np.where(near, x, np.nan), np.where(near, y, np.nan), angle_deg, 30.0,
+                  span=2.0 * extent)
     _mark_poles(axes, pole)
     axes.set_xlim(-extent, extent)
     axes.set_ylim(-extent, extent)
@@ -101,7 +108,8 @@ def plot_load_over_crank_angle(loads: EngineLoads) -> Figure:
     top.set_ylabel("load magnitude [kN]")
     top.legend(fontsize=8)
     bottom.plot(angle, loads.gas_force * KN, color="0.5", lw=0.9, label="gas force P_g")
-    bottom.plot(angle, loads.radial_force * KN, color="C1", label="radial R (+ towards crank axis)")
+    bottom.plot(angle, -loads.radial_force * KN, color="C1",
+                label="radial −R (+ outward along the crank, as in the polar diagram)")
     bottom.plot(angle, loads.tangential_force * KN, color="C2", label="tangential T (+ rotation)")
     bottom.set_ylabel("force [kN]")
     bottom.set_xlabel("crank angle φ from firing TDC [deg]")
