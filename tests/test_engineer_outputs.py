@@ -234,3 +234,17 @@ def test_run_registers_the_film_thickness_map_and_envelope():
     _, h = film_thickness_over_cycle(results)
     e = np.hypot(results.cycle.eccentricity_x, results.cycle.eccentricity_y)
     assert h.min() == pytest.approx((results.clearance - e).min(), rel=1e-4)
+
+
+def test_loads_of_a_load_table_case(runner, tmp_path):
+    """A bearing given by its load table gets its load diagram; the summary's peak is the
+    largest |F| of the table (independent: read back from loads.csv)."""
+    out = tmp_path / "o"
+    result = runner.invoke(app, ["loads", str(EXAMPLES / "flores2006_table_load.toml"),
+                                 "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert (out / "polar_load_diagram.png").stat().st_size > 1000
+    table = np.genfromtxt(out / "loads.csv", delimiter=",", names=True)
+    summary = json.loads((out / "loads_summary.json").read_text())
+    assert summary["peak_load_N"] == pytest.approx(
+        np.hypot(table["load_x_N"], table["load_y_N"]).max(), rel=1e-9)

@@ -236,3 +236,42 @@ def _arrow(axes, start, end, label: str, color: str) -> None:
     axes.annotate(
         label, tuple(end), fontsize=8, color=color, xytext=(3, 3), textcoords="offset points"
 )
+
+
+def plot_table_load_polar(loads) -> Figure:
+    """Polar load diagram of a load table in the bearing (film) frame: the tip of the load
+    vector pressing the journal on the shell [kN], labelled by crank angle."""
+    x, y = loads.load_x * KN, loads.load_y * KN
+    angle = np.degrees(loads.crank_angle)
+    figure = Figure(figsize=(6.5, 6.5))
+    axes = figure.subplots()
+    axes.plot(np.append(x, x[0]), np.append(y, y[0]), lw=1.2, color="C0",
+              label="tip of the load on the shell")
+    axes.plot(0.0, 0.0, "s", color="C3")
+    marks = np.arange(np.ceil(angle[0] / 30.0) * 30.0, angle[-1] + 1e-9, 30.0) + 0.0  # no -0
+    _label_angles(axes, np.interp(marks, angle, x), np.interp(marks, angle, y), marks, 30.0,
+                  span=max(float(np.ptp(x)), float(np.ptp(y))))
+    axes.axhline(0.0, color="0.7", lw=0.6)
+    axes.axvline(0.0, color="0.7", lw=0.6)
+    axes.set_aspect("equal", adjustable="datalim")
+    axes.set_xlabel("F_x, bearing (film) frame [kN]")
+    axes.set_ylabel("F_y [kN]")
+    axes.set_title("Polar load diagram (bearing frame, from the load table)", fontsize=10)
+    axes.legend(loc="upper right", fontsize=8)
+    axes.grid(True, lw=0.3)
+    return figure
+
+
+def plot_table_load_over_crank_angle(loads) -> Figure:
+    """Load components and magnitude [kN] of a load table against crank angle [deg]."""
+    angle = np.degrees(loads.crank_angle)
+    figure = Figure(figsize=(9.0, 4.5))
+    axes = figure.subplots()
+    axes.plot(angle, np.hypot(loads.load_x, loads.load_y) * KN, color="C0", label="|F|")
+    axes.plot(angle, loads.load_x * KN, color="C1", label="F_x (bearing frame)")
+    axes.plot(angle, loads.load_y * KN, color="C2", label="F_y (bearing frame)")
+    axes.set_xlabel("crank angle φ [deg]")
+    axes.set_ylabel("load [kN]")
+    axes.legend(fontsize=8)
+    axes.grid(True, lw=0.3)
+    return figure

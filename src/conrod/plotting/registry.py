@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 from conrod.contact.analysis import ContactResults
+from conrod.loads.cycle import LoadCycle
 from conrod.loads.engine_loads import EngineLoads
 from conrod.mechanism.results import MechanismRun
 from conrod.mechanism.sweep import SweepRun
@@ -82,6 +83,20 @@ def _loads_figures(loads: EngineLoads) -> tuple[FigureSpec, ...]:
                    "angle [deg].",
                    lambda: loads_plots.plot_wear_diagram(loads)),
 )
+
+
+@figures.register
+def _table_load_figures(loads: LoadCycle) -> tuple[FigureSpec, ...]:
+    return (
+        FigureSpec("polar_load_diagram.png", "Polar load diagram",
+                   "Load on the shell [kN] in the bearing frame of the load table, labelled "
+                   "by crank angle [deg].",
+                   lambda: loads_plots.plot_table_load_polar(loads)),
+        FigureSpec("load_vs_crank_angle.png", "Load over the cycle",
+                   "Load components in the bearing frame and magnitude [kN] against crank "
+                   "angle [deg].",
+                   lambda: loads_plots.plot_table_load_over_crank_angle(loads)),
+    )
 
 
 @figures.register

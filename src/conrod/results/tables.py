@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from conrod.contact.analysis import ContactResults
+from conrod.loads.cycle import LoadCycle
 from conrod.loads.engine_loads import EngineLoads
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults, MechanismRun
 from conrod.mechanism.sweep import SweepRun
@@ -249,3 +250,38 @@ def _sweep_tables(run: SweepRun) -> tuple[TableSpec, ...]:
 @result_kind.register
 def _sweep_kind(run: SweepRun) -> str:
     return "mechanism_sweep"
+
+
+# ------------------------------------------------------------------ load table
+def table_load_columns(loads: LoadCycle) -> dict[str, np.ndarray]:
+    """loads.csv of a load-table case: the load in the bearing (film) frame."""
+    return {"crank_angle_deg": np.degrees(loads.crank_angle), "load_x_N": loads.load_x,
+            "load_y_N": loads.load_y, "load_N": np.hypot(loads.load_x, loads.load_y),
+            "journal_speed_rad_s": loads.journal_speed, "shell_speed_rad_s": loads.shell_speed}
+
+
+def table_load_summary(loads: LoadCycle) -> dict:
+    """Peak and mean load [N] of a load table, the peak's crank angle [deg]."""
+    magnitude = np.hypot(loads.load_x, loads.load_y)
+    i = int(np.argmax(magnitude))
+    return {"peak_load_N": float(magnitude[i]),
+            "peak_load_crank_angle_deg": float(np.degrees(loads.crank_angle[i])),
+            "mean_load_N": float(magnitude.mean()), "cycle_deg": float(np.degrees(loads.cycle)),
+            "frame": "bearing (film) frame, as given in the load table"}
+
+
+@tables.register
+def _table_load_tables(loads: LoadCycle) -> tuple[TableSpec, ...]:
+    return (
+        TableSpec("loads.csv", "Bearing load from the load table",
+                  "Load components in the bearing frame and magnitude [N], surface speeds "
+                  "[rad/s] against crank angle [deg].", lambda: table_load_columns(loads)),
+        TableSpec("loads_summary.json", "Load summary",
+                  "Peak load [N] and its crank angle [deg], mean load [N].",
+                  lambda: table_load_summary(loads)),
+    )
+
+
+@result_kind.register
+def _table_load_kind(loads: LoadCycle) -> str:
+    return "loads"
