@@ -18,7 +18,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conrod import Case, Simulation
-from conrod.cli.loads_command import loads_table
+from conrod.results.tables import loads_table
 from conrod.errors import CaseError, ConvergenceError
 from conrod.io.atomic import first_non_finite
 from conrod.loads.engine_loads import compute_engine_loads

@@ -13,7 +13,7 @@ import pytest
 
 import conrod.plotting  # noqa: F401  (registers the figures)
 from conrod import Case, Simulation
-from conrod.cli.loads_command import loads_table
+from conrod.results.tables import loads_table
 from conrod.cli.mechanism_command import impacts_table, mechanism_table
 from conrod.io.atomic import write_csv, write_json
 from conrod.loads.engine_loads import compute_engine_loads

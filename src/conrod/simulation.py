@@ -171,7 +171,7 @@ class Simulation:
     def _model_description(self) -> dict[str, str]:
         """What is computed, in words, for the headline."""
         law = self._lubricant.pressure_viscosity_law()
-        model = {"housing": f"{self.case.housing.model} housing",
+        model = {"housing": "rigid bore",  # the orbit of this Simulation is rigid
                  "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
         if self.case.engine is not None and self.case.engine.pressure_model is not None:
             model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
