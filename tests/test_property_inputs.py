@@ -18,7 +18,6 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conrod import Case, Simulation
-from conrod.results.tables import loads_table
 from conrod.errors import CaseError, ConvergenceError
 from conrod.io.atomic import first_non_finite
 from conrod.loads.engine_loads import compute_engine_loads
@@ -27,7 +26,7 @@ from conrod.loads.table_load import load_cycle_from_table
 from conrod.mechanism.setup import mechanism_case
 from conrod.mechanism.simulation import simulate
 from conrod.results.plausibility import check_mechanism
-from conrod.results.tables import cycle_table, summary_items
+from conrod.results.tables import cycle_table, loads_table, summary_items
 from hardening_helpers import (
     DELETE,
     EXAMPLES,

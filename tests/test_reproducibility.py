@@ -13,14 +13,13 @@ import pytest
 
 import conrod.plotting  # noqa: F401  (registers the figures)
 from conrod import Case, Simulation
-from conrod.results.tables import loads_table
 from conrod.cli.mechanism_command import impacts_table, mechanism_table
 from conrod.io.atomic import write_csv, write_json
 from conrod.loads.engine_loads import compute_engine_loads
 from conrod.mechanism.setup import mechanism_case
 from conrod.mechanism.simulation import simulate
 from conrod.results.output import write_results
-from conrod.results.tables import cycle_table, summary_items
+from conrod.results.tables import cycle_table, loads_table, summary_items
 from hardening_helpers import EXAMPLES, cheap_table_run, example_dict, mutated, write_case
 
 RUN_EXAMPLES = ["flores2006_table_load", "passenger_car_diesel_2000rpm",
