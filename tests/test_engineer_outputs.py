@@ -248,3 +248,24 @@ def test_loads_of_a_load_table_case(runner, tmp_path):
     summary = json.loads((out / "loads_summary.json").read_text())
     assert summary["peak_load_N"] == pytest.approx(
         np.hypot(table["load_x_N"], table["load_y_N"]).max(), rel=1e-9)
+
+
+def _rk2_case() -> dict:
+    return mutated(cheap_table_run(), ("solver",), {
+        "film": "short", "integrator": "rk2", "step_deg": 1.25, "output_step_deg": 5.0,
+        "max_cycles": 12, "min_cycles": 1, "mass_x": 200.0, "mass_y": 200.0})
+
+
+def test_under_resolved_rk2_orbit_exits_4(runner, tmp_path):
+    """Step study: at 1.25° the smallest h_min is 3 % above the 0.625° answer (which moves
+    by < 0.01 % at 0.3125°): under-resolved, exit 4; at 0.625° the check passes."""
+    case = write_case(tmp_path, _rk2_case())
+    result = runner.invoke(app, ["run", str(case), "--out", str(tmp_path / "a"),
+                                 "--no-figures"])
+    assert result.exit_code == 4, result.output
+    assert "under-resolved" in result.output
+    summary = json.loads((tmp_path / "a" / "summary.json").read_text())
+    assert any("under-resolved" in w for w in summary["warnings"])
+    result = runner.invoke(app, ["run", str(case), "--out", str(tmp_path / "b"),
+                                 "--no-figures", "--step-deg", "0.625"])
+    assert result.exit_code == 0, result.output

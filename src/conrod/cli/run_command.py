@@ -67,6 +67,9 @@ def register(app: typer.Typer) -> None:
         figures: Annotated[bool, typer.Option(help="Write the figures.")] = True,
         accept_warnings: Annotated[bool, typer.Option(
             "--accept-warnings", help=ACCEPT_WARNINGS_HELP)] = False,
+        step_check: Annotated[bool, typer.Option(
+            help="rk2: rerun at half the step and warn when h_min moves by more than 2 %.")
+        ] = True,
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
         import conrod.plotting  # noqa: F401  (registers the figures)
@@ -86,9 +89,30 @@ def register(app: typer.Typer) -> None:
             results = simulation.run(progress=progress)
         finally:
             progress.close()
+        if step_check and simulation.solver.integrator == "rk2":
+            results = _with_step_study(results, simulation, case, film, integrator,
+                                       max_cycles, n_theta, n_z)
         write_results(results, out, figures=figures)
         print_headline(results, out)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
+
+
+def _with_step_study(results, simulation, case, film, integrator, max_cycles, n_theta, n_z):
+    """``results`` with a warning when the rk2 orbit at half the step differs (h_min)."""
+    import dataclasses
+
+    from conrod.results.summary import step_study_warnings
+    from conrod.simulation import Simulation
+
+    step = simulation.solver.step_deg
+    fine = Simulation(case, film=film and film.value, integrator=integrator and integrator.value,
+                      max_cycles=max_cycles, step_deg=step / 2.0, n_theta=n_theta,
+                      n_z=n_z).run()
+    extra = tuple(step_study_warnings(results.summary, fine.summary, step))
+    if not extra:
+        return results
+    summary = dataclasses.replace(results.summary, warnings=results.summary.warnings + extra)
+    return dataclasses.replace(results, summary=summary)
 
 
 def print_headline(results: Any, out: Path) -> None:

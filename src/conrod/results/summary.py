@@ -133,3 +133,19 @@ def _contact_text(cycle: CycleResults) -> str:
     i = int(np.argmax(share))
     return (f"{_intervals_text(cycle)} ({touching.mean():.0%} of the cycle); carries up to "
             f"{share[i]:.0%} of the load at {cycle.crank_angle_deg[i]:.0f}°")
+
+
+STEP_STUDY_TOLERANCE = 0.02
+"""Relative change of the smallest h_min between a fixed step and half of it above which a
+fixed-step orbit is flagged as under-resolved [-]."""
+
+
+def step_study_warnings(coarse: RunSummary, fine: RunSummary, step_deg: float) -> list[str]:
+    """A warning when halving the fixed step moves the smallest h_min by more than
+    :data:`STEP_STUDY_TOLERANCE` (the answer still depends on the step)."""
+    change = abs(coarse.h_min - fine.h_min) / max(fine.h_min, 1e-300)
+    if change <= STEP_STUDY_TOLERANCE:
+        return []
+    return [f"under-resolved: h_min {coarse.h_min * 1e6:.3g} µm at step {step_deg:g} deg but "
+            f"{fine.h_min * 1e6:.3g} µm at {step_deg / 2:g} deg ({change:.1%} > "
+            f"{STEP_STUDY_TOLERANCE:.0%}); reduce solver.step_deg (--step-deg)"]
