@@ -14,6 +14,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from conrod.results.cycle_results import RunResults
+from conrod.results.summary import contact_friction_power
 
 UM = 1e6
 LABEL_EVERY_DEG = 60.0
@@ -130,7 +131,13 @@ def plot_friction_and_flow(results: RunResults) -> Figure:
     cycle = results.cycle
     fig = Figure(figsize=(8.0, 5.0))
     top, bottom = fig.subplots(2, 1, sharex=True)
-    top.plot(cycle.crank_angle_deg, cycle.friction_power, color="C2")
+    contact = contact_friction_power(cycle)
+    top.plot(cycle.crank_angle_deg, cycle.friction_power, color="C2", label="film")
+    if np.any(contact > 0.0):
+        top.plot(cycle.crank_angle_deg, contact, color="C3", label="hard contact μ P_c |V|")
+        top.plot(cycle.crank_angle_deg, cycle.friction_power + contact, color="k", lw=0.8,
+                 ls="--", label="total")
+    top.legend(fontsize=7)
     top.set_ylabel("friction power [W]")
     to_lpm = 6.0e4
     bottom.plot(cycle.crank_angle_deg, cycle.side_flow * to_lpm, label="side flow")

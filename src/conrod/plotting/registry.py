@@ -30,7 +30,8 @@ def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
                    "h_min [µm] and p_max [MPa] against crank angle [deg].",
                    lambda: orbit_plots.plot_film_thickness_and_pressure(results)),
         FigureSpec("friction_flow.png", "Friction power and oil flow",
-                   "Friction power [W] and side/supply flow [l/min] against crank angle [deg].",
+                   "Friction power of the film and of hard contact [W] and side/supply "
+                   "flow [l/min] against crank angle [deg].",
                    lambda: orbit_plots.plot_friction_and_flow(results)),
         FigureSpec("pressure_map.png", "Film pressure at the largest p_max",
                    "Film pressure p [MPa] over shell angle θ [deg] and axial position z [mm] "
