@@ -101,7 +101,7 @@ def test_killed_writer_leaves_old_or_new_set(tmp_path):
 
 def _run(case: Path, out: Path) -> subprocess.Popen:
     command = [sys.executable, "-c", "from conrod.cli.app import main; main()", "run",
-               str(case), "--out", str(out)]
+               str(case), "--out", str(out), "--accept-warnings"]  # 2 cycles: not periodic
     return subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                             env=_environment())
 

@@ -37,7 +37,7 @@ from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
 from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
 from conrod.results.plausibility import check_run
-from conrod.results.summary import summarise
+from conrod.results.summary import contact_friction_power, contact_warnings, summarise
 
 DEFAULT_TABLE_LOAD_MASS = 1.0
 """Moving mass for table loads when ``[solver] mass_x/mass_y`` are not given [kg]."""
@@ -160,10 +160,22 @@ class Simulation:
             previous_cycle_eccentricity=_previous(orbit),
             contact=analyse_contact(self.case, cycle),
         )
-        warnings = summary.warnings + tuple(check_run(results, self.case))  # or ConvergenceError
+        warnings = (summary.warnings + tuple(check_run(results, self.case))  # or ConvergenceError
+                    + tuple(contact_warnings(cycle)))
         wall_time = time.perf_counter() - start
         summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)
-        return dataclasses.replace(results, summary=summary)
+        return dataclasses.replace(results, summary=summary, model=self._model_description(),
+                                   case_hash=self.case.content_hash(),
+                                   settings=self.solver.model_dump(mode="json"))
+
+    def _model_description(self) -> dict[str, str]:
+        """What is computed, in words, for the headline."""
+        law = self._lubricant.pressure_viscosity_law()
+        model = {"housing": "rigid bore",  # the orbit of this Simulation is rigid
+                 "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
+        if self.case.engine is not None and self.case.engine.pressure_model is not None:
+            model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
+        return model
 
     def _thermal_orbit(self, problem: OrbitProblem, progress: ProgressCallback | None
     ) -> _ThermalOrbit:
@@ -231,9 +243,11 @@ def _solver_with(case: Case, overrides: dict[str, Any]):
 
 
 def _heat_balance_temperature(cycle: CycleResults, lubricant) -> float | None:
-    """T_eff [°C] from the mean friction power and side flow of the cycle."""
+    """T_eff [°C] from the mean friction power of film and hard contact and the mean side
+    flow of the cycle."""
+    friction = cycle.friction_power.mean() + contact_friction_power(cycle).mean()
     return effective_temperature(
-        float(cycle.friction_power.mean()), float(cycle.side_flow.mean()),
+        float(friction), float(cycle.side_flow.mean()),
         lubricant.supply_temperature, lubricant.density_at(lubricant.supply_temperature),
         lubricant.specific_heat,
     )

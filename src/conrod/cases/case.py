@@ -89,6 +89,29 @@ class Case(Section):
         case._path = path
         return case
 
+    def with_(self, **changes: object) -> Case:
+        """A changed copy, validated like a case file. ``section__field=value`` sets one
+        field (``case.with_(engine__speed=3000)``), ``field=value`` a top-level item; raise
+        :class:`CaseError` naming the field when the copy is not a valid case."""
+        data = self.model_dump(mode="python", exclude_unset=True)
+        for key, value in changes.items():
+            *sections, name = key.split("__")
+            target = data
+            for section in sections:
+                if not isinstance(target.get(section, {}), dict):
+                    raise CaseError(f"with_({key}=...): {section!r} is not a section")
+                target = target.setdefault(section, {})
+            target[name] = value
+        return Case.from_dict(data, base_dir=self._base_dir, path=self._path)
+
+    def content_hash(self) -> str:
+        """SHA-256 (hex) of the validated case content, the same for equal cases [-]."""
+        import hashlib
+        import json
+
+        text = json.dumps(self.model_dump(mode="json"), sort_keys=True, default=str)
+        return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
     @property
     def path(self) -> Path | None:
         """The case file this case was read from, if any."""

@@ -1,10 +1,13 @@
 """The ``conrod`` command. Each sub-command lives in its own module and registers itself.
 
-Exit codes: 0 success, 2 bad input (:class:`CaseError`, including an unusable ``--out``),
-3 solver did not converge or a result is not finite (:class:`ConvergenceError`), 4 the
-results could not be written (disk full, I/O error), 130 interrupted (Ctrl-C). Errors print
-one message on stderr, never a traceback; results are written as a whole or not at all
-(:mod:`conrod.io.result_folder`).
+Exit codes (:data:`EXIT_CODES`; the same table is in ``conrod --help`` and
+``docs/reliability.md``): 0 success; 1 a defect in conrod; 2 bad input (:class:`CaseError`,
+including an unusable ``--out``; nothing written); 3 not converged (a solver failed or a
+result is not physical: nothing written; or the orbit is not periodic: results written
+for diagnosis, ``summary.json["converged"]`` false); 4 finished with warnings (results
+written; ``--accept-warnings`` makes it 0); 5 the results could not be written (disk full,
+I/O error); 130 interrupted (Ctrl-C). Errors print one message on stderr, never a
+traceback; results are written as a whole or not at all (:mod:`conrod.io.result_folder`).
 """
 
 from __future__ import annotations
@@ -14,20 +17,37 @@ import importlib
 import os
 import sys
 import warnings
-from collections.abc import Callable
-from typing import Any, TypeVar
+from collections.abc import Callable, Sequence
+from typing import Annotated, Any, TypeVar
 
 import typer
 
 from conrod.errors import CaseError, ConvergenceError
 from conrod.io.interrupts import EXIT_INTERRUPTED, deferred_interrupts
 
+EXIT_OK, EXIT_DEFECT, EXIT_BAD_INPUT, EXIT_NOT_CONVERGED = 0, 1, 2, 3
+EXIT_WARNINGS, EXIT_WRITE_FAILED = 4, 5
+EXIT_CODES = {
+    EXIT_OK: "success",
+    EXIT_DEFECT: "a defect in conrod (CONROD_TRACEBACK=1 shows where)",
+    EXIT_BAD_INPUT: "bad input (case file, option, --out); nothing written",
+    EXIT_NOT_CONVERGED: "not converged: a solver failed or a result is not physical "
+                        "(nothing written), or the orbit is not periodic (results written, "
+                        "marked); --accept-warnings turns a written 3 or 4 into 0",
+    EXIT_WARNINGS: "finished with warnings (results written)",
+    EXIT_WRITE_FAILED: "the results could not be written (disk full, I/O error)",
+    EXIT_INTERRUPTED: "interrupted (Ctrl-C); nothing written",
+}
+"""Exit code → meaning, shown by ``conrod --help``."""
+
 app = typer.Typer(
     name="conrod",
     help="Connecting-rod bearing dynamics: loads, oil film, orbit, contact, wear, impacts.",
+    epilog="Exit codes: " + "; ".join(f"{code} {text}" for code, text in EXIT_CODES.items()),
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    rich_markup_mode="markdown",  # keeps units such as [rpm] and [m] visible in --help
 )
 
 COMMAND_MODULES = (
@@ -38,9 +58,43 @@ COMMAND_MODULES = (
 F = TypeVar("F", bound=Callable[..., Any])
 
 
+def _print_version(value: bool) -> None:
+    if value:
+        from conrod import __version__
+
+        typer.echo(f"conrod {__version__}")
+        raise typer.Exit()
+
+
 @app.callback()
-def _root() -> None:
+def _root(
+    version: Annotated[bool, typer.Option(
+        "--version", callback=_print_version, is_eager=True,
+        help="Print the conrod version and exit.")] = False,
+) -> None:
     """Connecting-rod bearing dynamics (keeps sub-commands a group even if only one exists)."""
+
+
+def finish(warnings: Sequence[str], accept_warnings: bool, converged: bool = True) -> None:
+    """End a command whose results are written: print the warnings on stderr and exit
+    :data:`EXIT_NOT_CONVERGED` when not converged (non-periodic orbit), :data:`EXIT_WARNINGS`
+    when there are warnings, else return (exit 0); ``accept_warnings``: always return."""
+    for warning in warnings:
+        typer.echo(f"warning: {warning}", err=True)
+    if accept_warnings:
+        return
+    if not converged:
+        typer.echo("not converged: results written for diagnosis only (exit 3; "
+                   "--accept-warnings to exit 0)", err=True)
+        raise typer.Exit(code=EXIT_NOT_CONVERGED)
+    if warnings:
+        typer.echo(f"finished with {len(warnings)} warning(s) (exit 4; --accept-warnings "
+                   "to exit 0)", err=True)
+        raise typer.Exit(code=EXIT_WARNINGS)
+
+
+ACCEPT_WARNINGS_HELP = ("Exit 0 although the written results carry warnings (default: exit 4) "
+                        "or the orbit is not periodic (default: exit 3).")
 
 
 def exits_cleanly(command: F) -> F:
@@ -53,10 +107,10 @@ def exits_cleanly(command: F) -> F:
                 return command(*args, **kwargs)
         except CaseError as error:
             typer.echo(f"error: {error}", err=True)
-            raise typer.Exit(code=2) from None
+            raise typer.Exit(code=EXIT_BAD_INPUT) from None
         except ConvergenceError as error:
             typer.echo(f"not converged: {error}", err=True)
-            raise typer.Exit(code=3) from None
+            raise typer.Exit(code=EXIT_NOT_CONVERGED) from None
         except KeyboardInterrupt:
             typer.echo("interrupted (nothing written)", err=True)
             raise typer.Exit(code=EXIT_INTERRUPTED) from None
@@ -65,7 +119,7 @@ def exits_cleanly(command: F) -> F:
             reason = error.strerror or str(error) or type(error).__name__
             typer.echo(f"error: cannot write the results ({reason}{where}); the output "
                        "folder is unchanged", err=True)
-            raise typer.Exit(code=4) from None
+            raise typer.Exit(code=EXIT_WRITE_FAILED) from None
         except (typer.Exit, typer.Abort):
             raise
         except Exception as error:  # a bug: one line, the traceback only on request
@@ -73,7 +127,7 @@ def exits_cleanly(command: F) -> F:
                 raise
             typer.echo(f"internal error: {type(error).__name__}: {error} (a defect in conrod; "
                        "set CONROD_TRACEBACK=1 to see where)", err=True)
-            raise typer.Exit(code=1) from None
+            raise typer.Exit(code=EXIT_DEFECT) from None
 
     return wrapper  # type: ignore[return-value]
 

@@ -98,6 +98,9 @@ def register(app: typer.Typer) -> None:
         cache: Annotated[bool, typer.Option(help="Read/write the compliance cache.")] = True,
     ) -> None:
         """Compliance matrix, inertia base fields and figures of the elastic big end."""
+        from conrod.io.result_folder import check_output_folder
+
+        check_output_folder(out)  # before any computation
         from conrod.elastic.housing import Housing
 
         case = Case.from_toml(case_file)

@@ -25,7 +25,7 @@ def register(app: typer.Typer) -> None:
     @exits_cleanly
     def loads_command(
         case_file: Annotated[
-            Path, typer.Argument(help="Case file (TOML) with [engine] and [bearing]")
+            Path, typer.Argument(help="Case file (TOML) with [engine] and [bearing], or [load]")
         ],
         out: Annotated[Path, typer.Option("--out", help="Output folder (created if absent)")],
         step: Annotated[
@@ -35,6 +35,9 @@ def register(app: typer.Typer) -> None:
         """Engine loads on the big-end bearing: table, summary, polar and wear diagrams."""
         check_output_folder(out)
         case = Case.from_toml(case_file)
+        if case.engine is None and case.load is not None:
+            _table_loads(case, out)
+            return
         case.require("loads", "engine", "bearing")
         loads = compute_engine_loads(case, step_deg=step)
         _write(loads, out)
@@ -52,3 +55,16 @@ def _write(loads, out: Path) -> None:
     from conrod.results.output import write_results
 
     write_results(loads, out)
+
+
+def _table_loads(case: Case, out: Path) -> None:
+    """A bearing given by its load table: the table's load in the bearing frame."""
+    from conrod.loads.table_load import load_cycle_from_table
+    from conrod.results.tables import table_load_summary
+
+    loads = load_cycle_from_table(case.load, case.resolve(case.load.table))
+    _write(loads, out)
+    summary = table_load_summary(loads)
+    typer.echo(f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
+               f"{summary['peak_load_crank_angle_deg']:.1f} deg, mean "
+               f"{summary['mean_load_N'] / 1e3:.2f} kN (load table, bearing frame) -> {out}")

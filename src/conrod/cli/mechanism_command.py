@@ -19,7 +19,7 @@ import typer
 
 from conrod.cases.base import range_error
 from conrod.cases.case import Case
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
 from conrod.errors import CaseError
 from conrod.io.interrupts import raise_if_interrupted
 from conrod.io.result_folder import check_output_folder
@@ -63,6 +63,8 @@ def register(app: typer.Typer) -> None:
             "repeatable")] = None,
         jobs: Annotated[int, typer.Option(
             "--jobs", min=1, help="Worker processes for --sweep (1 = in this process)")] = 1,
+        accept_warnings: Annotated[bool, typer.Option(
+            "--accept-warnings", help=ACCEPT_WARNINGS_HELP)] = False,
     ) -> None:
         """Slider-crank with clearances in both rod bearings: gaps, forces, impacts ([D3])."""
         check_output_folder(out)
@@ -89,8 +91,7 @@ def register(app: typer.Typer) -> None:
             f"{summary['impacts_per_cycle']} impacts/cycle; max impact velocity big end "
             f"{summary['max_impact_velocity_big_end_m_s']:.3g} m/s, small end "
             f"{summary['max_impact_velocity_small_end_m_s']:.3g} m/s -> {out}")
-        for warning in summary["warnings"]:
-            typer.echo(f"warning: {warning}", err=True)
+        finish(summary["warnings"], accept_warnings)
 
 
 def _advance(bar) -> None:

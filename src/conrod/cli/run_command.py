@@ -2,15 +2,21 @@
 
 from __future__ import annotations
 
+import enum
 import time
 from pathlib import Path
 from typing import Annotated, Any
 
 import typer
 
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
 from conrod.io.interrupts import raise_if_interrupted
 from conrod.registry import FILM_NAMES, INTEGRATOR_NAMES
+
+FilmChoice = enum.Enum("FilmChoice", {name: name for name in FILM_NAMES}, type=str)
+"""The registered film model names, validated by the command line."""
+IntegratorChoice = enum.Enum("IntegratorChoice", {n: n for n in INTEGRATOR_NAMES}, type=str)
+"""The registered integrator names, validated by the command line."""
 
 PROGRESS_AFTER_S = 1.0
 """A progress bar appears on runs longer than this [s]."""
@@ -51,14 +57,19 @@ def register(app: typer.Typer) -> None:
     def run(
         case_file: Annotated[Path, typer.Argument(help="Case file (TOML).")],
         out: Annotated[Path, typer.Option("--out", help="Results folder.")] = Path("results"),
-        film: Annotated[str | None, typer.Option(
-            help=f"Film model: {'|'.join(FILM_NAMES)}.")] = None,
-        integrator: Annotated[str | None, typer.Option(
-            help=f"Orbit integrator: {'|'.join(INTEGRATOR_NAMES)}.")] = None,
+        film: Annotated[FilmChoice | None, typer.Option(
+            help="Film model (default: the case's).")] = None,
+        integrator: Annotated[IntegratorChoice | None, typer.Option(
+            help="Orbit integrator (default: the case's).")] = None,
         max_cycles: Annotated[int | None, typer.Option(help="Most cycles.")] = None,
         step_deg: Annotated[float | None, typer.Option(help="Fixed step of rk2 [deg].")] = None,
         grid: Annotated[str | None, typer.Option(help="Film grid NTHETAxNZ, e.g. 72x16.")] = None,
         figures: Annotated[bool, typer.Option(help="Write the figures.")] = True,
+        accept_warnings: Annotated[bool, typer.Option(
+            "--accept-warnings", help=ACCEPT_WARNINGS_HELP)] = False,
+        step_check: Annotated[bool, typer.Option(
+            help="rk2: rerun at half the step and warn when h_min moves by more than 2 %.")
+        ] = True,
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
         import conrod.plotting  # noqa: F401  (registers the figures)
@@ -70,22 +81,67 @@ def register(app: typer.Typer) -> None:
         check_output_folder(out)
         case = Case.from_toml(case_file)
         n_theta, n_z = _grid(grid)
-        simulation = Simulation(case, film=film, integrator=integrator, max_cycles=max_cycles,
+        simulation = Simulation(case, film=film and film.value,
+                                integrator=integrator and integrator.value, max_cycles=max_cycles,
                                 step_deg=step_deg, n_theta=n_theta, n_z=n_z)
         progress = _Progress(simulation.solver.max_cycles)
         try:
             results = simulation.run(progress=progress)
         finally:
             progress.close()
+        if step_check and simulation.solver.integrator == "rk2":
+            results = _with_step_study(results, simulation, case, film, integrator,
+                                       max_cycles, n_theta, n_z)
         write_results(results, out, figures=figures)
-        s = results.summary
-        typer.echo(
-            f"h_min {s.h_min * 1e6:.3f} µm at {_deg(s.h_min_crank_angle)}°, "
-            f"p_max {s.p_max / 1e6:.2f} MPa at {_deg(s.p_max_crank_angle)}°, "
-            f"{s.cycles} cycles, {s.wall_time:.2f} s → {out}"
-        )
-        for warning in s.warnings:
-            typer.echo(f"warning: {warning}", err=True)
+        print_headline(results, out)
+        finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
+
+
+def _with_step_study(results, simulation, case, film, integrator, max_cycles, n_theta, n_z):
+    """``results`` with a warning when the rk2 orbit at half the step differs (h_min)."""
+    import dataclasses
+
+    from conrod.results.summary import step_study_warnings
+    from conrod.simulation import Simulation
+
+    step = simulation.solver.step_deg
+    fine = Simulation(case, film=film and film.value, integrator=integrator and integrator.value,
+                      max_cycles=max_cycles, step_deg=step / 2.0, n_theta=n_theta,
+                      n_z=n_z).run()
+    extra = tuple(step_study_warnings(results.summary, fine.summary, step))
+    if not extra:
+        return results
+    summary = dataclasses.replace(results.summary, warnings=results.summary.warnings + extra)
+    return dataclasses.replace(results, summary=summary)
+
+
+def print_headline(results: Any, out: Path) -> None:
+    """The headline block on stdout: a rich table on a terminal, plain lines otherwise."""
+    import sys
+
+    from conrod.results.summary import headline
+
+    lines = headline(results)
+    if sys.stdout.isatty():
+        from rich.console import Console
+        from rich.table import Table
+
+        table = Table(show_header=False, box=None, title=f"conrod run → {out}")
+        for label, text in lines.items():
+            table.add_row(f"[bold]{label}[/bold]", escape(text))
+        Console().print(table)
+        return
+    width = max(len(label) for label in lines)
+    for label, text in lines.items():
+        typer.echo(f"{label:<{width}}  {text}")
+    typer.echo(f"{'results':<{width}}  {out}")
+
+
+def escape(text: str) -> str:
+    """``text`` with rich markup escaped (units in brackets stay visible)."""
+    from rich.markup import escape as rich_escape
+
+    return rich_escape(text)
 
 
 def _deg(angle: float) -> str:

@@ -88,6 +88,9 @@ def register(app: typer.Typer) -> None:
             "--angles", help="Crank angles [deg], comma separated, e.g. 25,360")] = None,
     ) -> None:
         """Von Mises stresses of the rod under the film pressure and a cosine load."""
+        from conrod.io.result_folder import check_output_folder
+
+        check_output_folder(out)  # before any computation
         from conrod.elastic.housing import Housing
         from conrod.elastic.stresses import rigid_run_pressures
 

@@ -69,7 +69,10 @@ def register(app: typer.Typer) -> None:
             help="Write every variant's figures (slower).")] = False,
     ) -> None:
         """Run every variant of a study on Dask; one row per variant in DIR/sweep.parquet."""
+        from conrod.io.result_folder import check_output_folder
         from conrod.sweep import Sweep
+
+        check_output_folder(out)  # before any variant is validated or computed
 
         runner = Sweep(study_file, out, scheduler=scheduler, workers=workers, figures=figures)
         variants = runner.variants()

@@ -4,7 +4,8 @@ All friction power is carried away by the oil that flows through the bearing:
 
 .. math:: \\bar N = ρ\\, c_p\\, \\bar Q\\, (T_{eff} − T_{supply}),
 
-with N̄ the cycle-mean friction power [W] and Q̄ the cycle-mean side flow [m³/s] (in a
+with N̄ the cycle-mean friction power of the film plus the dry friction of hard contact
+μ_dry P_c |V_slide| [W] and Q̄ the cycle-mean side flow [m³/s] (in a
 periodic orbit it equals the mean supply flow). With a Vogel law μ(T) the orbit is
 recomputed with μ(T_eff) and T_eff updated, under-relaxed, until it changes by less than
 ``[solver] thermal_tolerance`` [K].

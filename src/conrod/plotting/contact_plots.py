@@ -25,11 +25,16 @@ def plot_contact_cycle(contact) -> Figure:
     cycle_deg = float(phi[-1] - phi[0] + np.median(np.diff(phi)))
     figure = Figure(figsize=(8.0, 8.0))
     top, middle, bottom = figure.subplots(3, 1, sharex=True)
-    top.plot(phi, contact.hertz_stress / 1e6, color="tab:red", label="Hertz stress")
-    top.set_ylabel("contact stress [MPa]")
+    stress_line, = top.plot(phi, contact.hertz_stress / 1e6, color="tab:red",
+                            label="Hertz stress [MPa] (left axis)")
+    top.set_ylabel("contact stress [MPa]", color="tab:red")
+    top.tick_params(axis="y", colors="tab:red")
     work_axis = top.twinx()
-    work_axis.plot(phi, contact.work.cumulative, color="tab:blue", label="friction work")
-    work_axis.set_ylabel("friction work [J]")
+    work_line, = work_axis.plot(phi, contact.work.cumulative, color="tab:blue",
+                                label="cumulative friction work [J] (right axis)")
+    work_axis.set_ylabel("friction work [J]", color="tab:blue")
+    work_axis.tick_params(axis="y", colors="tab:blue")
+    top.legend(handles=[stress_line, work_line], fontsize=7, loc="center right")
     top.set_title(f"Contact ({contact.model}); friction work {contact.work.total:.3g} J/cycle")
     middle.plot(phi, contact.h_min * 1e6, color="k")
     middle.set_ylabel("h_min [µm]")
@@ -76,9 +81,17 @@ def plot_wear_polar(contact) -> Figure:
         (("journal", wear.journal_work), ("shell", wear.shell_work)), start=1
 ):
         axis = figure.add_subplot(1, 2, index, projection="polar")
-        axis.plot(closed, np.append(work, work[0]), color="tab:blue")
-        axis.fill(closed, np.append(work, work[0]), color="tab:blue", alpha=0.2)
         axis.set_title(f"{name}: friction work per element [J]")
+        if not np.any(work > 0.0):  # no contact: say so instead of drawing a disc
+            axis.set_rlim(0.0, 1.0)
+            axis.set_yticklabels([])
+            axis.text(0.5, 0.5, "no friction work\n(no contact)", ha="center", va="center",
+                      transform=axis.transAxes, fontsize=9)
+            continue
+        closed_work = np.append(work, work[0])
+        axis.plot(closed, closed_work, color="tab:blue")
+        axis.fill(closed, closed_work, color="tab:blue", alpha=0.2)
+        axis.set_rlim(0.0, 1.05 * float(work.max()))
     figure.tight_layout()
     return figure
 

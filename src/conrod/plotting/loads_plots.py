@@ -18,11 +18,17 @@ from conrod.loads.engine_loads import EngineLoads
 KN = 1.0e-3
 
 
-def _label_angles(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, every: float) -> None:
-    """Mark the points at multiples of ``every`` degrees; label those not crowding others."""
-    marks = np.isclose(np.mod(angle_deg + 1e-9, every), 0.0, atol=1e-6)
+def _label_angles(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, every: float,
+                  span: float | None = None) -> None:
+    """Mark the points at multiples of ``every`` degrees; label those not crowding others
+    (closer than 5 % of ``span``, default the extent of the finite points; NaN points are
+    not drawn)."""
+    marks = np.isclose(np.mod(angle_deg + 1e-9, every), 0.0, atol=1e-6) & np.isfinite(x + y)
     axes.plot(x[marks], y[marks], "o", ms=3, color="k")
-    span = max(float(np.ptp(x)), float(np.ptp(y)), 1e-300)
+    if span is None:
+        finite = np.isfinite(x + y)
+        span = max(float(np.ptp(x[finite])), float(np.ptp(y[finite]))) if finite.any() else 0.0
+    span = max(span, 1e-300)
     placed: list[tuple[float, float]] = [(0.0, 0.0)]  # keep the pole O readable
     for xi, yi, ai in zip(x[marks], y[marks], angle_deg[marks], strict=True):
         if min(math.hypot(xi - px, yi - py) for px, py in placed) < 0.05 * span:
@@ -74,12 +80,13 @@ def _mark_poles(axes, pole) -> None:
 
 
 def _zoom_on_low_loads(axes, x: np.ndarray, y: np.ndarray, angle_deg: np.ndarray, pole) -> None:
-    """Zoom on the gas-exchange part of the diagram (within the 75th percentile of |S|)."""
+    """Zoom on the gas-exchange part of the diagram (1.5 x the median |S|)."""
     radius = np.hypot(x, y)
-    extent = 1.3 * float(np.percentile(radius, 75.0))
+    extent = 1.5 * float(np.median(radius))
     near = radius <= extent
     axes.plot(np.append(x, x[0]), np.append(y, y[0]), lw=1.0, color="C0")
-    _label_angles(axes, np.where(near, x, np.nan), np.where(near, y, np.nan), angle_deg, 30.0)
+    _label_angles(axes, np.where(near, x, np.nan), np.where(near, y, np.nan), angle_deg, 30.0,
+                  span=2.0 * extent)
     _mark_poles(axes, pole)
     axes.set_xlim(-extent, extent)
     axes.set_ylim(-extent, extent)
@@ -101,7 +108,8 @@ def plot_load_over_crank_angle(loads: EngineLoads) -> Figure:
     top.set_ylabel("load magnitude [kN]")
     top.legend(fontsize=8)
     bottom.plot(angle, loads.gas_force * KN, color="0.5", lw=0.9, label="gas force P_g")
-    bottom.plot(angle, loads.radial_force * KN, color="C1", label="radial R (+ towards crank axis)")
+    bottom.plot(angle, -loads.radial_force * KN, color="C1",
+                label="radial −R (+ outward along the crank, as in the polar diagram)")
     bottom.plot(angle, loads.tangential_force * KN, color="C2", label="tangential T (+ rotation)")
     bottom.set_ylabel("force [kN]")
     bottom.set_xlabel("crank angle φ from firing TDC [deg]")
@@ -228,3 +236,42 @@ def _arrow(axes, start, end, label: str, color: str) -> None:
     axes.annotate(
         label, tuple(end), fontsize=8, color=color, xytext=(3, 3), textcoords="offset points"
 )
+
+
+def plot_table_load_polar(loads) -> Figure:
+    """Polar load diagram of a load table in the bearing (film) frame: the tip of the load
+    vector pressing the journal on the shell [kN], labelled by crank angle."""
+    x, y = loads.load_x * KN, loads.load_y * KN
+    angle = np.degrees(loads.crank_angle)
+    figure = Figure(figsize=(6.5, 6.5))
+    axes = figure.subplots()
+    axes.plot(np.append(x, x[0]), np.append(y, y[0]), lw=1.2, color="C0",
+              label="tip of the load on the shell")
+    axes.plot(0.0, 0.0, "s", color="C3")
+    marks = np.arange(np.ceil(angle[0] / 30.0) * 30.0, angle[-1] + 1e-9, 30.0) + 0.0  # no -0
+    _label_angles(axes, np.interp(marks, angle, x), np.interp(marks, angle, y), marks, 30.0,
+                  span=max(float(np.ptp(x)), float(np.ptp(y))))
+    axes.axhline(0.0, color="0.7", lw=0.6)
+    axes.axvline(0.0, color="0.7", lw=0.6)
+    axes.set_aspect("equal", adjustable="datalim")
+    axes.set_xlabel("F_x, bearing (film) frame [kN]")
+    axes.set_ylabel("F_y [kN]")
+    axes.set_title("Polar load diagram (bearing frame, from the load table)", fontsize=10)
+    axes.legend(loc="upper right", fontsize=8)
+    axes.grid(True, lw=0.3)
+    return figure
+
+
+def plot_table_load_over_crank_angle(loads) -> Figure:
+    """Load components and magnitude [kN] of a load table against crank angle [deg]."""
+    angle = np.degrees(loads.crank_angle)
+    figure = Figure(figsize=(9.0, 4.5))
+    axes = figure.subplots()
+    axes.plot(angle, np.hypot(loads.load_x, loads.load_y) * KN, color="C0", label="|F|")
+    axes.plot(angle, loads.load_x * KN, color="C1", label="F_x (bearing frame)")
+    axes.plot(angle, loads.load_y * KN, color="C2", label="F_y (bearing frame)")
+    axes.set_xlabel("crank angle φ [deg]")
+    axes.set_ylabel("load [kN]")
+    axes.legend(fontsize=8)
+    axes.grid(True, lw=0.3)
+    return figure

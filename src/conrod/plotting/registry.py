@@ -4,10 +4,17 @@
 from __future__ import annotations
 
 from conrod.contact.analysis import ContactResults
+from conrod.loads.cycle import LoadCycle
 from conrod.loads.engine_loads import EngineLoads
 from conrod.mechanism.results import MechanismRun
 from conrod.mechanism.sweep import SweepRun
-from conrod.plotting import contact_plots, loads_plots, mechanism_plots, orbit_plots
+from conrod.plotting import (
+    contact_plots,
+    film_maps,
+    loads_plots,
+    mechanism_plots,
+    orbit_plots,
+)
 from conrod.results.cycle_results import RunResults
 from conrod.results.output import FigureSpec, figures
 
@@ -23,12 +30,21 @@ def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
                    "h_min [µm] and p_max [MPa] against crank angle [deg].",
                    lambda: orbit_plots.plot_film_thickness_and_pressure(results)),
         FigureSpec("friction_flow.png", "Friction power and oil flow",
-                   "Friction power [W] and side/supply flow [l/min] against crank angle [deg].",
+                   "Friction power of the film and of hard contact [W] and side/supply "
+                   "flow [l/min] against crank angle [deg].",
                    lambda: orbit_plots.plot_friction_and_flow(results)),
         FigureSpec("pressure_map.png", "Film pressure at the largest p_max",
                    "Film pressure p [MPa] over shell angle θ [deg] and axial position z [mm] "
                    "at the crank angle of the largest p_max.",
                    lambda: orbit_plots.plot_pressure_map(results)),
+        FigureSpec("film_thickness_map.png", "Film thickness over shell and cycle",
+                   "Film thickness h [µm] over crank angle φ [deg] and shell angle θ [deg] "
+                   "(rigid bore), with the contact threshold h_c and the angle of h_min.",
+                   lambda: film_maps.plot_film_thickness_map(results)),
+        FigureSpec("min_film_envelope.png", "Shell envelope of minimum film thickness",
+                   "Smallest film thickness [µm] each shell angle θ [deg] sees over the cycle, "
+                   "and the crank angle [deg] where it occurs.",
+                   lambda: film_maps.plot_min_film_envelope(results)),
 )
     return own + (figures(results.contact) if results.contact is not None else ())
 
@@ -68,6 +84,20 @@ def _loads_figures(loads: EngineLoads) -> tuple[FigureSpec, ...]:
                    "angle [deg].",
                    lambda: loads_plots.plot_wear_diagram(loads)),
 )
+
+
+@figures.register
+def _table_load_figures(loads: LoadCycle) -> tuple[FigureSpec, ...]:
+    return (
+        FigureSpec("polar_load_diagram.png", "Polar load diagram",
+                   "Load on the shell [kN] in the bearing frame of the load table, labelled "
+                   "by crank angle [deg].",
+                   lambda: loads_plots.plot_table_load_polar(loads)),
+        FigureSpec("load_vs_crank_angle.png", "Load over the cycle",
+                   "Load components in the bearing frame and magnitude [kN] against crank "
+                   "angle [deg].",
+                   lambda: loads_plots.plot_table_load_over_crank_angle(loads)),
+    )
 
 
 @figures.register

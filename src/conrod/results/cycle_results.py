@@ -78,6 +78,21 @@ class CycleResults:
         """Crank angle [deg]."""
         return np.degrees(self.crank_angle)
 
+    def to_dataframe(self) -> Any:
+        """The cycle as a pandas DataFrame, one row per output angle, the columns of
+        ``cycle.csv`` with the unit in each name (``h_min_m``, ``p_max_Pa``,
+        ``crank_angle_deg``, ...; angles in degrees)."""
+        import pandas as pd
+
+        from conrod.results.tables import CYCLE_COLUMNS, DATAFRAME_NAMES
+
+        columns = {}
+        for column, (name, convert) in CYCLE_COLUMNS.items():
+            values = np.asarray(getattr(self, name))
+            columns[DATAFRAME_NAMES.get(column, column)] = (
+                convert(values) if convert is not None else values)
+        return pd.DataFrame(columns)
+
 
 @dataclass(frozen=True)
 class RunSummary:
@@ -96,7 +111,7 @@ class RunSummary:
     mean_p_max: float
     """Cycle mean of p_max [Pa]."""
     mean_friction_power: float
-    """Cycle mean friction power loss [W]."""
+    """Cycle mean friction power loss of the film (hydrodynamic) [W]."""
     mean_side_flow: float
     """Cycle mean side flow [m^3/s]."""
     mean_supply_flow: float
@@ -123,6 +138,13 @@ class RunSummary:
     """Largest hard-contact force over the cycle [N]."""
     warnings: tuple[str, ...] = ()
     """Human-readable warnings (non-periodic orbit, ...) [-]."""
+    mean_contact_friction_power: float = 0.0
+    """Cycle mean dry-friction power of hard contact μ_dry P_c |V_slide| [W]."""
+
+    @property
+    def mean_total_friction_power(self) -> float:
+        """Film plus contact friction power, the heat the oil carries away [W]."""
+        return self.mean_friction_power + self.mean_contact_friction_power
 
     def as_json_items(self) -> dict[str, Any]:
         """The summary.json items (engineering-friendly names with units in the key)."""
@@ -134,6 +156,8 @@ class RunSummary:
             "mean_h_min_m": self.mean_h_min,
             "mean_p_max_Pa": self.mean_p_max,
             "mean_friction_power_W": self.mean_friction_power,
+            "mean_contact_friction_power_W": self.mean_contact_friction_power,
+            "mean_total_friction_power_W": self.mean_total_friction_power,
             "mean_side_flow_m3_s": self.mean_side_flow,
             "mean_supply_flow_m3_s": self.mean_supply_flow,
             "effective_temperature_C": self.effective_temperature,
@@ -183,3 +207,13 @@ class RunResults:
     """(x, y) of the cycle before the last, shape (2, n) [m] (periodicity figure)."""
     contact: ContactAnalysis | None = None
     """Contact post-processing (friction work, wear) when available."""
+    model: dict[str, str] | None = None
+    """What was computed, for the headline: "film", "integrator", "housing" (rigid or
+    elastic), "viscosity" (isoviscous or the pressure-viscosity law) [-]."""
+    case_hash: str | None = None
+    """SHA-256 of the case's validated content (hex) [-]."""
+    settings: dict[str, Any] | None = None
+    """The resolved ``[solver]`` settings used (SI units) [-]."""
+    headline_extra: dict[str, str] | None = None
+    """Further headline lines (label → text) added by other analyses, e.g. an elastic
+    comparison; printed after the standard lines [-]."""

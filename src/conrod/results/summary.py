@@ -6,7 +6,31 @@ import math
 
 import numpy as np
 
-from conrod.results.cycle_results import CycleResults, RunSummary
+from conrod.results.cycle_results import CycleResults, RunResults, RunSummary
+
+CONTACT_SHARE_WARNING = 0.25
+"""Share of the load carried by hard contact above which a run is flagged: the film does
+not carry the bearing [-]."""
+
+
+def contact_friction_power(cycle: CycleResults) -> np.ndarray:
+    """Dry-friction power of hard contact at each angle, |μ_dry P_c| |V_slide| [W]."""
+    return np.abs(cycle.friction_force) * np.abs(cycle.sliding_speed)
+
+
+def contact_load_share(cycle: CycleResults) -> np.ndarray:
+    """Share of the bearing load carried by hard contact at each angle, P_c / |F| [-]."""
+    load = np.hypot(cycle.load_x, cycle.load_y)
+    return np.divide(cycle.contact_force, load, out=np.zeros_like(load), where=load > 0.0)
+
+
+def contact_intervals(cycle: CycleResults) -> list[tuple[float, float]]:
+    """(start, end) crank angles [deg] of the runs of output angles in hard contact."""
+    touching = np.asarray(cycle.in_contact, dtype=bool)
+    degrees = cycle.crank_angle_deg
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], touching.astype(int), [0]])))
+    return [(float(degrees[a]), float(degrees[b - 1])) for a, b in zip(
+        edges[::2], edges[1::2], strict=True)]
 
 
 def summarise(
@@ -33,6 +57,7 @@ def summarise(
         p_max=float(cycle.p_max[i_p]), p_max_crank_angle=float(cycle.crank_angle[i_p]),
         mean_h_min=float(cycle.h_min.mean()), mean_p_max=float(cycle.p_max.mean()),
         mean_friction_power=float(cycle.friction_power.mean()),
+        mean_contact_friction_power=float(contact_friction_power(cycle).mean()),
         mean_side_flow=float(cycle.side_flow.mean()),
         mean_supply_flow=float(cycle.supply_flow.mean()),
         effective_temperature=temperature, viscosity=problem.viscosity, cycles=cycles,
@@ -42,3 +67,85 @@ def summarise(
         thermal_iterations=thermal_iterations,
         max_contact_force=float(cycle.contact_force.max()), warnings=tuple(warnings),
 )
+
+
+def contact_warnings(cycle: CycleResults) -> list[str]:
+    """A warning when hard contact carries more than :data:`CONTACT_SHARE_WARNING` of the
+    load: the result is a contact result, not a film result."""
+    share = contact_load_share(cycle)
+    i = int(np.argmax(share))
+    if share[i] <= CONTACT_SHARE_WARNING:
+        return []
+    return [f"hard contact carries up to {share[i]:.0%} of the load (crank angle "
+            f"{cycle.crank_angle_deg[i]:.0f} deg; {_intervals_text(cycle)}): the film does "
+            "not carry this bearing (contact-dominated result)"]
+
+
+def _intervals_text(cycle: CycleResults) -> str:
+    spans = contact_intervals(cycle)
+    if not spans:
+        return "none"
+    return ", ".join(f"{a:.0f}–{b:.0f}°" for a, b in spans)
+
+
+def headline(results: RunResults) -> dict[str, str]:
+    """The lines an engineer reads first (label → text), in order; printed by ``conrod
+    run`` and written at the top of summary.json. ``results.headline_extra`` is appended.
+
+    h_min is the smallest FILM thickness, over the angles without hard contact; where the
+    journal touches the shell the gap is the contact threshold h_c, reported on the
+    contact line instead."""
+    s, cycle, model = results.summary, results.cycle, results.model or {}
+    lines = {"model": ", ".join(filter(None, (
+        f"{s.film_model} film", f"{s.integrator} integrator", model.get("housing"),
+        model.get("viscosity"))))}
+    lines["film h_min"] = _film_h_min_text(cycle)
+    lines["contact"] = _contact_text(cycle)
+    lines["p_max"] = f"{s.p_max / 1e6:.2f} MPa at {math.degrees(s.p_max_crank_angle):.0f}°"
+    lines["friction power"] = (f"{s.mean_total_friction_power:.1f} W = film "
+                               f"{s.mean_friction_power:.1f} W + contact "
+                               f"{s.mean_contact_friction_power:.1f} W (cycle means)")
+    lines["oil flow"] = (f"side {s.mean_side_flow * 6e4:.3g} l/min, supply "
+                         f"{s.mean_supply_flow * 6e4:.3g} l/min (cycle means)")
+    lines["temperature"] = ("no heat balance (no oil flow)" if s.effective_temperature is None
+                            else f"{s.effective_temperature:.1f} °C effective (heat balance "
+                            "with film and contact friction)")
+    lines["orbit"] = (f"{'periodic' if s.periodic else 'NOT periodic'} after {s.cycles} "
+                      f"cycles (error {s.periodicity_error:.2g} c), {s.wall_time:.2f} s")
+    lines["warnings"] = str(len(s.warnings)) if s.warnings else "none"
+    lines.update(results.headline_extra or {})
+    return lines
+
+
+def _film_h_min_text(cycle: CycleResults) -> str:
+    free = ~np.asarray(cycle.in_contact, dtype=bool)
+    if not np.any(free):
+        return "no film: the journal touches the shell over the whole cycle"
+    i = int(np.flatnonzero(free)[np.argmin(cycle.h_min[free])])
+    return f"{cycle.h_min[i] * 1e6:.3f} µm at {cycle.crank_angle_deg[i]:.0f}° (outside contact)"
+
+
+def _contact_text(cycle: CycleResults) -> str:
+    touching = np.asarray(cycle.in_contact, dtype=bool)
+    if not np.any(touching):
+        return "none"
+    share = contact_load_share(cycle)
+    i = int(np.argmax(share))
+    return (f"{_intervals_text(cycle)} ({touching.mean():.0%} of the cycle); carries up to "
+            f"{share[i]:.0%} of the load at {cycle.crank_angle_deg[i]:.0f}°")
+
+
+STEP_STUDY_TOLERANCE = 0.02
+"""Relative change of the smallest h_min between a fixed step and half of it above which a
+fixed-step orbit is flagged as under-resolved [-]."""
+
+
+def step_study_warnings(coarse: RunSummary, fine: RunSummary, step_deg: float) -> list[str]:
+    """A warning when halving the fixed step moves the smallest h_min by more than
+    :data:`STEP_STUDY_TOLERANCE` (the answer still depends on the step)."""
+    change = abs(coarse.h_min - fine.h_min) / max(fine.h_min, 1e-300)
+    if change <= STEP_STUDY_TOLERANCE:
+        return []
+    return [f"under-resolved: h_min {coarse.h_min * 1e6:.3g} µm at step {step_deg:g} deg but "
+            f"{fine.h_min * 1e6:.3g} µm at {step_deg / 2:g} deg ({change:.1%} > "
+            f"{STEP_STUDY_TOLERANCE:.0%}); reduce solver.step_deg (--step-deg)"]

@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from conrod.contact.analysis import ContactResults
+from conrod.loads.cycle import LoadCycle
 from conrod.loads.engine_loads import EngineLoads
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults, MechanismRun
 from conrod.mechanism.sweep import SweepRun
@@ -44,6 +45,11 @@ CYCLE_COLUMNS = {
     "in_contact": ("in_contact", None),
 }
 """cycle.csv column → (CycleResults field, conversion). eccentricity_x/_y are in [m]."""
+
+DATAFRAME_NAMES = {"eccentricity_x": "eccentricity_x_m", "eccentricity_y": "eccentricity_y_m",
+                   "eccentricity_ratio": "eccentricity_ratio_1"}
+"""cycle.csv columns renamed in :meth:`CycleResults.to_dataframe` so that every name ends
+in its unit (``_1``: dimensionless)."""
 
 LOADS_COLUMNS = (
     ("crank_angle_deg", lambda r: r.crank_angle_deg),
@@ -83,8 +89,15 @@ def cycle_table(results: RunResults) -> dict[str, np.ndarray]:
 
 
 def summary_items(results: RunResults) -> dict:
-    """summary.json content, including the contact post-processing items."""
-    items = results.summary.as_json_items()
+    """summary.json content: the headline, conrod version, case hash and resolved solver
+    settings first, then the summary and the contact post-processing items."""
+    from conrod import __version__
+    from conrod.results.summary import headline
+
+    items = {"headline": headline(results), "conrod_version": __version__,
+             "case_hash_sha256": results.case_hash, "converged": results.summary.periodic,
+             "solver_settings": results.settings}
+    items.update(results.summary.as_json_items())
     if results.contact is not None:
         items.update(results.contact.summary_items())
     return items
@@ -237,3 +250,38 @@ def _sweep_tables(run: SweepRun) -> tuple[TableSpec, ...]:
 @result_kind.register
 def _sweep_kind(run: SweepRun) -> str:
     return "mechanism_sweep"
+
+
+# ------------------------------------------------------------------ load table
+def table_load_columns(loads: LoadCycle) -> dict[str, np.ndarray]:
+    """loads.csv of a load-table case: the load in the bearing (film) frame."""
+    return {"crank_angle_deg": np.degrees(loads.crank_angle), "load_x_N": loads.load_x,
+            "load_y_N": loads.load_y, "load_N": np.hypot(loads.load_x, loads.load_y),
+            "journal_speed_rad_s": loads.journal_speed, "shell_speed_rad_s": loads.shell_speed}
+
+
+def table_load_summary(loads: LoadCycle) -> dict:
+    """Peak and mean load [N] of a load table, the peak's crank angle [deg]."""
+    magnitude = np.hypot(loads.load_x, loads.load_y)
+    i = int(np.argmax(magnitude))
+    return {"peak_load_N": float(magnitude[i]),
+            "peak_load_crank_angle_deg": float(np.degrees(loads.crank_angle[i])),
+            "mean_load_N": float(magnitude.mean()), "cycle_deg": float(np.degrees(loads.cycle)),
+            "frame": "bearing (film) frame, as given in the load table"}
+
+
+@tables.register
+def _table_load_tables(loads: LoadCycle) -> tuple[TableSpec, ...]:
+    return (
+        TableSpec("loads.csv", "Bearing load from the load table",
+                  "Load components in the bearing frame and magnitude [N], surface speeds "
+                  "[rad/s] against crank angle [deg].", lambda: table_load_columns(loads)),
+        TableSpec("loads_summary.json", "Load summary",
+                  "Peak load [N] and its crank angle [deg], mean load [N].",
+                  lambda: table_load_summary(loads)),
+    )
+
+
+@result_kind.register
+def _table_load_kind(loads: LoadCycle) -> str:
+    return "loads"

@@ -39,6 +39,8 @@ def record_row(index: int, axes: dict[str, Any], record: dict[str, Any],
     for name, value in record.get("summary", {}).items():
         if name in SKIPPED_SUMMARY_ITEMS or name in row:
             continue
+        if isinstance(value, dict):  # the headline and the solver settings: text blocks
+            continue
         if isinstance(value, list):
             if name.endswith("warnings"):
                 row[name] = "; ".join(str(v) for v in value)
