@@ -96,7 +96,7 @@ class HousingSection(Section):
         ".npz with angle_deg and inertia_base_m (n, 4): inertia base fields [-]"))
     stress_angles: list[float] = Field(default_factory=list, description=(
         "Crank angles of the stress analysis; empty: peak load and 360 [deg]"))
-    coupling_tolerance: float = Field(default=1e-10, gt=0.0, le=1e-3, description=(
+    coupling_tolerance: float = Field(default=1e-9, gt=0.0, le=1e-3, description=(
         "Elastohydrodynamic coupling: largest bore-displacement residual accepted, relative "
         "to the radial clearance [-]"))
     rigid_start_deg: float = Field(default=20.0, ge=0.0, le=720.0, description=(

@@ -92,13 +92,13 @@ class BalanceJacobian:
 
 def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJacobian,
                   clearance: float, v_scale: float, tolerance: float, max_iterations: int,
-                  share: float, refresh_after: int = 6) -> BalanceOutcome:
+                  share: float, contraction: float = 0.5) -> BalanceOutcome:
     """(u, v) with G = 0 and F + W = 0 from (u0 [m], v0 [m/s]); ``load`` W [N] (2,),
     ``inertia`` P U c(φ) [m], ``operator`` P C [m/N], ``tolerance`` on max|G| [m]."""
     c, n = clearance, u0.size
     w_scale = float(np.hypot(*load)) + 1.0
     u, v = np.array(u0, dtype=float), np.array(v0, dtype=float)
-    solves, fresh, increment, previous, updates = 0, False, 0.0, None, 0
+    solves, updates, increment, fresh, previous, last = 0, 0, 0.0, False, None, np.inf
     while True:
         forces, film_force, h_min, payload = evaluate(u, v)
         solves += 1
@@ -106,12 +106,12 @@ def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJa
         r = np.concatenate([g / c, (film_force + load) / w_scale])
         residual, force_residual = float(np.max(np.abs(g))), float(np.max(np.abs(r[n:])))
         converged = residual <= tolerance and force_residual <= 1e-9
-        if converged or solves >= max_iterations:
+        if converged or updates >= max_iterations:
             return BalanceOutcome(u, v, payload, solves, residual, force_residual,
                                   increment, converged)
         z = np.concatenate([u / c, v / v_scale])
-        updates += 1
-        if jacobian.inverse is None or (updates >= refresh_after and not fresh):
+        norm = float(np.max(np.abs(r)))
+        if jacobian.inverse is None or (norm > contraction * last and not fresh):
             solves += jacobian.rebuild(evaluate, u, v, forces, film_force, operator, c,
                                        v_scale, w_scale)
             fresh, previous = True, None
@@ -120,8 +120,9 @@ def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJa
         assert jacobian.inverse is not None
         step = -jacobian.inverse @ r
         step *= _limit(step, n, h_min / c, share)
-        previous = (z, r)
+        previous, last = (z, r), norm
         u, v = u + c * step[:n], v + v_scale * step[n:]
+        updates += 1
         increment = float(c * np.max(np.abs(step[:n]))) if n else 0.0
 
 

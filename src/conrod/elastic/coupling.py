@@ -34,18 +34,19 @@ class CouplingSettings:
     """Controls of the coupling iteration.
 
     tolerance : float  Stop when max|G(u)| ≤ tolerance [m].
-    max_iterations : int  Film solves per coupling before ConvergenceError [-].
+    max_iterations : int  Quasi-Newton updates per coupling before ConvergenceError [-].
     increment_share : float  Largest deformation increment as a share of the current
         minimum film thickness (Rodin's Δ safeguard) [-].
     modes : int  Largest number of finite-difference directions of the Jacobian [-].
-    refresh_after : int  Rebuild the Jacobian when a solve needs more film solves [-].
+    contraction : float  Rebuild the Jacobian (once per solve) when an update reduces
+        max|G| by less than this factor [-].
     """
 
     tolerance: float
     max_iterations: int = 40
     increment_share: float = 0.5
     modes: int = 24
-    refresh_after: int = 5
+    contraction: float = 0.5
 
 
 @dataclass(frozen=True)
@@ -115,18 +116,19 @@ def solve_coupling(evaluate: Evaluate, start: np.ndarray, inertia: np.ndarray,
     """Deformation u with G(u) = 0 from ``start`` [m]; ``operator`` = P C [m/N],
     ``inertia`` = P U c(φ) [m]. Returns the last iterate when it does not converge."""
     u = np.array(start, dtype=float)
-    solves, fresh, increment, updates = 0, False, 0.0, 0
+    solves, updates, increment, fresh = 0, 0, 0.0, False
     previous: tuple[np.ndarray, np.ndarray] | None = None
+    last = np.inf
     while True:
         forces, h_min, payload = evaluate(u)
         solves += 1
         residual_vector = u - operator @ forces - inertia
         residual = float(np.max(np.abs(residual_vector)))
-        if residual <= settings.tolerance or solves >= settings.max_iterations:
+        if residual <= settings.tolerance or updates >= settings.max_iterations:
             return CouplingOutcome(u, payload, solves, residual, increment,
                                    residual <= settings.tolerance)
-        updates += 1
-        if cache.inverse is None or (updates >= settings.refresh_after and not fresh):
+        slow = residual > settings.contraction * last
+        if cache.inverse is None or (slow and not fresh):
             solves += cache.rebuild(evaluate, u, forces, operator, 1e-4 * clearance)
             fresh, previous = True, None
         elif previous is not None:
@@ -134,8 +136,9 @@ def solve_coupling(evaluate: Evaluate, start: np.ndarray, inertia: np.ndarray,
         assert cache.inverse is not None
         step = -cache.inverse @ residual_vector
         step *= _safeguard(step, h_min, settings.increment_share)
-        previous = (u, residual_vector)
+        previous, last = (u, residual_vector), residual
         u = u + step
+        updates += 1
         increment = float(np.max(np.abs(step)))
 
 

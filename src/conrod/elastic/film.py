@@ -44,6 +44,7 @@ from conrod.elastic.coupling import (
     CouplingSettings,
     JacobianCache,
     dominant_directions,
+    fixed_point_coupling,
     solve_coupling,
 )
 from conrod.elastic.rate import rated, with_deformation_rate
@@ -94,6 +95,9 @@ class ElasticSettings:
     rigid_start : float  Crank angle turned with a rigid bore from the orbit start [rad]
         (Rodin 2004: 10–40°).
     cycle : float  Crank angle of one cycle [rad].
+    method : 'quasi_newton' (default) or 'fixed_point': the under-relaxed fixed point
+        u ← u − ω G(u), slow, kept as the reference of the tests (fixed kinematics only).
+    relaxation : float  ω of the fixed point [-].
     deformation_rate : bool  Put the bore's rate ∂u/∂t in the squeeze term
         (:mod:`conrod.elastic.rate`; Reynolds film only).
     ramp : float  Crank angle over which the deformation is then brought in linearly [rad]
@@ -104,7 +108,7 @@ class ElasticSettings:
     start_angle : float  Crank angle of the orbit start [rad].
     """
 
-    tolerance: float = 1e-10
+    tolerance: float = 1e-9
     rigid_start: float = np.radians(20.0)
     increment_share: float = 0.5
     max_iterations: int = 40
@@ -112,6 +116,8 @@ class ElasticSettings:
     ramp: float = np.radians(90.0)
     cycle: float = 4.0 * np.pi
     deformation_rate: bool = True
+    method: str = "quasi_newton"
+    relaxation: float = 0.2
 
     def share(self, elapsed: float) -> float:
         """Share λ ∈ [0, 1] of the deformation applied after turning ``elapsed`` [rad]:
@@ -259,7 +265,7 @@ class ElasticFilm(FilmWrapper):
             evaluate, start, np.array([state.velocity_x, state.velocity_y]),
             np.asarray(load, dtype=float), inertia, operator,
             self.balance_jacobian if elastic else self.rigid_jacobian, c, scale,
-            self._coupling.tolerance, 4 * self.settings.max_iterations,
+            self._coupling.tolerance, self.settings.max_iterations,
             self.settings.increment_share)
         if not outcome.converged:
             raise ConvergenceError(
@@ -328,10 +334,16 @@ class ElasticFilm(FilmWrapper):
             result, after = solve_film(self.base, state, memory.inner, with_pressure=True)
             zero = np.zeros(len(self.housing.angles))
             return CouplingOutcome(zero, (result, after), 1, 0.0, 0.0, True)
-        outcome = solve_coupling(evaluate, memory.deformation,
-                                 share * self.inertia_deformation(memory.crank_angle),
-                                 share * self.housing.corrected_compliance, self.jacobian,
-                                 self._coupling, self.base.geometry.radial_clearance)
+        inertia = share * self.inertia_deformation(memory.crank_angle)
+        operator = share * self.housing.corrected_compliance
+        if self.settings.method == "fixed_point":
+            outcome = fixed_point_coupling(
+                evaluate, memory.deformation, inertia, operator, self.settings.relaxation,
+                self._coupling.tolerance, 100 * self.settings.max_iterations)
+        else:
+            outcome = solve_coupling(evaluate, memory.deformation, inertia, operator,
+                                     self.jacobian, self._coupling,
+                                     self.base.geometry.radial_clearance)
         if not outcome.converged:
             raise ConvergenceError(
                 "elastohydrodynamic coupling did not converge (residual: bore displacement, m)",
