@@ -92,7 +92,7 @@ class Simulation:
         self.solver = _solver_with(case, {**overrides, **names})
         self._film = None if film is None or isinstance(film, str) else film
         self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
-        self._overrides.update(names)
+        self._names = names
         self._loads = loads if loads is not None else self._read_loads()  # bad tables fail here
 
     # -- components -------------------------------------------------------------------
@@ -193,8 +193,11 @@ class Simulation:
         """The same simulation on a rigid bore (None when not asked for)."""
         if not self._rigid_companion:
             return None
-        return Simulation(self.case, film=self._film, loads=self._loads,
-                          integrator=self._integrator, housing="rigid", **self._overrides)
+        film = self._film if self._film is not None else self._names["film"]
+        integrator = (self._integrator if self._integrator is not None
+                      else self._names["integrator"])
+        return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
+                          housing="rigid", **self._overrides)
 
     def _run(self, progress: ProgressCallback | None = None):
         """(RunResults, the converged thermal orbit)."""

@@ -92,38 +92,61 @@ class BalanceJacobian:
 
 def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJacobian,
                   clearance: float, v_scale: float, tolerance: float, max_iterations: int,
-                  share: float, contraction: float = 0.5) -> BalanceOutcome:
+                  share: float) -> BalanceOutcome:
     """(u, v) with G = 0 and F + W = 0 from (u0 [m], v0 [m/s]); ``load`` W [N] (2,),
-    ``inertia`` P U c(φ) [m], ``operator`` P C [m/N], ``tolerance`` on max|G| [m]."""
+    ``inertia`` P U c(φ) [m], ``operator`` P C [m/N], ``tolerance`` on max|G| [m].
+    Quasi-Newton steps with backtracking on max|r|; the Jacobian is rebuilt (once per
+    solve) when a step has to be cut to a quarter."""
     c, n = clearance, u0.size
     w_scale = float(np.hypot(*load)) + 1.0
-    u, v = np.array(u0, dtype=float), np.array(v0, dtype=float)
-    solves, updates, increment, fresh, previous, last = 0, 0, 0.0, False, None, np.inf
-    while True:
+    solves = 0
+
+    def residual(z: np.ndarray):
+        nonlocal solves
+        u, v = c * z[:n], v_scale * z[n:]
         forces, film_force, h_min, payload = evaluate(u, v)
         solves += 1
         g = u - operator @ forces - inertia
         r = np.concatenate([g / c, (film_force + load) / w_scale])
-        residual, force_residual = float(np.max(np.abs(g))), float(np.max(np.abs(r[n:])))
-        converged = residual <= tolerance and force_residual <= 1e-9
-        if converged or updates >= max_iterations:
-            return BalanceOutcome(u, v, payload, solves, residual, force_residual,
-                                  increment, converged)
-        z = np.concatenate([u / c, v / v_scale])
-        norm = float(np.max(np.abs(r)))
-        if jacobian.inverse is None or (norm > contraction * last and not fresh):
-            solves += jacobian.rebuild(evaluate, u, v, forces, film_force, operator, c,
-                                       v_scale, w_scale)
-            fresh, previous = True, None
-        elif previous is not None:
-            jacobian.broyden(z - previous[0], r - previous[1])
-        assert jacobian.inverse is not None
+        return r, forces, film_force, h_min, payload
+
+    z = np.concatenate([np.asarray(u0, dtype=float) / c, np.asarray(v0, dtype=float) / v_scale])
+    r, forces, film_force, h_min, payload = residual(z)
+    fresh, increment, since = False, 0.0, 0
+    for _ in range(max_iterations):
+        since += 1
+        if since > 8:  # slow contraction: a new Jacobian is allowed again
+            fresh, since = False, 0
+        if _converged(r, n, c, tolerance):
+            break
+        if jacobian.inverse is None:
+            solves += jacobian.rebuild(evaluate, c * z[:n], v_scale * z[n:], forces,
+                                       film_force, operator, c, v_scale, w_scale)
+            fresh, since = True, 0
         step = -jacobian.inverse @ r
         step *= _limit(step, n, h_min / c, share)
-        previous, last = (z, r), norm
-        u, v = u + c * step[:n], v + v_scale * step[n:]
-        updates += 1
-        increment = float(c * np.max(np.abs(step[:n]))) if n else 0.0
+        norm, lam = float(np.max(np.abs(r))), 1.0
+        while True:
+            trial = residual(z + lam * step)
+            if float(np.max(np.abs(trial[0]))) < norm or lam < 0.25:
+                break
+            lam *= 0.5
+        if lam < 0.25 and not fresh:  # poor Jacobian: rebuild here and retry
+            jacobian.inverse = None
+            continue
+        jacobian.broyden(lam * step, trial[0] - r)
+        z = z + lam * step
+        r, forces, film_force, h_min, payload = trial
+        increment = float(c * np.max(np.abs(lam * step[:n]))) if n else 0.0
+    return BalanceOutcome(c * z[:n], v_scale * z[n:], payload, solves,
+                          float(c * np.max(np.abs(r[:n]))) if n else 0.0,
+                          float(np.max(np.abs(r[n:]))), increment,
+                          _converged(r, n, c, tolerance))
+
+
+def _converged(r: np.ndarray, n: int, c: float, tolerance: float) -> bool:
+    bore = float(c * np.max(np.abs(r[:n]))) if n else 0.0
+    return bore <= tolerance and float(np.max(np.abs(r[n:]))) <= 1e-9
 
 
 def _limit(step: np.ndarray, n: int, h_min_scaled: float, share: float) -> float:
