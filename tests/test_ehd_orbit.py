@@ -49,3 +49,29 @@ def test_diagnostics_are_reported_per_crank_angle(stiff_run):
     assert np.max(np.abs(stiff_run.deformation)) < 1e-7
     items = elastic_summary_items(stiff_run)
     assert set(items["comparison"]) == {"rigid", "elastic", "difference_percent", "units"}
+
+
+def test_results_folder_holds_elastic_rigid_and_comparison(stiff_run, tmp_path):
+    import json
+
+    import pandas as pd
+
+    import conrod.plotting  # noqa: F401  (registers the figures)
+    from conrod.results.output import write_results
+
+    write_results(stiff_run, tmp_path)
+    cycle = pd.read_csv(tmp_path / "cycle.csv")
+    rigid = pd.read_csv(tmp_path / "cycle_rigid.csv")
+    assert {"coupling_iterations", "force_residual_N", "deformation_increment_m",
+            "bore_displacement_min_m", "bore_displacement_max_m"} <= set(cycle.columns)
+    assert len(rigid) == len(cycle)
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    comparison = summary["comparison"]
+    assert comparison["rigid"]["h_min_um"] == pytest.approx(
+        stiff_run.rigid.summary.h_min * 1e6)
+    assert abs(comparison["difference_percent"]["h_min_um"]) < 0.2
+    manifest = json.loads((tmp_path / "manifest.json").read_text())
+    files = {entry["file"] for entry in manifest["figures"]}
+    assert {"hmin_pmax_rigid_elastic.png", "deformed_bore.png",
+            "deformed_film_maps.png"} <= files
+    assert all((tmp_path / name).stat().st_size > 0 for name in files)

@@ -172,9 +172,10 @@ class Simulation:
         lubricant = self._lubricant
         mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
         mass_x, mass_y = self.masses()
+        film = self.film_model()
         return OrbitProblem(
-            self.film_model(), self.load_cycle(), mu, mass_x, mass_y,
-            self.case.contact.dry_friction_coefficient, self.solver.contact_film_thickness,
+            film, self.load_cycle(), mu, mass_x, mass_y,
+            self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
             _asperity_parameters(self.case),
 )
 
@@ -266,6 +267,15 @@ def default_film(case: Case) -> FilmModel:
     if case.bearing is None:
         raise CaseError("[bearing]: required for a film model")
     return build_film_model(case.solver, case.bearing.geometry())
+
+
+def _contact_thickness(solver, film) -> float:
+    """h_c of the rigid contact circle [m]; on a deforming bore the circle is widened by
+    one clearance (the bore gives way under the film), so that the journal is stopped by
+    the deformed film (h_min on the deformed bore) and not by the rigid circle."""
+    if hasattr(film, "housing"):
+        return solver.contact_film_thickness - film.geometry.radial_clearance
+    return solver.contact_film_thickness
 
 
 def coupling_settings(case: Case):

@@ -57,6 +57,9 @@ def register(app: typer.Typer) -> None:
         step_deg: Annotated[float | None, typer.Option(help="Fixed step of rk2 [deg].")] = None,
         grid: Annotated[str | None, typer.Option(help="Film grid NTHETAxNZ, e.g. 72x16.")] = None,
         figures: Annotated[bool, typer.Option(help="Write the figures.")] = True,
+        rigid: Annotated[bool, typer.Option(
+            "--rigid/--no-rigid", help="With an elastic [housing], also run the rigid bore "
+            "and compare (cycle_rigid.csv, summary.json comparison).")] = True,
 ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
         import conrod.plotting  # noqa: F401  (registers the figures)
@@ -67,7 +70,8 @@ def register(app: typer.Typer) -> None:
         case = Case.from_toml(case_file)
         n_theta, n_z = _grid(grid)
         simulation = Simulation(case, film=film, integrator=integrator, max_cycles=max_cycles,
-                                step_deg=step_deg, n_theta=n_theta, n_z=n_z)
+                                step_deg=step_deg, n_theta=n_theta, n_z=n_z,
+                                rigid_companion=rigid)
         progress = _Progress(simulation.solver.max_cycles)
         try:
             results = simulation.run(progress=progress)

@@ -34,6 +34,8 @@ class ElasticCycle:
     deformation: np.ndarray
     angles: np.ndarray
     columns: dict[str, np.ndarray]
+    peak_load_index: int = 0
+    peak_load_pressure: np.ndarray | None = None
 
 
 def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticCycle:
@@ -44,12 +46,16 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
     columns = {name: np.zeros(len(cycle.crank_angle)) for name in names}
     force = np.zeros((len(cycle.crank_angle), 2))
     deformation = np.zeros((len(cycle.crank_angle), len(film.housing.angles)))
+    peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
+    peak_pressure = None
     for i, memory in enumerate(film_memory):
         state = FilmState(float(cycle.eccentricity_x[i]), float(cycle.eccentricity_y[i]),
                           float(cycle.velocity_x[i]), float(cycle.velocity_y[i]),
                           float(cycle.journal_speed[i]), float(cycle.shell_speed[i]),
                           problem.viscosity)
-        result, after = film.solve_with_memory(state, memory)
+        result, after = film.solve_with_memory(state, memory, with_pressure=i == peak)
+        if i == peak:
+            peak_pressure = result.pressure
         force[i] = result.force_x, result.force_y
         deformation[i] = after.deformation
         columns["coupling_iterations"][i] = memory.iterations
@@ -58,7 +64,8 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
         columns["bore_displacement_min_m"][i] = after.deformation.min()
         columns["bore_displacement_max_m"][i] = after.deformation.max()
     columns["force_residual_N"] = _force_residual(problem, cycle, force, massless)
-    return ElasticCycle(deformation, np.asarray(film.housing.angles), columns)
+    return ElasticCycle(deformation, np.asarray(film.housing.angles), columns, peak,
+                        peak_pressure)
 
 
 def _force_residual(problem, cycle, force: np.ndarray, massless: bool) -> np.ndarray:

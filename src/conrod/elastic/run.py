@@ -41,7 +41,9 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     return ElasticRunResults(
         elastic=dataclasses.replace(results, summary=summary), columns=diagnostics.columns,
         deformation=diagnostics.deformation, bore_angles=diagnostics.angles,
-        housing=film.housing, rigid=rigid, info=info)
+        housing=film.housing, rigid=rigid, info=info,
+        peak_load_index=diagnostics.peak_load_index,
+        peak_load_pressure=diagnostics.peak_load_pressure)
 
 
 def _staged(progress, prefix: str):

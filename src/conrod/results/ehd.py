@@ -40,6 +40,8 @@ class ElasticRunResults:
     housing : object  The :class:`conrod.elastic.housing.Housing` used.
     rigid : RunResults or None  The rigid companion run (None when skipped).
     info : dict  Coupling settings and totals for summary.json.
+    peak_load_index : int  Output row of the largest load [-].
+    peak_load_pressure : ndarray or None  Film pressure p(θ, z) there [Pa].
     """
 
     elastic: RunResults
@@ -49,6 +51,8 @@ class ElasticRunResults:
     housing: Any
     rigid: RunResults | None = None
     info: dict | None = None
+    peak_load_index: int = 0
+    peak_load_pressure: np.ndarray | None = None
 
     @property
     def cycle(self):
