@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from elastic_helpers import kamaz_case
 
 from conrod.elastic.housing import Housing
 from conrod.results.ehd import ElasticRunResults, elastic_summary_items
 from conrod.simulation import Simulation
+from elastic_helpers import kamaz_case
 
 GRID = {"n_theta": 36, "n_z": 8, "film": "reynolds", "integrator": "quasi_static",
         "quasi_static_step_deg": 2.0, "output_step_deg": 4.0}

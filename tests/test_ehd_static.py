@@ -8,13 +8,13 @@ import tomllib
 
 import numpy as np
 import pytest
-from elastic_helpers import EXAMPLES, kamaz_case
 
 from conrod.cases.case import Case
 from conrod.elastic.film import ElasticFilm
 from conrod.elastic.housing import Housing
 from conrod.film.base import FilmState
 from conrod.simulation import Simulation
+from elastic_helpers import EXAMPLES, kamaz_case
 
 N_THETA, N_Z = 36, 8
 LOAD = 2_500.0  # [N] constant, pressing the journal towards θ = 200°

@@ -154,7 +154,8 @@ class Simulation:
             else:
                 from conrod.elastic.housing import Housing
 
-                self._housing = Housing.from_case(self.case)
+                self._housing = Housing.from_case(
+                    self.case.model_copy(update={"solver": self.solver}))
         return None if self._housing == "rigid" else self._housing
 
     def elastic(self) -> bool:
@@ -185,7 +186,15 @@ class Simulation:
         an elastic housing the elastic answer, its diagnostics and the rigid companion
         (:class:`conrod.results.ehd.ElasticRunResults`)."""
         if not self.elastic():
-            return self._run(progress)[0]
+            results = self._run(progress)[0]
+            if self.housing() is None:
+                return results
+            note = (f"[housing] model = {self.case.housing.model!r} not coupled: film "
+                    f"{results.summary.film_model!r} cannot take a bore deformation (allowed: "
+                    "reynolds, mass_conserving); the bore is rigid")
+            summary = dataclasses.replace(results.summary,
+                                          warnings=(*results.summary.warnings, note))
+            return dataclasses.replace(results, summary=summary)
         from conrod.elastic.run import elastic_run
 
         return elastic_run(self, progress)
