@@ -137,10 +137,10 @@ def rigid_run_pressures(case, crank_angles_deg: list[float]):
     from conrod.film.base import FilmState
     from conrod.simulation import Simulation
 
-    simulation = Simulation(case)
+    simulation = Simulation(case, housing="rigid")
     results = simulation.run()
     cycle = results.cycle
-    film = simulation.film()
+    film = simulation.film_model()
     viscosity = results.summary.viscosity
     theta, z = film.grid()
     fields = []
