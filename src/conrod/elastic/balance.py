@@ -135,9 +135,11 @@ def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJa
         norm, lam = float(np.max(np.abs(r))), 1.0
         while True:
             trial = residual(z + lam * step)
-            if float(np.max(np.abs(trial[0]))) < norm or lam < 0.25:
+            if float(np.max(np.abs(trial[0]))) < norm or lam < 1.0 / 64.0:
                 break
             lam *= 0.5
+            if lam < 0.25 and not fresh:
+                break
         if lam < 0.25 and not fresh:  # poor Jacobian: rebuild here and retry
             jacobian.inverse = None
             continue
