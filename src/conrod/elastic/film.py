@@ -265,7 +265,7 @@ class ElasticFilm(FilmWrapper):
             evaluate, start, np.array([state.velocity_x, state.velocity_y]),
             np.asarray(load, dtype=float), inertia, operator,
             self.balance_jacobian if elastic else self.rigid_jacobian, c, scale,
-            self._coupling.tolerance, 3 * self.settings.max_iterations,
+            self._coupling.tolerance, 5 * self.settings.max_iterations,
             self.settings.increment_share)
         if not outcome.converged:
             raise ConvergenceError(
