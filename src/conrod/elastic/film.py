@@ -19,15 +19,20 @@ deformation needs — advanced by ω dt in :meth:`ElasticFilm.advance_memory`, t
 every fixed-step integrator calls after a step — and the coupling diagnostics. Because that
 memory evolves in lock-step with a fixed step, :meth:`initial_history` is not None and the
 error-controlled ``adaptive`` integrator refuses the film; ``quasi_static`` and ``rk2``
-run it. Within a Heun step the predictor and corrector solves both see φ at the start of
-the step (the inertia deformation lags by at most one step).
+run it. In ``rk2`` the predictor and corrector solves of a step both see φ at the start of
+the step (the inertia deformation lags by at most one step); the massless orbit passes the
+exact φ of each state.
 
-Deformation rate. The squeeze term of the Reynolds equation is 12 μ ∂h/∂t with ∂h/∂t from
-the journal velocity only; the rate ∂u/∂t of the bore deformation is left out, as in
-Rodin's coupled algorithm (quasi-static housing: the deformation follows the pressure at
-every instant). The wrapper reports the largest rate seen between steps in the memory
-(``deformation_rate`` [m/s]) so that the neglect can be judged against the journal's
-squeeze velocity c ω.
+Deformation rate. The squeeze term 12 μ ∂h/∂t includes the bore's rate ∂u/∂t, taken
+backward in time from the deformation at the previous crank angle (:mod:`conrod.elastic.rate`,
+Reynolds film; ``ElasticSettings(deformation_rate=False)`` leaves it out as Rodin 2004 does).
+Without it the bore moves into a journal that the massless orbit holds in place with no
+film resistance, and the force balance on the deformed bore fails. The largest rate seen
+over a step is kept in the memory (``deformation_rate`` [m/s]).
+
+The massless orbit asks :meth:`ElasticFilm.balance_velocity` for the velocity that balances
+the load, bore displacement and velocity solved together (:mod:`conrod.elastic.balance`),
+passing the crank angle of each state.
 """
 
 from __future__ import annotations
