@@ -27,6 +27,7 @@ from conrod.contact.analysis import analyse_contact
 from conrod.contact.asperity import kernel_parameters
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmState
+from conrod.film.capabilities import SupportsDeformation
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
@@ -58,15 +59,19 @@ class Simulation:
     integrator : Integrator, integrator name or None  Orbit integrator object
         (:class:`~conrod.orbit.integrators.Integrator`) or a registered name replacing
         ``[solver] integrator``; None: the case's.
-    housing : None  Elastic housing (bore deformation); reserved — a housing object is
-        refused until the elastic coupling exists.
+    housing : Housing, "rigid" or None  Elastic big-end housing
+        (:class:`conrod.elastic.housing.Housing`) whose bore deforms with the film
+        (:class:`conrod.elastic.film.ElasticFilm`); "rigid": a rigid bore; None: the case's
+        ``[housing]`` (rigid unless its model is builtin, mesh or compliance).
+    rigid_companion : bool  With an elastic housing, also run the rigid bore and compare
+        (:class:`conrod.results.ehd.ElasticRunResults`).
     overrides : keyword arguments replacing other ``[solver]`` fields (e.g. ``max_cycles=2``,
         ``n_theta=72``); validated like the case file.
     """
 
     def __init__(self, case: Case, film: FilmModel | str | None = None,
                  loads: LoadCycle | None = None, integrator: Integrator | str | None = None,
-                 housing: Any = None, **overrides: Any):
+                 housing: Any = None, rigid_companion: bool = True, **overrides: Any):
         case.require("run", "bearing", "lubricant")
         if loads is None and case.engine is None and case.load is None:
             raise CaseError("run needs either [engine] or [load] (a load table) in the case file")
@@ -74,9 +79,13 @@ class Simulation:
         assert bearing is not None and lubricant is not None  # checked by require()
         if bearing.radial_clearance is None:
             raise CaseError("bearing.radial_clearance: required by 'run' [m]")
-        if housing is not None:
-            raise CaseError("housing: an elastic housing is not available in this version "
-                            "(allowed: None, a rigid bore)")
+        if housing is not None and housing != "rigid" and not hasattr(
+                housing, "corrected_compliance"):
+            raise CaseError(f"housing = {type(housing).__name__}: not a housing (allowed: "
+                            "None, 'rigid' or a conrod.elastic.housing.Housing)")
+        self._housing = housing
+        self._rigid_companion = rigid_companion
+        self._overrides = dict(overrides)
         names = {"film": film if isinstance(film, str) else None,
                  "integrator": integrator if isinstance(integrator, str) else None}
         self.case = case
@@ -84,6 +93,7 @@ class Simulation:
         self.solver = _solver_with(case, {**overrides, **names})
         self._film = None if film is None or isinstance(film, str) else film
         self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
+        self._names = names
         self._loads = loads if loads is not None else self._read_loads()  # bad tables fail here
 
     # -- components -------------------------------------------------------------------
@@ -124,11 +134,39 @@ class Simulation:
         return mass_x, mass_y
 
     def film_model(self) -> FilmModel:
-        """The film model: the one given, else the one of ``[solver] film``."""
-        if self._film is not None:
-            return self._film
+        """The film model: the one given, else the one of ``[solver] film``; on the bore of
+        the elastic housing when there is one and the film can take a deformation."""
+        film = self._film if self._film is not None else self._named_film()
+        housing = self.housing()
+        if housing is None or not isinstance(film, SupportsDeformation):
+            return film
+        from conrod.elastic.film import ElasticFilm
+
+        loads = self.load_cycle()
+        settings = dataclasses.replace(coupling_settings(self.case), cycle=loads.cycle)
+        return ElasticFilm(film, housing, loads.crank_speed, settings)
+
+    def _named_film(self) -> FilmModel:
+        """The film of ``[solver] film`` with the case's pressure–viscosity law."""
         return build_film_model(self.solver, self.geometry(),
                                 pressure_viscosity=self.case.lubricant.pressure_viscosity_law())
+
+    def housing(self) -> Any:
+        """The elastic housing (built once from ``[housing]``), or None for a rigid bore."""
+        if self._housing is None:
+            if self.case.housing.model == "rigid":
+                self._housing = "rigid"
+            else:
+                from conrod.elastic.housing import Housing
+
+                self._housing = Housing.from_case(
+                    self.case.model_copy(update={"solver": self.solver}))
+        return None if self._housing == "rigid" else self._housing
+
+    def elastic(self) -> bool:
+        """True when the orbit runs on a deforming bore (a housing and a deformable film)."""
+        film = self._film if self._film is not None else self._named_film()
+        return self.housing() is not None and isinstance(film, SupportsDeformation)
 
     def integrator(self) -> Integrator | str:
         """The orbit integrator: the object given, else the name of ``[solver]``."""
@@ -139,15 +177,44 @@ class Simulation:
         lubricant = self._lubricant
         mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
         mass_x, mass_y = self.masses()
+        film = self.film_model()
         return OrbitProblem(
-            self.film_model(), self.load_cycle(), mu, mass_x, mass_y,
-            self.case.contact.dry_friction_coefficient, self.solver.contact_film_thickness,
+            film, self.load_cycle(), mu, mass_x, mass_y,
+            self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
             _asperity_parameters(self.case),
         )
 
     # -- run --------------------------------------------------------------------------
-    def run(self, progress: ProgressCallback | None = None) -> RunResults:
-        """Periodic orbit, heat balance, characteristics and contact post-processing."""
+    def run(self, progress: ProgressCallback | None = None) -> RunResults | Any:
+        """Periodic orbit, heat balance, characteristics and contact post-processing; with
+        an elastic housing the elastic answer, its diagnostics and the rigid companion
+        (:class:`conrod.results.ehd.ElasticRunResults`)."""
+        if not self.elastic():
+            results = self._run(progress)[0]
+            if self.housing() is None:
+                return results
+            note = (f"[housing] model = {self.case.housing.model!r} not coupled: film "
+                    f"{results.summary.film_model!r} cannot take a bore deformation (allowed: "
+                    "reynolds, mass_conserving); the bore is rigid")
+            summary = dataclasses.replace(results.summary,
+                                          warnings=(*results.summary.warnings, note))
+            return dataclasses.replace(results, summary=summary)
+        from conrod.elastic.run import elastic_run
+
+        return elastic_run(self, progress)
+
+    def rigid_companion(self) -> Simulation | None:
+        """The same simulation on a rigid bore (None when not asked for)."""
+        if not self._rigid_companion:
+            return None
+        film = self._film if self._film is not None else self._names["film"]
+        integrator = (self._integrator if self._integrator is not None
+                      else self._names["integrator"])
+        return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
+                          housing="rigid", **self._overrides)
+
+    def _run(self, progress: ProgressCallback | None = None):
+        """(RunResults, the converged thermal orbit)."""
         start = time.perf_counter()
         thermal = self._thermal_orbit(self.problem(), progress)
         orbit, problem, cycle = thermal.orbit, thermal.problem, thermal.cycle
@@ -167,12 +234,12 @@ class Simulation:
         resolved = self.case.model_copy(update={"solver": self.solver})  # with the overrides
         return dataclasses.replace(results, summary=summary, model=self._model_description(),
                                    case_hash=resolved.content_hash(),
-                                   settings=self.solver.model_dump(mode="json"))
+                                   settings=self.solver.model_dump(mode="json")), thermal
 
     def _model_description(self) -> dict[str, str]:
         """What is computed, in words, for the headline."""
         law = self._lubricant.pressure_viscosity_law()
-        model = {"housing": "rigid bore",  # the orbit of this Simulation is rigid
+        model = {"housing": "elastic bore (EHD)" if self.elastic() else "rigid bore",
                  "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
         if self.case.engine is not None and self.case.engine.pressure_model is not None:
             model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
@@ -227,6 +294,26 @@ def default_film(case: Case) -> FilmModel:
     if case.bearing is None:
         raise CaseError("[bearing]: required for a film model")
     return build_film_model(case.solver, case.bearing.geometry())
+
+
+def _contact_thickness(solver, film) -> float:
+    """h_c of the rigid contact circle [m]; on a deforming bore the circle is widened by
+    one clearance (the bore gives way under the film), so that the journal is stopped by
+    the deformed film (h_min on the deformed bore) and not by the rigid circle."""
+    if hasattr(film, "housing"):
+        return solver.contact_film_thickness - film.geometry.radial_clearance
+    return solver.contact_film_thickness
+
+
+def coupling_settings(case: Case):
+    """:class:`conrod.elastic.film.ElasticSettings` of ``[housing]``."""
+    from conrod.elastic.film import ElasticSettings
+
+    h = case.housing
+    return ElasticSettings(tolerance=h.coupling_tolerance,
+                           rigid_start=float(np.radians(h.rigid_start_deg)),
+                           increment_share=h.increment_share,
+                           max_iterations=h.coupling_iterations)
 
 
 def _name(choice: Integrator | str) -> str:

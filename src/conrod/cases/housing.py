@@ -96,6 +96,15 @@ class HousingSection(Section):
         ".npz with angle_deg and inertia_base_m (n, 4): inertia base fields [-]"))
     stress_angles: list[float] = Field(default_factory=list, description=(
         "Crank angles of the stress analysis; empty: peak load and 360 [deg]"))
+    coupling_tolerance: float = Field(default=1e-9, gt=0.0, le=1e-3, description=(
+        "Elastohydrodynamic coupling: largest bore-displacement residual accepted, relative "
+        "to the radial clearance [-]"))
+    rigid_start_deg: float = Field(default=20.0, ge=0.0, le=720.0, description=(
+        "Crank angle run with a rigid bore from the orbit start (Rodin 2004: 10-40) [deg]"))
+    increment_share: float = Field(default=0.5, gt=0.0, le=1.0, description=(
+        "Largest bore-deformation increment per coupling update, share of h_min [-]"))
+    coupling_iterations: int = Field(default=40, ge=2, le=1000, description=(
+        "Film solves per coupling before the step fails [-]"))
 
     @model_validator(mode="after")
     def _check_model_inputs(self) -> HousingSection:

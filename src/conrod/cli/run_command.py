@@ -70,6 +70,9 @@ def register(app: typer.Typer) -> None:
         step_check: Annotated[bool, typer.Option(
             help="rk2: rerun at half the step and warn when h_min moves by more than 2 %.")
         ] = True,
+        rigid: Annotated[bool, typer.Option(
+            "--rigid/--no-rigid", help="With an elastic [housing], also run the rigid bore "
+            "and compare (cycle_rigid.csv, summary.json comparison).")] = True,
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
         import conrod.plotting  # noqa: F401  (registers the figures)
@@ -83,7 +86,8 @@ def register(app: typer.Typer) -> None:
         n_theta, n_z = _grid(grid)
         simulation = Simulation(case, film=film and film.value,
                                 integrator=integrator and integrator.value, max_cycles=max_cycles,
-                                step_deg=step_deg, n_theta=n_theta, n_z=n_z)
+                                step_deg=step_deg, n_theta=n_theta, n_z=n_z,
+                                rigid_companion=rigid)
         progress = _Progress(simulation.solver.max_cycles)
         try:
             results = simulation.run(progress=progress)

@@ -66,10 +66,15 @@ def _imported(case, angles, radius, common) -> Housing:
                    **common)
 
 
+COUPLING_FIELDS = ("coupling_tolerance", "rigid_start_deg", "increment_share",
+                   "coupling_iterations")
+"""[housing] fields of the film coupling: not part of the cached structure [-]."""
+
+
 def _cache_payload(case) -> dict:
     section = case.housing
-    payload = {"housing": section.model_dump(mode="json", exclude={"stress_angles",
-                                                                   "correction"}),
+    skip = {"stress_angles", "correction", *COUPLING_FIELDS}
+    payload = {"housing": section.model_dump(mode="json", exclude=skip),
                "bearing": [case.bearing.diameter, case.bearing.width],
                "rod_length": case.engine.rod_length if case.engine else None,
                "n_theta": case.solver.n_theta}

@@ -137,7 +137,7 @@ def rigid_run_pressures(case, crank_angles_deg: list[float]):
     from conrod.film.base import FilmState
     from conrod.simulation import Simulation
 
-    simulation = Simulation(case)
+    simulation = Simulation(case, housing="rigid")
     results = simulation.run()
     cycle = results.cycle
     film = simulation.film_model()

@@ -35,18 +35,25 @@ from conrod.orbit.trajectory import CycleTrajectory
 
 
 def _velocity_solver(problem: OrbitProblem, session: FilmSession):
-    """(x, y, W_x, W_y, ω_j, ω_b, guess) → (v_x, v_y, relative residual)."""
+    """(x, y, W_x, W_y, ω_j, ω_b, guess, φ) → (v_x, v_y, relative residual)."""
     mu = problem.viscosity
     film = problem.film
+    if hasattr(film, "balance_velocity"):  # film solving its own force balance with memory
+        def balanced(x, y, wx, wy, wj, wb, guess, angle=0.0):
+            state = FilmState(x, y, guess[0], guess[1], wj, wb, mu)
+            vx, vy, residual, session.memory = film.balance_velocity(
+                state, (wx, wy), session.memory, angle)
+            return vx, vy, residual
+        return balanced
     if hasattr(film, "journal_velocity"):
-        def mobility(x, y, wx, wy, wj, wb, guess):
+        def mobility(x, y, wx, wy, wj, wb, guess, angle=0.0):
             vx, vy = film.journal_velocity(x, y, wx, wy, wj, wb, mu)
             return float(vx), float(vy), 0.0
         return mobility
     scale = film.geometry.radial_clearance * max(problem.crank_speed, 1e-3)
     kernel = problem.compiled_force
     if kernel is not None:
-        def compiled(x, y, wx, wy, wj, wb, guess):  # reference path of the compiled loops
+        def compiled(x, y, wx, wy, wj, wb, guess, angle=0.0):  # reference path (compiled)
             return newton_velocity(kernel.force, kernel.params, x, y, wx, wy, wj + wb, mu,
                                     guess[0], guess[1], scale)[:3]
         return compiled
@@ -63,7 +70,7 @@ def _generic_newton(problem: OrbitProblem, scale: float, session: FilmSession | 
         fx, fy = force(x, y, v[0], v[1], wj, wb)
         return np.array([fx + wx, fy + wy])
 
-    def solve(x, y, wx, wy, wj, wb, guess):
+    def solve(x, y, wx, wy, wj, wb, guess, angle=0.0):
         v = np.array(guess, dtype=float)
         load = math.hypot(wx, wy) + 1.0
         r = residual(x, y, v, wx, wy, wj, wb)
@@ -120,7 +127,7 @@ def quasi_static_cycle(
     memory = [None] * n_out if session.has_memory else None
     worst = 0.0
     for k in range(len(phi) - 1):
-        vx, vy, r1 = velocity(x, y, load_x[k], load_y[k], wj[k], wb[k], guess)
+        vx, vy, r1 = velocity(x, y, load_x[k], load_y[k], wj[k], wb[k], guess, phi[k])
         contact = math.hypot(x, y) >= rc * (1.0 - 1e-9)
         if contact:
             vx, vy = _inward_only(x, y, vx, vy)
@@ -130,7 +137,8 @@ def quasi_static_cycle(
                 memory[k // record_every] = session.snapshot()
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, rc)
         k1 = k + 1
-        vx2, vy2, r2 = velocity(xp, yp, load_x[k1], load_y[k1], wj[k1], wb[k1], (vx, vy))
+        vx2, vy2, r2 = velocity(xp, yp, load_x[k1], load_y[k1], wj[k1], wb[k1], (vx, vy),
+                                phi[k1])
         x, y, _ = project_onto_circle(x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), rc)
         guess = (vx2, vy2)
         worst = max(worst, r1, r2)

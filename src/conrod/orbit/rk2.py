@@ -128,7 +128,7 @@ def rk2_cycle(
 )
     else:
         session = problem.session(state.film_memory)
-        table, end = _rk2_generic_cycle(
+        table, end, rows_memory = _rk2_generic_cycle(
             problem, start, dt, load_x, load_y, wj, wb, record_every, session
 )
     if not np.all(np.isfinite(table)):
@@ -138,7 +138,10 @@ def rk2_cycle(
 )
     memory = session.snapshot() if session is not None else None
     end_state = OrbitState(end[0], end[1], end[2], end[3], bool(end[4] > 0.5), memory)
-    return CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state, len(phi) - 1)
+    traj = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state, len(phi) - 1)
+    if session is not None and session.has_memory:
+        traj.film_memory = rows_memory
+    return traj
 
 
 def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
@@ -150,6 +153,7 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
     x, y, vx, vy, contact = start[0], start[1], start[2], start[3], bool(start[4] > 0.5)
     n_steps = load_x.size - 1
     out = np.empty((n_steps // record_every, 7))
+    memory = [None] * out.shape[0]
 
     def acceleration(k, x, y, vx, vy):
         fx, fy = force(x, y, vx, vy, wj[k], wb[k])
@@ -162,10 +166,11 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
         ax, ay, pc, pf = acceleration(k, x, y, vx, vy)
         if k % record_every == 0:
             out[k // record_every] = (x, y, vx, vy, pc, pf, float(contact))
+            memory[k // record_every] = session.snapshot()
         xp, yp, vxp, vyp = x + dt * vx, y + dt * vy, vx + dt * ax, vy + dt * ay
         ax2, ay2, _, _ = acceleration(k + 1, xp, yp, vxp, vyp)
         session.advance(FilmState(x, y, vx, vy, wj[k], wb[k], problem.viscosity), dt)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius, pc > 0.0)
-    return out, np.array([x, y, vx, vy, float(contact)])
+    return out, np.array([x, y, vx, vy, float(contact)]), memory

@@ -10,12 +10,14 @@ from conrod.mechanism.results import MechanismRun
 from conrod.mechanism.sweep import SweepRun
 from conrod.plotting import (
     contact_plots,
+    ehd_plots,
     film_maps,
     loads_plots,
     mechanism_plots,
     orbit_plots,
 )
 from conrod.results.cycle_results import RunResults
+from conrod.results.ehd import ElasticRunResults
 from conrod.results.output import FigureSpec, figures
 
 
@@ -125,3 +127,33 @@ def _sweep_figures(run: SweepRun) -> tuple[FigureSpec, ...]:
                    "crank speed [rpm] and load scale [-].",
                    lambda: mechanism_plots.plot_sweep_map(run.sweep)),
 )
+
+
+@figures.register
+def _elastic_figures(results: ElasticRunResults) -> tuple[FigureSpec, ...]:
+    own = (
+        FigureSpec("hmin_pmax_rigid_elastic.png", "Rigid and elastic big end",
+                   "h_min [µm] and p_max [MPa] against crank angle [deg] on the deforming "
+                   "bore and on the rigid bore.",
+                   lambda: ehd_plots.plot_rigid_vs_elastic(results)),
+        FigureSpec("deformed_bore.png", "Deformed bore",
+                   "Magnified deformed bore and the clearance circle [µm] at the crank "
+                   "angles of the largest load and of the smallest h_min.",
+                   lambda: ehd_plots.plot_deformed_bore(results)),
+        FigureSpec("deformed_film_maps.png", "Film on the deformed bore",
+                   "Film thickness [µm] and pressure [MPa] over θ [deg] and z [mm] at the "
+                   "crank angle of the largest p_max, centred on the pressure peak.",
+                   lambda: ehd_plots.plot_deformed_film_maps(results)),
+)
+    if results.peak_load_pressure is not None and results.housing.structure_factory:
+        own += (
+            FigureSpec("von_mises_film_pressure.png", "Rod stress under the film pressure",
+                       "Von Mises stress [MPa] of the rod at the largest load under the "
+                       "elastic film pressure.",
+                       lambda: ehd_plots.plot_von_mises(results, "pressure")),
+            FigureSpec("von_mises_cosine_load.png", "Rod stress under a cosine load",
+                       "Von Mises stress [MPa] of the rod at the largest load under a cosine "
+                       "load of the same resultant.",
+                       lambda: ehd_plots.plot_von_mises(results, "cosine")),
+)
+    return _run_figures(results.elastic) + own

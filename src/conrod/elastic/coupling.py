@@ -1,0 +1,166 @@
+"""Quasi-Newton solve of the elastohydrodynamic coupling at one film state.
+
+The corrected bore deformation u [m] at the film nodes solves
+
+.. math:: G(u) = u - P\\,(C f(p(h_{rigid} + u)) + U c(φ)) = 0
+
+with f the nodal film forces [N] of the pressure on the deformed film, C the compliance,
+U c(φ) the inertia deformation and P the rigid-body correction (Rodin 2004, ch. 2). A plain
+under-relaxed fixed point u ← u + ω G stalls when the rod is compliant (deformation
+comparable with the clearance); here the update is a Newton step
+
+.. math:: Δu = -H\\,G(u),\\qquad H ≈ (I - P C\\,∂f/∂u)^{-1}
+
+with H built from finite differences of the film along the m dominant left singular
+vectors W of P C (a deformation lives in their span), J ≈ I − (P C ∂f/∂u W) Wᵀ, improved
+by Broyden's rank-one updates ("good" Broyden, on the inverse) and carried from step to
+step. A safeguard scales the increment when it exceeds a share of the current minimum film
+thickness (Rodin's relaxation factor Δ of the deformation increment).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+Evaluate = Callable[[np.ndarray], tuple[np.ndarray, float, object]]
+"""u [m] → (nodal forces f [N], minimum film thickness h_min [m], film payload)."""
+
+
+@dataclass(frozen=True)
+class CouplingSettings:
+    """Controls of the coupling iteration.
+
+    tolerance : float  Stop when max|G(u)| ≤ tolerance [m].
+    max_iterations : int  Quasi-Newton updates per coupling before ConvergenceError [-].
+    increment_share : float  Largest deformation increment as a share of the current
+        minimum film thickness (Rodin's Δ safeguard) [-].
+    modes : int  Largest number of finite-difference directions of the Jacobian [-].
+    contraction : float  Rebuild the Jacobian (once per solve) when an update reduces
+        max|G| by less than this factor [-].
+    """
+
+    tolerance: float
+    max_iterations: int = 40
+    increment_share: float = 0.5
+    modes: int = 24
+    contraction: float = 0.5
+
+
+@dataclass(frozen=True)
+class CouplingOutcome:
+    """Converged coupling: deformation, film payload and diagnostics.
+
+    deformation : ndarray  Corrected bore deformation u [m].
+    payload : object  What ``evaluate`` returned at u (film result and memory).
+    iterations : int  Film solves of this coupling [-].
+    residual : float  max|G(u)| at the answer [m].
+    increment : float  max|Δu| of the last update (0 when none was needed) [m].
+    converged : bool  residual ≤ tolerance.
+    """
+
+    deformation: np.ndarray
+    payload: object
+    iterations: int
+    residual: float
+    increment: float
+    converged: bool
+
+
+def dominant_directions(corrected_compliance: np.ndarray, modes: int) -> np.ndarray:
+    """Orthonormal columns W (n, m): left singular vectors of P C above 1e-3 of the
+    largest singular value, at most ``modes`` [-]."""
+    left, singular, _ = np.linalg.svd(corrected_compliance)
+    if singular.size == 0 or singular[0] <= 0.0:
+        return left[:, :0]
+    count = int(min(modes, np.count_nonzero(singular > 1e-4 * singular[0])))
+    return left[:, :count]
+
+
+class JacobianCache:
+    """The inverse Jacobian H carried between film states (a solver aid, not film state:
+    the converged answer does not depend on it beyond the tolerance)."""
+
+    def __init__(self, directions: np.ndarray):
+        self.directions = directions
+        self.inverse: np.ndarray | None = None
+        self.builds = 0
+
+    def rebuild(self, evaluate: Evaluate, u: np.ndarray, forces: np.ndarray,
+                operator: np.ndarray, step: float) -> int:
+        """H from finite differences of the film along W at u; returns the film solves."""
+        w = self.directions
+        columns = np.empty_like(w)
+        for k in range(w.shape[1]):
+            shifted, _, _ = evaluate(u + step * w[:, k])
+            columns[:, k] = operator @ (shifted - forces) / step
+        jacobian = np.eye(u.size) - columns @ w.T
+        self.inverse = np.linalg.inv(jacobian)
+        self.builds += 1
+        return w.shape[1]
+
+    def broyden(self, s: np.ndarray, y: np.ndarray) -> None:
+        """Good Broyden update of H from the step s and the residual change y."""
+        assert self.inverse is not None
+        hy = self.inverse @ y
+        denominator = float(s @ hy)
+        if abs(denominator) > 1e-30 * float(s @ s):
+            self.inverse += np.outer(s - hy, s @ self.inverse) / denominator
+
+
+def solve_coupling(evaluate: Evaluate, start: np.ndarray, inertia: np.ndarray,
+                   operator: np.ndarray, cache: JacobianCache, settings: CouplingSettings,
+                   clearance: float) -> CouplingOutcome:
+    """Deformation u with G(u) = 0 from ``start`` [m]; ``operator`` = P C [m/N],
+    ``inertia`` = P U c(φ) [m]. Returns the last iterate when it does not converge."""
+    u = np.array(start, dtype=float)
+    solves, updates, increment, fresh = 0, 0, 0.0, False
+    previous: tuple[np.ndarray, np.ndarray] | None = None
+    last = np.inf
+    while True:
+        forces, h_min, payload = evaluate(u)
+        solves += 1
+        residual_vector = u - operator @ forces - inertia
+        residual = float(np.max(np.abs(residual_vector)))
+        if residual <= settings.tolerance or updates >= settings.max_iterations:
+            return CouplingOutcome(u, payload, solves, residual, increment,
+                                   residual <= settings.tolerance)
+        slow = residual > settings.contraction * last
+        if cache.inverse is None or (slow and not fresh):
+            solves += cache.rebuild(evaluate, u, forces, operator, 1e-4 * clearance)
+            fresh, previous = True, None
+        elif previous is not None:
+            cache.broyden(u - previous[0], residual_vector - previous[1])
+        assert cache.inverse is not None
+        step = -cache.inverse @ residual_vector
+        step *= _safeguard(step, h_min, settings.increment_share)
+        previous, last = (u, residual_vector), residual
+        u = u + step
+        updates += 1
+        increment = float(np.max(np.abs(step)))
+
+
+def _safeguard(step: np.ndarray, h_min: float, share: float) -> float:
+    """Scale ≤ 1 keeping max|Δu| ≤ share × h_min [-]."""
+    largest = float(np.max(np.abs(step)))
+    limit = share * max(h_min, 0.0)
+    if largest <= limit or largest == 0.0:
+        return 1.0
+    return limit / largest
+
+
+def fixed_point_coupling(evaluate: Evaluate, start: np.ndarray, inertia: np.ndarray,
+                         operator: np.ndarray, relaxation: float, tolerance: float,
+                         max_iterations: int) -> CouplingOutcome:
+    """Under-relaxed fixed point u ← u − ω G(u): the slow reference of the tests."""
+    u = np.array(start, dtype=float)
+    for iteration in range(1, max_iterations + 1):
+        forces, _, payload = evaluate(u)
+        residual_vector = u - operator @ forces - inertia
+        residual = float(np.max(np.abs(residual_vector)))
+        if residual <= tolerance:
+            return CouplingOutcome(u, payload, iteration, residual, 0.0, True)
+        u = u - relaxation * residual_vector
+    return CouplingOutcome(u, payload, max_iterations, residual, 0.0, False)

@@ -1,0 +1,357 @@
+"""The elastohydrodynamic film: any deformable film on the bore of an elastic housing.
+
+.. code-block:: python
+
+    film = ElasticFilm(ReynoldsFilm(geometry, 72, 16), Housing.from_case(case),
+                       crank_speed=loads.crank_speed)
+    Simulation(case, film=film).run()       # the orbit code is unchanged
+
+:class:`ElasticFilm` wraps a film that honours ``FilmState.deformation``
+(:class:`~conrod.film.capabilities.SupportsDeformation`: ``reynolds``, ``mass_conserving``)
+and, for every state it is asked about, solves the coupling of the film pressure and the
+bore deformation (:mod:`conrod.elastic.coupling`) so that the film thickness is
+h = h_rigid(e) + P(C f(p) + U c(φ)) (Rodin 2004, eqs. 7–9).
+
+Its memory (:class:`ElasticMemory`) travels in the integrator's state through
+:class:`~conrod.film.capabilities.HasMemory`: the inner film's memory, the bore deformation
+of the last solve (the warm start of the next), the crank angle φ [rad] that the inertia
+deformation needs — advanced by ω dt in :meth:`ElasticFilm.advance_memory`, the one hook
+every fixed-step integrator calls after a step — and the coupling diagnostics. Because that
+memory evolves in lock-step with a fixed step, :meth:`initial_history` is not None and the
+error-controlled ``adaptive`` integrator refuses the film; ``quasi_static`` and ``rk2``
+run it. In ``rk2`` the predictor and corrector solves of a step both see φ at the start of
+the step (the inertia deformation lags by at most one step); the massless orbit passes the
+exact φ of each state.
+
+Deformation rate. The squeeze term 12 μ ∂h/∂t includes the bore's rate ∂u/∂t, taken
+backward in time from the deformation at the previous crank angle (:mod:`conrod.elastic.rate`,
+Reynolds film; ``ElasticSettings(deformation_rate=False)`` leaves it out as Rodin 2004 does).
+Without it the bore moves into a journal that the massless orbit holds in place with no
+film resistance, and the force balance on the deformed bore fails. The largest rate seen
+over a step is kept in the memory (``deformation_rate`` [m/s]).
+
+The massless orbit asks :meth:`ElasticFilm.balance_velocity` for the velocity that balances
+the load, bore displacement and velocity solved together (:mod:`conrod.elastic.balance`),
+passing the crank angle of each state.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from conrod.elastic.balance import BalanceJacobian, solve_balance
+from conrod.elastic.coupling import (
+    CouplingOutcome,
+    CouplingSettings,
+    JacobianCache,
+    dominant_directions,
+    fixed_point_coupling,
+    solve_coupling,
+)
+from conrod.elastic.rate import rated, with_deformation_rate
+from conrod.errors import CaseError, ConvergenceError
+from conrod.film.base import FilmResult, FilmState
+from conrod.film.capabilities import SupportsDeformation, film_memory, solve_film
+from conrod.film.wrapper import FilmWrapper
+
+
+@dataclass(frozen=True)
+class ElasticMemory:
+    """Memory of :class:`ElasticFilm` (immutable; arrays never modified in place).
+
+    inner : object  Memory of the wrapped film (None when it has none).
+    deformation : ndarray  Corrected bore deformation u of the last solve [m] (n_θ,).
+    crank_angle : float  Crank angle φ of the current step [rad].
+    elapsed : float  Crank angle turned since the orbit started [rad].
+    iterations : int  Film solves of the couplings since the last step [-].
+    residual : float  max|G(u)| of the last coupling [m].
+    increment : float  Last deformation increment max|Δu| [m].
+    deformation_rate : float  max|u_new − u_old| / dt over the last step [m/s].
+    reference : ndarray or None  Bore deformation at the previous crank angle [m]: the
+        deformation rate of the squeeze term is (u − reference) / reference_dt.
+    reference_dt : float  Time from that angle to the current one [s].
+    clocked : bool  The crank angle comes with every force balance (massless orbit);
+        False: it is advanced by ω dt in :meth:`ElasticFilm.advance_memory`.
+    """
+
+    inner: Any
+    deformation: np.ndarray
+    crank_angle: float
+    elapsed: float = 0.0
+    iterations: int = 0
+    residual: float = 0.0
+    increment: float = 0.0
+    deformation_rate: float = 0.0
+    step_start: np.ndarray | None = None
+    reference: np.ndarray | None = None
+    reference_dt: float = 0.0
+    clocked: bool = False
+
+
+@dataclass(frozen=True)
+class ElasticSettings:
+    """Coupling controls of :class:`ElasticFilm`.
+
+    tolerance : float  max|G(u)| accepted, relative to the radial clearance [-].
+    rigid_start : float  Crank angle turned with a rigid bore from the orbit start [rad]
+        (Rodin 2004: 10–40°).
+    cycle : float  Crank angle of one cycle [rad].
+    method : 'quasi_newton' (default) or 'fixed_point': the under-relaxed fixed point
+        u ← u − ω G(u), slow, kept as the reference of the tests (fixed kinematics only).
+    relaxation : float  ω of the fixed point [-].
+    deformation_rate : bool  Put the bore's rate ∂u/∂t in the squeeze term
+        (:mod:`conrod.elastic.rate`; Reynolds film only).
+    ramp : float  Crank angle over which the deformation is then brought in linearly [rad]
+        (a deformation switched on at once may close the gap at the journal's current
+        position, for which no film solution exists).
+    increment_share : float  Largest deformation increment per update, share of h_min [-].
+    max_iterations : int  Film solves per coupling before ConvergenceError [-].
+    start_angle : float  Crank angle of the orbit start [rad].
+    """
+
+    tolerance: float = 1e-9
+    rigid_start: float = np.radians(20.0)
+    increment_share: float = 0.5
+    max_iterations: int = 40
+    start_angle: float = 0.0
+    ramp: float = np.radians(90.0)
+    cycle: float = 4.0 * np.pi
+    deformation_rate: bool = True
+    method: str = "quasi_newton"
+    relaxation: float = 0.2
+
+    def share(self, elapsed: float) -> float:
+        """Share λ ∈ [0, 1] of the deformation applied after turning ``elapsed`` [rad]:
+        0 over the rigid start, then rising linearly over ``ramp`` (Rodin's multiplier
+        that adds the deformation "in small shares") [-]."""
+        if elapsed < self.rigid_start:
+            return 0.0
+        if self.ramp <= 0.0:
+            return 1.0
+        return float(min((elapsed - self.rigid_start) / self.ramp, 1.0))
+
+
+class ElasticFilm(FilmWrapper):
+    """Film ``base`` on the deforming bore of ``housing``.
+
+    base : FilmModel  Film honouring ``FilmState.deformation`` on the housing's nodes.
+    housing : Housing  Compliance and inertia fields at the film nodes
+        (:class:`conrod.elastic.housing.Housing`).
+    crank_speed : float  Crank angular velocity ω [rad/s] (advances φ by ω dt).
+    settings : ElasticSettings  Coupling controls.
+    """
+
+    def __init__(self, base: Any, housing: Any, crank_speed: float,
+                 settings: ElasticSettings | None = None):
+        if not isinstance(base, SupportsDeformation):
+            raise CaseError(f"film = {base.name!r} cannot take the bore deformation of an "
+                            "elastic housing (allowed: 'reynolds' or 'mass_conserving')")
+        theta, z = base.grid()
+        if len(theta) != len(housing.angles) or not np.allclose(theta, housing.angles):
+            raise CaseError(f"housing: {len(housing.angles)} bore nodes do not match the "
+                            f"film's {len(theta)} θ nodes (allowed: solver.n_theta nodes)")
+        self.base = with_deformation_rate(base)
+        self.housing = housing
+        self.crank_speed = float(crank_speed)
+        self.settings = settings or ElasticSettings()
+        self._z = z
+        self._axial_nodes = base.deformation_shape()[1]
+        self._coupling = CouplingSettings(
+            tolerance=self.settings.tolerance * base.geometry.radial_clearance,
+            max_iterations=self.settings.max_iterations,
+            increment_share=self.settings.increment_share)
+        directions = dominant_directions(housing.corrected_compliance, self._coupling.modes)
+        self.jacobian = JacobianCache(directions)
+        self.balance_jacobian = BalanceJacobian(directions, housing.angles)
+        self.rigid_jacobian = BalanceJacobian(directions[:, :0], housing.angles)
+        self._zero_operator = np.zeros_like(housing.corrected_compliance)
+
+    # ----------------------------------------------------------- capabilities
+    def initial_history(self) -> np.ndarray:
+        """The inner film's history, else the (zero) bore deformation [m]: a memory that
+        evolves in lock-step with a fixed step."""
+        inner = self.base.initial_history()
+        return inner if inner is not None else np.zeros(len(self.housing.angles))
+
+    def compiled_kernel(self) -> None:
+        """No compiled kernel: the coupling runs in Python around the compiled film."""
+        return None
+
+    def initial_memory(self) -> ElasticMemory:
+        """Rigid bore, crank angle of the orbit start, the inner film's initial memory."""
+        return ElasticMemory(film_memory(self.base), np.zeros(len(self.housing.angles)),
+                             self.settings.start_angle)
+
+    def solve_with_memory(self, state: FilmState, memory: ElasticMemory, *,
+                          with_pressure: bool = False) -> tuple[FilmResult, ElasticMemory]:
+        """Coupled result for ``state`` from ``memory`` and the memory after it."""
+        if state.deformation is not None:
+            raise CaseError("elastic film: the bore deformation is computed by the housing; "
+                            "a FilmState.deformation cannot be added")
+        outcome = self._couple(state, memory)
+        result, inner = outcome.payload  # type: ignore[misc]
+        result = dataclasses.replace(result, pressure=result.pressure if with_pressure
+                                     else None, extra=dict(result.extra))
+        u = outcome.deformation
+        result.extra.update({
+            "coupling_iterations": float(memory.iterations + outcome.iterations),
+            "coupling_residual_m": outcome.residual,
+            "deformation_increment_m": outcome.increment,
+            "bore_displacement_min_m": float(u.min()),
+            "bore_displacement_max_m": float(u.max()),
+            "deformation_rate_m_per_s": memory.deformation_rate})
+        return result, dataclasses.replace(
+            memory, inner=inner, deformation=u, iterations=memory.iterations
+            + outcome.iterations, residual=outcome.residual, increment=outcome.increment)
+
+    def force_with_memory(self, state: FilmState,
+                          memory: ElasticMemory) -> tuple[float, float, ElasticMemory]:
+        """Coupled film force (F_x, F_y) [N] and the memory after it."""
+        result, memory = self.solve_with_memory(state, memory)
+        return result.force_x, result.force_y, memory
+
+    def advance_memory(self, state: FilmState, memory: ElasticMemory,
+                       dt: float) -> ElasticMemory:
+        """After a step ``dt`` [s]: φ and the elapsed angle move by ω dt, the inner memory
+        is advanced on the deformed film, the step diagnostics restart."""
+        inner = memory.inner
+        if hasattr(self.base, "advance_memory"):
+            deformed = dataclasses.replace(state, deformation=self._field(memory.deformation))
+            inner = self.base.advance_memory(deformed, inner, dt)
+        start = memory.step_start if memory.step_start is not None else memory.deformation
+        rate = float(np.max(np.abs(memory.deformation - start))) / dt if dt > 0 else 0.0
+        if memory.clocked:
+            return dataclasses.replace(memory, inner=inner)
+        turned = self.crank_speed * dt
+        return dataclasses.replace(
+            memory, inner=inner, crank_angle=memory.crank_angle + turned,
+            elapsed=memory.elapsed + turned, iterations=0, deformation_rate=rate,
+            step_start=memory.deformation, reference=memory.deformation, reference_dt=dt)
+
+    def force(self, state: FilmState) -> tuple[float, float]:
+        """Coupled film force from the initial memory (rigid start ignored) [N]."""
+        fx, fy, _ = self.force_with_memory(state, self._static_memory())
+        return fx, fy
+
+    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+        """Coupled result from the initial memory (rigid start ignored)."""
+        return self.solve_with_memory(state, self._static_memory(),
+                                      with_pressure=with_pressure)[0]
+
+    def balance_velocity(self, state: FilmState, load: tuple[float, float],
+                         memory: ElasticMemory, crank_angle: float
+) -> tuple[float, float, float, ElasticMemory]:
+        """Massless journal: velocity (v_x, v_y) [m/s] at which the film on the deformed
+        bore balances ``load`` W [N], the relative force residual [-] and the memory after
+        it (bore displacement and velocity solved together, :mod:`conrod.elastic.balance`).
+        The velocity of ``state`` is the start value; ``crank_angle`` φ [rad] is the time
+        of the state (a new φ makes the last deformation the reference of the rate)."""
+        memory = self._clock(memory, crank_angle)
+        share = self.settings.share(memory.elapsed)
+        elastic = share > 0.0
+        operator = (share * self.housing.corrected_compliance if elastic
+                    else self._zero_operator)
+        inertia = share * self.inertia_deformation(memory.crank_angle)
+        start = memory.deformation if elastic else np.zeros(len(self.housing.angles))
+        c = self.base.geometry.radial_clearance
+        scale = c * max(self.crank_speed, 1e-3)
+
+        def evaluate(u: np.ndarray, v: np.ndarray):
+            moving = dataclasses.replace(state, velocity_x=float(v[0]), velocity_y=float(v[1]))
+            forces, _, (result, after) = self.evaluator(moving, memory)(u)
+            return (forces, np.array([result.force_x, result.force_y]),
+                    result.min_film_thickness, (result, after))
+
+        outcome = solve_balance(
+            evaluate, start, np.array([state.velocity_x, state.velocity_y]),
+            np.asarray(load, dtype=float), inertia, operator,
+            self.balance_jacobian if elastic else self.rigid_jacobian, c, scale,
+            self._coupling.tolerance, 5 * self.settings.max_iterations,
+            self.settings.increment_share)
+        if not outcome.converged:
+            raise ConvergenceError(
+                "elastohydrodynamic force balance did not converge (residual: film force + "
+                f"load, N; bore displacement residual {outcome.residual:.3g} m)",
+                where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
+                residual=outcome.force_residual * (float(np.hypot(*load)) + 1.0))
+        result, inner = outcome.payload  # type: ignore[misc]
+        after = dataclasses.replace(
+            memory, inner=inner, deformation=outcome.deformation,
+            iterations=memory.iterations + outcome.iterations, residual=outcome.residual,
+            increment=outcome.increment)
+        return (float(outcome.velocity[0]), float(outcome.velocity[1]),
+                outcome.force_residual, after)
+
+    # ---------------------------------------------------------------- coupling
+    def _static_memory(self) -> ElasticMemory:
+        settings = self.settings
+        return dataclasses.replace(self.initial_memory(),
+                                   elapsed=settings.rigid_start + settings.ramp)
+
+    def _field(self, deformation: np.ndarray) -> np.ndarray:
+        return self.housing.film_field(deformation, self._axial_nodes)
+
+    def inertia_deformation(self, crank_angle: float) -> np.ndarray:
+        """Corrected inertia deformation P U c(φ) at φ [rad] [m]; zero without crank
+        kinematics (table loads)."""
+        if self.housing.kinematics is None:
+            return np.zeros(len(self.housing.angles))
+        return self.housing.inertia_deformation(crank_angle)
+
+    def _clock(self, memory: ElasticMemory, crank_angle: float) -> ElasticMemory:
+        """Memory at the time φ [rad]: on a new φ the last deformation becomes the rate's
+        reference and the elapsed angle grows."""
+        turned = (crank_angle - memory.crank_angle) % self.settings.cycle
+        if not memory.clocked:
+            return dataclasses.replace(memory, clocked=True, crank_angle=crank_angle)
+        if turned < 1e-12 or self.settings.cycle - turned < 1e-12:
+            return memory
+        dt = turned / self.crank_speed
+        rate = float(np.max(np.abs(memory.deformation - memory.reference))) / dt if (
+            memory.reference is not None) else 0.0
+        return dataclasses.replace(
+            memory, crank_angle=crank_angle, elapsed=memory.elapsed + turned, iterations=0,
+            reference=memory.deformation, reference_dt=dt, deformation_rate=rate)
+
+    def evaluator(self, state: FilmState, memory: ElasticMemory):
+        """u [m] → (nodal forces [N], h_min [m], (result, inner memory)) of the base film
+        on the bore deformed by u, with the rate (u − reference)/dt in the squeeze term."""
+        inner, reference = memory.inner, memory.reference
+        use_rate = self.settings.deformation_rate and reference is not None and (
+            memory.reference_dt > 0.0)
+
+        def evaluate(u: np.ndarray):
+            rate = self._field((u - reference) / memory.reference_dt) if use_rate else None
+            deformed = rated(state, self._field(u), rate)
+            result, after = solve_film(self.base, deformed, inner, with_pressure=True)
+            forces = self.housing.nodal_forces(result.pressure, self._z)
+            return forces, result.min_film_thickness, (result, after)
+        return evaluate
+
+    def _couple(self, state: FilmState, memory: ElasticMemory) -> CouplingOutcome:
+        evaluate = self.evaluator(state, memory)
+        share = self.settings.share(memory.elapsed)
+        if share == 0.0:
+            result, after = solve_film(self.base, state, memory.inner, with_pressure=True)
+            zero = np.zeros(len(self.housing.angles))
+            return CouplingOutcome(zero, (result, after), 1, 0.0, 0.0, True)
+        inertia = share * self.inertia_deformation(memory.crank_angle)
+        operator = share * self.housing.corrected_compliance
+        if self.settings.method == "fixed_point":
+            outcome = fixed_point_coupling(
+                evaluate, memory.deformation, inertia, operator, self.settings.relaxation,
+                self._coupling.tolerance, 100 * self.settings.max_iterations)
+        else:
+            outcome = solve_coupling(evaluate, memory.deformation, inertia, operator,
+                                     self.jacobian, self._coupling,
+                                     self.base.geometry.radial_clearance)
+        if not outcome.converged:
+            raise ConvergenceError(
+                "elastohydrodynamic coupling did not converge (residual: bore displacement, m)",
+                where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
+                residual=outcome.residual)
+        return outcome

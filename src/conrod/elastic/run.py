@@ -1,0 +1,56 @@
+"""The elastohydrodynamic run of :class:`conrod.simulation.Simulation`: the orbit on the
+deforming bore, its per-angle coupling diagnostics and the rigid companion run."""
+
+from __future__ import annotations
+
+import dataclasses
+import time
+
+import numpy as np
+
+from conrod.elastic.cycle import elastic_cycle
+from conrod.results.ehd import ElasticRunResults
+
+
+def elastic_run(simulation, progress=None) -> ElasticRunResults:
+    """Elastic answer, diagnostics and (unless skipped) the rigid companion run."""
+    start = time.perf_counter()
+    results, thermal = simulation._run(progress)
+    problem, orbit = thermal.problem, thermal.orbit
+    integrator = simulation.integrator()
+    name = integrator if isinstance(integrator, str) else integrator.name
+    diagnostics = elastic_cycle(problem, results.cycle, orbit.last.film_memory,
+                                massless=name == "quasi_static")
+    film = problem.film
+    elastic_seconds = time.perf_counter() - start
+    companion = simulation.rigid_companion()
+    rigid = None
+    if companion is not None:
+        rigid = companion._run(_staged(progress, "rigid "))[0]
+    info = {
+        "housing_model": simulation.case.housing.model,
+        "bore_nodes": int(len(film.housing.angles)),
+        "coupling_tolerance_m": film._coupling.tolerance,
+        "rigid_start_deg": float(np.degrees(film.settings.rigid_start)),
+        "jacobian_builds": film.jacobian.builds + film.balance_jacobian.builds,
+        "elastic_wall_time_s": elastic_seconds,
+        "deformation_rate_in_squeeze_term": bool(film.settings.deformation_rate
+                                                 and film.base.name == "reynolds"),
+    }
+    summary = dataclasses.replace(results.summary, wall_time=time.perf_counter() - start)
+    return ElasticRunResults(
+        elastic=dataclasses.replace(results, summary=summary), columns=diagnostics.columns,
+        deformation=diagnostics.deformation, bore_angles=diagnostics.angles,
+        housing=film.housing, rigid=rigid, info=info,
+        peak_load_index=diagnostics.peak_load_index,
+        peak_load_pressure=diagnostics.peak_load_pressure)
+
+
+def _staged(progress, prefix: str):
+    if progress is None:
+        return None
+
+    def report(stage: str, cycle: int, error: float) -> None:
+        progress(prefix + stage, cycle, error)
+
+    return report
