@@ -74,6 +74,47 @@ class ElasticRunResults:
         """Contact post-processing of the elastic answer."""
         return self.elastic.contact
 
+    @property
+    def model(self) -> dict[str, str] | None:
+        """What was computed, in words (the elastic answer's description)."""
+        return self.elastic.model
+
+    @property
+    def case_hash(self) -> str | None:
+        """SHA-256 of the resolved case [-]."""
+        return self.elastic.case_hash
+
+    @property
+    def settings(self) -> dict | None:
+        """Resolved ``[solver]`` settings."""
+        return self.elastic.settings
+
+    @property
+    def pressure_at_p_max(self):
+        """Pressure field at the largest p_max of the elastic answer [Pa]."""
+        return self.elastic.pressure_at_p_max
+
+    @property
+    def pressure_grid(self):
+        """(θ [rad], z [m]) nodes of ``pressure_at_p_max``."""
+        return self.elastic.pressure_grid
+
+    @property
+    def headline_extra(self) -> dict[str, str]:
+        """Headline lines: elastic vs rigid h_min and p_max, coupling effort."""
+        lines = dict(self.elastic.headline_extra or {})
+        if self.rigid is not None:
+            e, r = self.elastic.summary, self.rigid.summary
+            lines["rigid vs elastic"] = (
+                f"h_min {r.h_min * 1e6:.3f} → {e.h_min * 1e6:.3f} µm "
+                f"({100.0 * (e.h_min - r.h_min) / r.h_min:+.1f} %), p_max "
+                f"{r.p_max / 1e6:.1f} → {e.p_max / 1e6:.1f} MPa "
+                f"({100.0 * (e.p_max - r.p_max) / r.p_max:+.1f} %)")
+        iterations = self.columns.get("coupling_iterations")
+        if iterations is not None and len(iterations):
+            lines["coupling"] = f"{float(np.mean(iterations)):.1f} iterations per step (mean)"
+        return lines
+
 
 def comparison(elastic: RunResults, rigid: RunResults) -> dict:
     """Rigid and elastic values of :data:`COMPARISON_COLUMNS` and (elastic − rigid)/rigid
