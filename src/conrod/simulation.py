@@ -165,7 +165,8 @@ class Simulation:
         wall_time = time.perf_counter() - start
         summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)
         return dataclasses.replace(results, summary=summary, model=self._model_description(),
-                                   case_hash=self.case.content_hash(),
+                                   case_hash=self.case.model_copy(
+                                       update={"solver": self.solver}).content_hash(),
                                    settings=self.solver.model_dump(mode="json"))
 
     def _model_description(self) -> dict[str, str]:

@@ -126,7 +126,8 @@ def print_headline(results: Any, out: Path) -> None:
         from rich.console import Console
         from rich.table import Table
 
-        table = Table(show_header=False, box=None, title=f"conrod run → {out}")
+        table = Table(show_header=False, box=None,
+                      title=f"conrod run → {out} ({results.summary.wall_time:.2f} s)")
         for label, text in lines.items():
             table.add_row(f"[bold]{label}[/bold]", escape(text))
         Console().print(table)
@@ -134,7 +135,7 @@ def print_headline(results: Any, out: Path) -> None:
     width = max(len(label) for label in lines)
     for label, text in lines.items():
         typer.echo(f"{label:<{width}}  {text}")
-    typer.echo(f"{'results':<{width}}  {out}")
+    typer.echo(f"{'results':<{width}}  {out} ({results.summary.wall_time:.2f} s)")
 
 
 def escape(text: str) -> str:

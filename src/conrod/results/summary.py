@@ -111,7 +111,7 @@ def headline(results: RunResults) -> dict[str, str]:
                             else f"{s.effective_temperature:.1f} °C effective (heat balance "
                             "with film and contact friction)")
     lines["orbit"] = (f"{'periodic' if s.periodic else 'NOT periodic'} after {s.cycles} "
-                      f"cycles (error {s.periodicity_error:.2g} c), {s.wall_time:.2f} s")
+                      f"cycles (error {s.periodicity_error:.2g} c)")
     lines["warnings"] = str(len(s.warnings)) if s.warnings else "none"
     lines.update(results.headline_extra or {})
     return lines
