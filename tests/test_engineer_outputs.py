@@ -269,3 +269,12 @@ def test_under_resolved_rk2_orbit_exits_4(runner, tmp_path):
     result = runner.invoke(app, ["run", str(case), "--out", str(tmp_path / "b"),
                                  "--no-figures", "--step-deg", "0.625"])
     assert result.exit_code == 0, result.output
+
+
+def test_mass_conserving_without_oil_feed_is_refused_before_computing(runner, tmp_path):
+    result = runner.invoke(app, ["run", str(EXAMPLES / "passenger_car_diesel_2000rpm.toml"),
+                                 "--out", str(tmp_path / "o"), "--film", "mass_conserving"])
+    assert result.exit_code == 2, result.output
+    assert "needs an oil feed above the cavitation pressure" in result.output
+    assert "bearing.supply_pressure" in result.output
+    assert not (tmp_path / "o").exists()

@@ -105,7 +105,8 @@ class Case(Section):
         return Case.from_dict(data, base_dir=self._base_dir, path=self._path)
 
     def content_hash(self) -> str:
-        """SHA-256 (hex) of the validated case content, the same for equal cases [-]."""
+        """SHA-256 (hex) of the validated case content, the same for equal cases (file
+        names as written, not the files' content) [-]."""
         import hashlib
         import json
 

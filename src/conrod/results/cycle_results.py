@@ -211,7 +211,7 @@ class RunResults:
     """What was computed, for the headline: "film", "integrator", "housing" (rigid or
     elastic), "viscosity" (isoviscous or the pressure-viscosity law) [-]."""
     case_hash: str | None = None
-    """SHA-256 of the case's validated content (hex) [-]."""
+    """SHA-256 (hex) of the validated case with the resolved solver settings [-]."""
     settings: dict[str, Any] | None = None
     """The resolved ``[solver]`` settings used (SI units) [-]."""
     headline_extra: dict[str, str] | None = None
