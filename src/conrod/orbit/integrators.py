@@ -49,6 +49,20 @@ class AdaptiveIntegrator:
 
 
 @dataclass(frozen=True)
+class ImplicitIntegrator:
+    """TR-BDF2 (L-stable, second order, error-controlled, steps ≤ ``max_step_deg``) with
+    contact phases; compiled with the film force for films with a compiled kernel."""
+
+    name: str = "implicit"
+
+    def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
+        """One cycle; refuses a film whose content evolves in lock-step with a fixed step."""
+        from conrod.orbit.implicit import implicit_cycle
+
+        return implicit_cycle(problem, state, settings)
+
+
+@dataclass(frozen=True)
 class HeunIntegrator:
     """Second-order Runge–Kutta (Heun) at the fixed step ``[solver] step_deg``."""
 
