@@ -1,7 +1,14 @@
-"""Film-model benchmarks (issue 3): time per solve, cold and warm, and sweeps, per model and
-grid; short-bearing call time; table build time; the same bearing in ROSS as a ratio.
+"""Film-model benchmarks: time per solve, cold and warm, and sweeps, per model, grid and
+tolerance; short-bearing call time; table build time; ROSS 3.1 on the same bearing.
 
 Run:  python benchmarks/film_benchmarks.py   (writes benchmarks/film_benchmarks.md)
+
+ROSS 3.1 (``ross-rotordynamics`` 3.1.x) needs Python ≥ 3.13. When ``python3.13`` is found
+(on PATH or under pyenv) the script creates ``benchmarks/.venv-ross`` once, installs ROSS
+there with pip, and times ROSS's finite-element pressure solve in that interpreter
+(``ross_press_timing.py``) grid by grid, interleaved with conrod's solves of the same grid.
+All times are CPU time of the timing process (``time.process_time``), which a loaded shared
+machine disturbs less than wall time; ROSS is timed the same way.
 
 Bearing: D = 50 mm, L = 25 mm, c = 25 µm, μ = 0.02 Pa s, ω_j = 200 rad/s, ε = 0.6 along +x.
 "Cold" = median of 5 fresh models (numba already compiled); "warm" = median of the next 30
@@ -11,11 +18,17 @@ from the last field. The mass-conserving model is timed with a full film history
 
 from __future__ import annotations
 
+<<<<<<< HEAD
 import dataclasses
+=======
+import json
+>>>>>>> solver
 import math
+import os
+import shutil
+import subprocess
 import sys
 import time
-import warnings
 from pathlib import Path
 
 import numba as nb
@@ -35,8 +48,15 @@ GEOMETRY = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
 VISCOSITY, SPEED, ECCENTRICITY = 0.02, 200.0, 0.6
 GRIDS = ((72, 16), (144, 32), (288, 64))
 TOLERANCE = 1.0e-7
-"""Pressure-iteration tolerance of both grid models in the table (max|Δp|/max|p|) [-]; the orbit
-uses ReynoldsFilm's tighter default 1e-12 (timed separately below)."""
+"""Pressure-iteration tolerance of the rows of the second table (max|Δp|/max|p|) [-]."""
+REYNOLDS_TOLERANCES = (1.0e-7, 1.0e-10, 1.0e-12)
+"""Tolerances of the Reynolds-versus-ROSS table [-]."""
+ROSS_REPEATS = 7
+ROUNDS = 3
+"""Interleaved rounds of the Reynolds-versus-ROSS table [-]."""
+ROSS_VENV = Path(__file__).with_name(".venv-ross")
+ROSS_SCRIPT = Path(__file__).with_name("ross_press_timing.py")
+ROSS_REQUIREMENT = "ross-rotordynamics>=3.1,<3.2"
 OUTPUT = Path(__file__).with_suffix(".md")
 
 
@@ -60,16 +80,22 @@ def time_grid_model(factory, n_warm: int = 30, n_cold: int = 5) -> dict[str, flo
     for _ in range(n_cold):
         model = factory()
         history = model.initial_history()
-        start = time.perf_counter()
+        start = time.process_time()
         cold = model.solve(state_at(0, history))
-        cold_times.append(time.perf_counter() - start)
+        cold_times.append(time.process_time() - start)
     cold_time = float(np.median(cold_times))
     times, sweeps = [], []
     _, memory = model.solve_with_memory(state_at(0, history), model.initial_memory())
     for k in range(1, n_warm + 1):
+<<<<<<< HEAD
         start = time.perf_counter()
         result, memory = model.solve_with_memory(state_at(k, history), memory)  # warm start
         times.append(time.perf_counter() - start)
+=======
+        start = time.process_time()
+        result = model.solve(state_at(k, history))
+        times.append(time.process_time() - start)
+>>>>>>> solver
         sweeps.append(sweeps_of(model, result))
     return {"cold": cold_time, "cold_sweeps": sweeps_of(model, cold),
             "warm": float(np.median(times)), "warm_sweeps": float(np.median(sweeps)),
@@ -93,6 +119,7 @@ def time_broken_film(n_theta: int = 144, n_z: int = 32) -> dict[str, float]:
     jfo_memory, reynolds_memory = jfo.initial_memory(), reynolds.initial_memory()
     for k in range(400):
         state = whirling_state(k * dt, history)
+<<<<<<< HEAD
         start = time.perf_counter()
         jfo_memory = dataclasses.replace(jfo_memory, fraction=history)
         result, jfo_memory = jfo.solve_with_memory(state, jfo_memory)  # warm starts held here
@@ -101,6 +128,15 @@ def time_broken_film(n_theta: int = 144, n_z: int = 32) -> dict[str, float]:
             start = time.perf_counter()
             _, reynolds_memory = reynolds.solve_with_memory(state, reynolds_memory)
             times["reynolds"].append(time.perf_counter() - start)
+=======
+        start = time.process_time()
+        result = jfo.solve(state)
+        if k >= 360:
+            times["jfo"].append(time.process_time() - start)
+            start = time.process_time()
+            reynolds.solve(state)
+            times["reynolds"].append(time.process_time() - start)
+>>>>>>> solver
         history = np.clip(history + dt * result.history_rate, 0.0, 1.0)
     return {"jfo": float(np.median(times["jfo"])), "reynolds": float(np.median(times["reynolds"])),
             "min_fraction": float(history.min()), "sweeps": result.extra["iterations"]}
@@ -121,16 +157,16 @@ def time_short() -> dict[str, float]:
     c = GEOMETRY.radial_clearance
     _short_loop(10, c)
     n = 1_000_000
-    start = time.perf_counter()
+    start = time.process_time()
     _short_loop(n, c)
-    kernel = (time.perf_counter() - start) / n
+    kernel = (time.process_time() - start) / n
     model = ShortBearingFilm(GEOMETRY)
     state = state_at(1)
     model.force(state)
-    start = time.perf_counter()
+    start = time.process_time()
     for _ in range(20000):
         model.force(state)
-    return {"kernel": kernel, "python": (time.perf_counter() - start) / 20000}
+    return {"kernel": kernel, "python": (time.process_time() - start) / 20000}
 
 
 @nb.njit(cache=True)
@@ -164,12 +200,12 @@ def time_compiled_lookups(table: TabulatedFilm) -> tuple[float, float]:
     _table_loop(10, *args)
     _table_only_loop(10, *args)
     n = 100_000
-    start = time.perf_counter()
+    start = time.process_time()
     _table_only_loop(n, *args)
-    force_time = (time.perf_counter() - start) / n
-    start = time.perf_counter()
+    force_time = (time.process_time() - start) / n
+    start = time.process_time()
     _table_loop(n, *args)
-    return force_time, (time.perf_counter() - start) / n - force_time
+    return force_time, (time.process_time() - start) / n - force_time
 
 
 def time_table() -> dict[str, float]:
@@ -178,54 +214,156 @@ def time_table() -> dict[str, float]:
     table = TabulatedFilm(ReynoldsFilm(GEOMETRY, n_theta=144, n_z=32), use_cache=False)
     state = FilmState(1.2e-5, 0.4e-5, 1e-4, -2e-4, journal_speed=SPEED, viscosity=VISCOSITY)
     table.force(state)
-    start = time.perf_counter()
+    start = time.process_time()
     for _ in range(20000):
         table.force(state)
-    lookup = (time.perf_counter() - start) / 20000
+    lookup = (time.process_time() - start) / 20000
     error = table.interpolation_error(20, eccentricity_max=0.9)
     mobility = MobilityFilm(GEOMETRY, base=table.base, use_cache=False)
     mobility.table = table
     mobility.journal_velocity(1e-5, 0.0, 1e3, 2e3, SPEED, 0.0, VISCOSITY)
-    start = time.perf_counter()
+    start = time.process_time()
     for _ in range(5000):
         mobility.journal_velocity(1e-5, 0.0, 1e3, 2e3, SPEED, 0.0, VISCOSITY)
-    mobility_time = (time.perf_counter() - start) / 5000
+    mobility_time = (time.process_time() - start) / 5000
     compiled_force, compiled_mobility = time_compiled_lookups(table)
     return {"build": table.build_seconds, "lookup": lookup, "error_max": error["max_relative"],
             "mobility": mobility_time,
             "compiled_force": compiled_force, "compiled_mobility": compiled_mobility}
 
 
-def time_ross(n_theta: int, n_z: int) -> tuple[float, float] | str:
-    """Time [s] and load [N] of ROSS's FluidFlow at the same grid (its θ count must be odd:
-    n_theta + 1 nodes, the closing node repeating θ = 0; n_z + 1 axial nodes), or why not."""
+def python313() -> str | None:
+    """A Python ≥ 3.13 interpreter for ROSS 3.1, or None."""
+    found = shutil.which("python3.13")
+    candidates = [found] if found else []
+    pyenv = Path(os.environ.get("PYENV_ROOT", Path.home() / ".pyenv")) / "versions"
+    candidates += sorted(str(p) for p in pyenv.glob("3.1[3-9]*/bin/python3.1[3-9]"))
+    for candidate in candidates:
+        try:
+            subprocess.run([candidate, "--version"], check=True, capture_output=True)
+        except (OSError, subprocess.CalledProcessError):
+            continue
+        return candidate
+    return None
+
+
+def ross_python() -> str:
+    """Interpreter of the ROSS 3.1 environment (created on first use); raises OSError."""
+    venv_python = ROSS_VENV / "bin" / "python"
+    if not venv_python.exists():
+        base = python313()
+        if base is None:
+            raise OSError("no Python >= 3.13 on this machine (ROSS 3.1 needs it)")
+        subprocess.run([base, "-m", "venv", str(ROSS_VENV)], check=True)
+        subprocess.run([str(venv_python), "-m", "pip", "install", "-q", ROSS_REQUIREMENT],
+                       check=True)
+    return str(venv_python)
+
+
+def time_ross(n_theta: int, n_z: int) -> dict | str:
+    """ROSS 3.1 pressure-solve CPU time [s] (median of ROSS_REPEATS) and load [N], or why not."""
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            from ross.bearings.fluid_flow import FluidFlow
-            from ross.bearings.fluid_flow_coefficients import calculate_oil_film_force
-    except Exception as error:  # ROSS missing or its import fails: report and carry on
-        return f"ROSS not importable ({type(error).__name__}: {error})"
+        python = ross_python()
+        done = subprocess.run([python, str(ROSS_SCRIPT), str(n_theta), str(n_z),
+                               str(ROSS_REPEATS)], check=True, capture_output=True, text=True)
+        return json.loads(done.stdout.strip().splitlines()[-1])
+    except (OSError, subprocess.CalledProcessError, ValueError, IndexError) as error:
+        return f"ROSS 3.1 not run ({type(error).__name__}: {error})"
+
+
+def time_reynolds(n_theta: int, n_z: int, tolerance: float, n_cold: int = 7,
+                  n_warm: int = 30) -> dict[str, float]:
+    """Median CPU time [s] of cold and warm ReynoldsFilm solve() and force() calls."""
+    def model() -> ReynoldsFilm:
+        return ReynoldsFilm(GEOMETRY, n_theta=n_theta, n_z=n_z, tolerance=tolerance)
+
+    model().solve(state_at(0))
+    out: dict[str, float] = {}
+    for call in ("solve", "force"):
+        cold = []
+        for _ in range(n_cold):
+            film = model()
+            start = time.process_time()
+            getattr(film, call)(state_at(0))
+            cold.append(time.process_time() - start)
+        warm = []
+        for k in range(1, n_warm + 1):
+            start = time.process_time()
+            getattr(film, call)(state_at(k))
+            warm.append(time.process_time() - start)
+        out[f"{call}_cold"], out[f"{call}_warm"] = float(np.median(cold)), float(np.median(warm))
+    result = model().solve(state_at(0))
+    out["force"] = math.hypot(result.force_x, result.force_y)
+    return out
+
+
+def time_sensitivities() -> list[str]:
+    """Markdown rows: CPU time of ReynoldsFilm.sensitivities (solve + 2 adjoint solves)."""
+    rows = []
+    for n_theta, n_z in GRIDS:
+        film = ReynoldsFilm(GEOMETRY, n_theta=n_theta, n_z=n_z, tolerance=1e-10)
+        film.sensitivities(state_at(0))
+        times = []
+        for k in range(1, 8):
+            start = time.process_time()
+            film.sensitivities(state_at(k))
+            times.append(time.process_time() - start)
+        rows.append(f"| reynolds `sensitivities()` (K, C: solve + 2 adjoint solves, 1e-10) | "
+                    f"{n_theta}×{n_z} | – | – | {1e3 * float(np.median(times)):.3f} | – | "
+                    "warm |")
+        print(rows[-1], flush=True)
+    return rows
+
+
+def reynolds_versus_ross() -> list[str]:
+    """Markdown rows: conrod Reynolds at three tolerances and ROSS 3.1, grid by grid,
+    ROUNDS interleaved rounds (each cell: median over the rounds of the round medians)."""
+    rows = ["| grid | tolerance | conrod solve() cold / warm [ms] | conrod force() cold / warm "
+            "[ms] | ROSS 3.1 press [ms] | ROSS ÷ conrod solve(), cold / warm | W conrod / "
+            "ROSS [N] |", "| --- | --- | ---: | ---: | ---: | ---: | --- |"]
+    ross: dict = {}
+    conrod: dict = {}
+    for _ in range(ROUNDS):
+        for grid in GRIDS:
+            answer = time_ross(*grid)
+            ross.setdefault(grid, []).append(answer)
+            for tolerance in REYNOLDS_TOLERANCES:
+                conrod.setdefault((grid, tolerance), []).append(time_reynolds(*grid, tolerance))
+    for grid in GRIDS:
+        runs = [r for r in ross[grid] if not isinstance(r, str)]
+        for tolerance in REYNOLDS_TOLERANCES:
+            r = {key: float(np.median([run[key] for run in conrod[(grid, tolerance)]]))
+                 for key in conrod[(grid, tolerance)][0]}
+            if not runs:
+                ross_text, ratio, load = ross[grid][0], "–", f"{r['force']:.0f} / –"
+            else:
+                median = float(np.median([run["median"] for run in runs]))
+                ross_text = f"{1e3 * median:.2f}"
+                ratio = f"{median / r['solve_cold']:.1f}× / {median / r['solve_warm']:.1f}×"
+                load = f"{r['force']:.0f} / {runs[0]['load']:.0f}"
+            rows.append(f"| {grid[0]}×{grid[1]} | {tolerance:g} | {1e3 * r['solve_cold']:.3f} / "
+                        f"{1e3 * r['solve_warm']:.3f} | {1e3 * r['force_cold']:.3f} / "
+                        f"{1e3 * r['force_warm']:.3f} | {ross_text} | {ratio} | {load} |")
+            print(rows[-1], flush=True)
     c = GEOMETRY.radial_clearance
-    try:
-        start = time.perf_counter()
-        flow = FluidFlow(
-            nz=n_z + 1, ntheta=n_theta + 1, length=GEOMETRY.width, omega=SPEED, p_in=0.0,
-            p_out=0.0, radius_rotor=GEOMETRY.radius, radius_stator=GEOMETRY.radius + c,
-            viscosity=VISCOSITY, density=860.0, eccentricity=ECCENTRICITY * c,
-            attitude_angle=0.0,
-        )
-        elapsed = time.perf_counter() - start
-        radial, tangential, _, _ = calculate_oil_film_force(flow, force_type="numerical")
-    except Exception as error:
-        return f"ROSS could not solve the case ({type(error).__name__}: {error})"
-    return elapsed, math.hypot(radial, tangential)
+    ocvirk = math.hypot(*short_bearing_force(ECCENTRICITY * c, 0.0, 0.0, 0.0, SPEED, VISCOSITY,
+                                             GEOMETRY.radius, GEOMETRY.width, c))
+    rows += ["", f"Load check: the Ocvirk short-bearing closed form gives {ocvirk:.0f} N at this "
+             "state; conrod's finite-bearing load is validated against Raimondi & Boyd "
+             "(docs/film.md)."]
+    return rows
 
 
-def markdown(rows: list[str], notes: list[str]) -> str:
+def markdown(rows: list[str], notes: list[str], versus: list[str]) -> str:
     head = ["# Film benchmarks", "", f"Machine: {sys.platform}, Python {sys.version.split()[0]}; "
-            "bearing D = 50 mm, L/D = 0.5, c = 25 µm, ε = 0.6, 200 rad/s; pressure tolerance "
-            f"{TOLERANCE:g} unless stated.", "",
+            "bearing D = 50 mm, L/D = 0.5, c = 25 µm, ε = 0.6, 200 rad/s, isoviscous; CPU time "
+            "per call (medians).", "", "## Reynolds (Swift–Stieber) film and ROSS 3.1", "",
+            "Cold = fresh model (nested-grid start), warm = the next 30 calls of a journal "
+            "creeping by 0.002 rad per call. ROSS 3.1: `ross.bearings.fluid_film.pressure.press` "
+            f"(finite elements, banded LU), median of {ROSS_REPEATS} solves at the same grid "
+            "(n_theta × n_z elements), one 360° land, ε = 0.6 held. Grid by grid, ROSS then "
+            f"conrod, {ROUNDS} rounds; each cell is the median over the rounds.", ""] + versus + [
+            "", f"## All film models (pressure tolerance {TOLERANCE:g})", "",
             "| model | grid | cold [ms] | cold sweeps | warm [ms] | warm sweeps | note |",
             "| --- | --- | ---: | ---: | ---: | ---: | --- |"]
     return "\n".join(head + rows + [""] + notes) + "\n"
@@ -233,23 +371,16 @@ def markdown(rows: list[str], notes: list[str]) -> str:
 
 def main() -> None:
     rows, notes = [], []
-    reynolds_cold, reynolds_warm = {}, {}
+    versus = reynolds_versus_ross()
     for n_theta, n_z in GRIDS:
         for name, cls in (("reynolds", ReynoldsFilm), ("mass_conserving", MassConservingFilm)):
             r = time_grid_model(lambda cls=cls, a=n_theta, b=n_z: cls(
                 GEOMETRY, n_theta=a, n_z=b, tolerance=TOLERANCE))
-            if name == "reynolds":
-                reynolds_cold[(n_theta, n_z)] = r["cold"]
-                reynolds_warm[(n_theta, n_z)] = r["warm"]
             rows.append(f"| {name} | {n_theta}×{n_z} | {1e3 * r['cold']:.2f} | "
                         f"{r['cold_sweeps']:.0f} | {1e3 * r['warm']:.3f} | "
                         f"{r['warm_sweeps']:.0f} | W = {r['force']:.0f} N |")
             print(rows[-1], flush=True)
-    tight = time_grid_model(lambda: ReynoldsFilm(GEOMETRY, n_theta=144, n_z=32, tolerance=1e-12))
-    rows.append(f"| reynolds, tolerance 1e-12 (orbit default) | 144×32 | {1e3 * tight['cold']:.2f} "
-                f"| {tight['cold_sweeps']:.0f} | {1e3 * tight['warm']:.3f} | "
-                f"{tight['warm_sweeps']:.0f} | W = {tight['force']:.0f} N |")
-    print(rows[-1], flush=True)
+    rows += time_sensitivities()
     broken = time_broken_film()
     rows.append(f"| mass_conserving, broken film (transient, min ϑ = {broken['min_fraction']:.2f}) "
                 f"| 144×32 | – | – | {1e3 * broken['jfo']:.3f} | {broken['sweeps']:.0f} | "
@@ -268,19 +399,7 @@ def main() -> None:
     rows.append(f"| compiled `table_force` / `mobility_velocity` (in a numba loop) | – | – | – | "
                 f"{1e3 * table['compiled_force']:.5f} / {1e3 * table['compiled_mobility']:.5f} "
                 "| – | for an orbit compiled end to end |")
-    for n_theta, n_z in GRIDS:
-        ross = time_ross(n_theta, n_z)
-        if isinstance(ross, str):
-            notes.append(f"- ROSS at {n_theta}×{n_z}: {ross}")
-            print(notes[-1], flush=True)
-            continue
-        cold_ratio = ross[0] / reynolds_cold[(n_theta, n_z)]
-        warm_ratio = ross[0] / reynolds_warm[(n_theta, n_z)]
-        rows.append(f"| ROSS FluidFlow | {n_theta}×{n_z} | {1e3 * ross[0]:.1f} | – | – | – | "
-                    f"W = {ross[1]:.0f} N; ROSS time / conrod reynolds: {cold_ratio:.0f}× cold, "
-                    f"{warm_ratio:.0f}× warm |")
-        print(rows[-1], flush=True)
-    write_text(OUTPUT, markdown(rows, notes))
+    write_text(OUTPUT, markdown(rows, notes, versus))
     print(f"written {OUTPUT}")
 
 

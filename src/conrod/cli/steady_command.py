@@ -3,10 +3,11 @@
 Two modes:
 
 * dimensionless — ``--length-to-diameter 1 --eccentricity 0.8`` prints S, φ, (R/c)f,
-  Q/(RcNL), Q_s/Q, P/p_max, θ_pmax, θ_p0 (see :mod:`conrod.film.steady`);
+  Q/(RcNL), Q_s/Q, P/p_max, θ_pmax, θ_p0 and the dimensionless stiffness and damping
+  K̄ = Kc/W, C̄ = Ccω/W in the load frame (see :mod:`conrod.film.steady`);
 * dimensional — ``--load 10000 --speed-rpm 3000 --viscosity 0.01 --diameter 0.05
   --width 0.05 --radial-clearance 5e-5`` finds ε and prints h_min, p_max, friction
-  power and flows (SI units).
+  power, flows and the eight coefficients K_xx … C_yy (SI units) with K̄, C̄.
 """
 
 from __future__ import annotations
@@ -56,13 +57,24 @@ def parse_grid(text: str | None) -> tuple[int, int] | None:
     return n_theta, n_z
 
 
+def unit_of(key: str) -> str:
+    """Unit shown after a linearised coefficient in the text output ('' for others)."""
+    if "_bar_" in key:
+        return " [-]"
+    if key.startswith("K_"):
+        return " [N/m]"
+    if key.startswith("C_"):
+        return " [N s/m]"
+    return ""
+
+
 def _print(values: dict, as_json: bool) -> None:
     if as_json:
         typer.echo(json.dumps(values, indent=2))
         return
     for key, value in values.items():
         shown = f"{value:.6g}" if isinstance(value, float) else str(value)
-        typer.echo(f"{key:32s} {shown}")
+        typer.echo(f"{key:32s} {shown}{unit_of(key)}")
 
 
 def register(app: typer.Typer) -> None:

@@ -183,3 +183,36 @@ def film_fraction_swift_stieber(
             else:
                 fraction[i, j] = min(1.0, h_rupture / h[i, j])
     return fraction
+
+
+@nb.njit(cache=True)
+def coefficient_derivatives(
+    h: np.ndarray, dh: np.ndarray, dh_rate: np.ndarray, radius: float, d_theta: float,
+    d_z: float, omega_sum: float, viscosity: float,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Derivatives of a_E [m^4], a_N [m^4] and b [Pa m^4] of :func:`assemble_coefficients`
+    along a state direction q, given ∂h/∂q (``dh``) and ∂ḣ/∂q (``dh_rate``) at the nodes
+    (per unit of q); same shapes as :func:`assemble_coefficients` returns."""
+    n_theta, n_nodes = h.shape
+    d_east = np.empty((n_theta, n_nodes))
+    d_north = np.empty((n_theta, n_nodes - 1))
+    d_source = np.empty((n_theta, n_nodes))
+    surface_speed = radius * omega_sum
+    arc = radius * d_theta
+    for i in range(n_theta):
+        ip = (i + 1) % n_theta
+        im = (i - 1) % n_theta
+        for j in range(n_nodes):
+            width = d_z if 0 < j < n_nodes - 1 else 0.5 * d_z
+            h_e = 0.5 * (h[i, j] + h[ip, j])
+            dh_e = 0.5 * (dh[i, j] + dh[ip, j])
+            dh_w = 0.5 * (dh[i, j] + dh[im, j])
+            d_east[i, j] = 3.0 * h_e * h_e * dh_e * width / arc
+            d_source[i, j] = -12.0 * viscosity * width * (
+                0.5 * surface_speed * (dh_e - dh_w) + dh_rate[i, j] * arc
+            )
+            if j < n_nodes - 1:
+                h_n = 0.5 * (h[i, j] + h[i, j + 1])
+                dh_n = 0.5 * (dh[i, j] + dh[i, j + 1])
+                d_north[i, j] = 3.0 * h_n * h_n * dh_n * arc / d_z
+    return d_east, d_north, d_source

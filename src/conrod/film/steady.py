@@ -14,7 +14,11 @@ Dimensionless groups (Raimondi–Boyd school):
 * load-to-peak-pressure ratio P/p_max [-],
 * peak-pressure angle: from p_max forward to the minimum film (θ_pmax of [1]) [deg],
 * film-end angle: from the minimum film forward to the film rupture at the
-  mid-plane (θ_p0 of [1]) [deg].
+  mid-plane (θ_p0 of [1]) [deg],
+* the eight linearised coefficients K_ij = −∂F_i/∂e_j, C_ij = −∂F_i/∂ė_j in the load
+  frame (x along the load, y 90° ahead in the direction of rotation), dimensionless
+  K̄ = Kc/W, C̄ = Ccω/W, and in N/m, N s/m in the dimensional mode
+  (:mod:`conrod.film.linearised`; the inlet line is held fixed while the journal moves).
 
 Butenschön's So = 1/(2πS) and W̄ = Wc²/(μωR³L) = 1/(πS) are the other schools' numbers.
 
@@ -25,7 +29,7 @@ from __future__ import annotations
 
 import importlib
 import math
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field, replace
 from typing import Literal
 
 import numpy as np
@@ -34,6 +38,7 @@ from scipy.optimize import brentq
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film import characteristics as chars
 from conrod.film.base import BearingGeometry, FilmResult, FilmState, Groove, film_thickness
+from conrod.film.linearised import linearise
 from conrod.film.reynolds import FrictionConvention, ReynoldsFilm
 from conrod.film.short_bearing import ShortBearingFilm
 
@@ -65,10 +70,26 @@ class SteadyPoint:
     film_end_angle_deg: float
     model: str
     friction_convention: str
+    coefficients: dict[str, float] = field(default_factory=dict)
+    """K_bar_xx … C_bar_yy in the load frame [-] (:mod:`conrod.film.linearised`)."""
 
     def as_dict(self) -> dict[str, float | str]:
-        """Plain dictionary (JSON-ready)."""
-        return asdict(self)
+        """Plain flat dictionary (JSON-ready)."""
+        return _flat(asdict(self))
+
+
+def _flat(values: dict) -> dict[str, float | str]:
+    """Dictionary with the ``coefficients`` entries moved to the top level."""
+    coefficients = values.pop("coefficients", {})
+    return {**values, **coefficients}
+
+
+def load_frame_coefficients(film, state: FilmState, dimensional: bool) -> dict[str, float]:
+    """K̄, C̄ [-] (and K [N/m], C [N s/m] when ``dimensional``) in the load frame."""
+    values = linearise(film, state).in_load_frame().as_dict()
+    if dimensional:
+        return values
+    return {key: value for key, value in values.items() if "_bar_" in key}
 
 
 def _unit_geometry(length_to_diameter: float) -> BearingGeometry:
@@ -168,8 +189,9 @@ def raimondi_boyd_point(
     if model == "mass_conserving":
         state = FilmState(**{**state.__dict__, "history": film.initial_history()})
     result = film.solve(state, with_pressure=True)
-    return _dimensionless(film, geometry, state, result, length_to_diameter, eccentricity,
-                          model, friction)
+    point = _dimensionless(film, geometry, state, result, length_to_diameter, eccentricity,
+                           model, friction)
+    return replace(point, coefficients=load_frame_coefficients(film, state, False))
 
 
 def _dimensionless(film, geometry: BearingGeometry, state: FilmState, result: FilmResult,
@@ -232,10 +254,12 @@ class OperatingPoint:
     sommerfeld_number: float
     model: str
     friction_convention: str
+    coefficients: dict[str, float] = field(default_factory=dict)
+    """K_xx … C_yy [N/m, N s/m] and K_bar_xx … C_bar_yy [-] in the load frame."""
 
     def as_dict(self) -> dict[str, float | str]:
-        """Plain dictionary (JSON-ready)."""
-        return asdict(self)
+        """Plain flat dictionary (JSON-ready)."""
+        return _flat(asdict(self))
 
 
 ECCENTRICITY_BRACKET = (1.0e-3, 0.995)
@@ -288,4 +312,5 @@ def solve_for_load(
         side_flow=side, inlet_flow=inflow,
         sommerfeld_number=(geometry.radius / c) ** 2 * viscosity * speed_rev / unit_load,
         model=model, friction_convention=friction,
+        coefficients=load_frame_coefficients(film, state, True),
 )

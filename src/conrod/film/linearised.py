@@ -1,0 +1,244 @@
+"""Film sensitivities: linearised stiffness and damping of a journal-bearing film.
+
+For small motions about a state (e, ė) the film force on the journal is
+
+.. math:: F(e + Δe, ė + Δė) ≈ F − K Δe − C Δė,
+          \\qquad K_{ij} = −∂F_i/∂e_j,\\; C_{ij} = −∂F_i/∂\\dot e_j,
+
+the eight rotordynamic coefficients of Lund [1] (K in N/m, C in N s/m).
+
+Finite-difference Reynolds film (:func:`linearise_reynolds`)
+------------------------------------------------------------
+The converged Swift–Stieber pressure solves a linear system on its *active set*
+A = {free nodes with p > p_cav}: K_AA(e) p_A = b(e, ė) + (terms of the Dirichlet and
+cavitated nodes, whose pressures do not depend on the state). For a fixed active set the
+derivative along a state direction q is one more linear solve with the same matrix,
+
+.. math:: K_{AA}\\,∂p_A/∂q = −(∂K/∂q\\,p − ∂b/∂q)_A ,
+
+(the squeeze source is linear in ė, so ∂/∂ė needs no approximation at all). K_AA is
+symmetric, so the force derivatives need only two *adjoint* solves,
+
+.. math:: K_{AA} λ_x = w_x,\\; K_{AA} λ_y = w_y, \\qquad ∂F_i/∂q = λ_i · (∂K/∂q\\,p − ∂b/∂q)_A,
+
+with w the force quadrature weights (F_i = −Σ w_i p). ``method="adjoint"`` (default)
+solves them with the film's own multigrid (cavitated nodes held at 0, no projection,
+tolerance 1e-12, the mid-plane symmetry when the film uses it); ``method="direct"``
+solves the four right-hand sides with one sparse LU (SciPy's SuperLU) instead. The result is the
+exact derivative of the discrete force wherever the active set does not change under an
+infinitesimal move (everywhere except on switching surfaces of measure zero); the
+derivative of the coefficient arrays is analytic
+(:func:`conrod.film.reynolds_kernel.coefficient_derivatives`). Dirichlet regions (edges,
+grooves, holes, an inlet line) are held where they are.
+
+Any other film model (:func:`linearise_by_differences`): central differences of
+``film.force`` with steps of 1e-6 c and 1e-6 c(|ω_j + ω_b| + 1 rad/s).
+
+Load frame and dimensionless form (:meth:`FilmLinearisation.in_load_frame`): x along the
+load W = −F, y 90° ahead of it in the direction of rotation (Lund's convention [1]);
+K̄ = K c/W, C̄ = C c ω/W with ω = |ω_j + ω_b| [2].
+
+[1] J.W. Lund, "Review of the concept of dynamic coefficients for fluid film journal
+    bearings", J. Tribol. 109 (1987) 37–41.
+[2] J.W. Lund, K.K. Thomsen, "A calculation method and data for the dynamic coefficients
+    of oil-lubricated journal bearings", ASME Topics in Fluid Film Bearing and Rotor
+    Bearing System Design and Optimization (1978) 1–28.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.linalg import splu
+
+from conrod.errors import CaseError
+from conrod.film import reynolds_kernel as kernel
+from conrod.film.base import FilmState
+
+STATE_KEYS = ("eccentricity_x", "eccentricity_y", "velocity_x", "velocity_y")
+
+
+@dataclass(frozen=True)
+class FilmLinearisation:
+    """Film force and its linearisation about one state.
+
+    force : (2,) ndarray  Film force on the journal (F_x, F_y) [N].
+    stiffness : (2, 2) ndarray  K_ij = −∂F_i/∂e_j [N/m].
+    damping : (2, 2) ndarray  C_ij = −∂F_i/∂ė_j [N s/m].
+    speed : float  |ω_j + ω_b| used by :meth:`dimensionless` [rad/s].
+    clearance : float  Radial clearance c [m].
+    frame : str  'film' (x, y of :mod:`conrod.film.base`) or 'load' (x along W = −F).
+    """
+
+    force: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+    speed: float
+    clearance: float
+    frame: str = "film"
+
+    @property
+    def force_jacobian(self) -> tuple[np.ndarray, np.ndarray]:
+        """(∂F/∂e [N/m], ∂F/∂ė [N s/m]) for an implicit integrator's Jacobian."""
+        return -self.stiffness, -self.damping
+
+    @property
+    def load(self) -> float:
+        """|F| = W at equilibrium [N]."""
+        return float(math.hypot(*self.force))
+
+    def in_load_frame(self) -> FilmLinearisation:
+        """The same coefficients with x along the load W = −F and y 90° ahead of it in
+        the direction of rotation (Lund's convention)."""
+        if self.load == 0.0:
+            raise CaseError("film force = 0 N: out of range (allowed: > 0 N) for the load frame")
+        x_axis = -np.asarray(self.force) / self.load
+        y_axis = np.array([-x_axis[1], x_axis[0]])
+        rotation = np.column_stack((x_axis, y_axis))
+        return replace(self, force=rotation.T @ self.force,
+                       stiffness=rotation.T @ self.stiffness @ rotation,
+                       damping=rotation.T @ self.damping @ rotation, frame="load")
+
+    def dimensionless(self) -> tuple[np.ndarray, np.ndarray]:
+        """(K̄ = K c/W, C̄ = C c ω/W) [-] in this object's frame."""
+        scale = self.clearance / self.load
+        return self.stiffness * scale, self.damping * scale * self.speed
+
+    def as_dict(self) -> dict[str, float]:
+        """Flat dictionary K_xx … C_yy [N/m, N s/m] and K_bar_xx … C_bar_yy [-]."""
+        stiffness_bar, damping_bar = self.dimensionless()
+        values: dict[str, float] = {}
+        for name, matrix in (("K", self.stiffness), ("C", self.damping),
+                             ("K_bar", stiffness_bar), ("C_bar", damping_bar)):
+            for (i, a) in enumerate("xy"):
+                for (j, b) in enumerate("xy"):
+                    values[f"{name}_{a}{b}"] = float(matrix[i, j])
+        return values
+
+
+def _directions(film, state: FilmState) -> list[tuple[np.ndarray, np.ndarray]]:
+    """(∂h/∂q, ∂ḣ/∂q) at the nodes for q = e_x, e_y, ė_x, ė_y [-]."""
+    shape = (film.n_theta, film.n_z + 1)
+    cos = np.broadcast_to(film._cos, shape)
+    sin = np.broadcast_to(film._sin, shape)
+    zero = np.zeros(shape)
+    return [(-cos, zero), (-sin, zero), (zero, -cos), (zero, -sin)]
+
+
+def _active_matrix(a_east: np.ndarray, a_north: np.ndarray, active: np.ndarray):
+    """Sparse K_AA of the flux balance restricted to the active nodes, and their index."""
+    n_theta, n_nodes = active.shape
+    index = -np.ones(active.shape, dtype=np.int64)
+    rows_i, rows_j = np.nonzero(active)
+    index[rows_i, rows_j] = np.arange(rows_i.size)
+    west = (rows_i - 1) % n_theta
+    east = (rows_i + 1) % n_theta
+    diagonal = (a_east[rows_i, rows_j] + a_east[west, rows_j]
+                + a_north[rows_i, rows_j] + a_north[rows_i, rows_j - 1])
+    rows, cols, data = [np.arange(rows_i.size)], [np.arange(rows_i.size)], [diagonal]
+    for ni, nj, conductance in ((east, rows_j, a_east[rows_i, rows_j]),
+                                (west, rows_j, a_east[west, rows_j]),
+                                (rows_i, rows_j + 1, a_north[rows_i, rows_j]),
+                                (rows_i, rows_j - 1, a_north[rows_i, rows_j - 1])):
+        neighbour = index[ni, nj]
+        keep = neighbour >= 0
+        rows.append(np.nonzero(keep)[0])
+        cols.append(neighbour[keep])
+        data.append(-conductance[keep])
+    size = rows_i.size
+    matrix = coo_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))),
+                        shape=(size, size)).tocsc()
+    return matrix, (rows_i, rows_j)
+
+
+ADJOINT_TOLERANCE = 1.0e-12
+"""Multigrid tolerance of the adjoint solves (relative change per cycle) [-]."""
+
+
+def linearise_reynolds(film, state: FilmState, method: str = "adjoint",
+                       memory=None) -> FilmLinearisation:
+    """Exact derivatives of a :class:`~conrod.film.reynolds.ReynoldsFilm` force on the
+    converged active set (module docstring): one film solve (warm-started from the film
+    ``memory`` when given), then two adjoint multigrid solves (``method="adjoint"``) or
+    one sparse LU (``"direct"``)."""
+    if method not in ("adjoint", "direct"):
+        raise CaseError(f"method = {method!r}: allowed 'adjoint' or 'direct'")
+    problem = film._problem(state)
+    if memory is None:
+        memory = film.initial_memory()
+    pressure, _ = film._solve_pressure(problem, state, memory)
+    grid = film.film_grid
+    omega_sum = state.journal_speed + state.shell_speed
+    a_east, a_north, _ = kernel.assemble_coefficients(
+        problem.h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum,
+        state.viscosity)
+    active = ~problem.fixed & (pressure > film.geometry.cavitation_pressure)
+    w_x, w_y = film._force_weights
+    force = np.array([-np.sum(pressure * w_x), -np.sum(pressure * w_y)])
+    jacobian = np.zeros((2, 4))
+    if active.any():
+        d_residuals = np.empty((4,) + pressure.shape)
+        for column, (dh, dh_rate) in enumerate(_directions(film, state)):
+            d_east, d_north, d_source = kernel.coefficient_derivatives(
+                problem.h, np.ascontiguousarray(dh), np.ascontiguousarray(dh_rate),
+                grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity)
+            d_residuals[column] = kernel.node_imbalance(pressure, d_east, d_north, d_source)
+        if method == "direct":
+            matrix, nodes = _active_matrix(a_east, a_north, active)
+            d_pressure = splu(matrix).solve(-d_residuals[:, nodes[0], nodes[1]].T)
+            jacobian[0] = -w_x[nodes] @ d_pressure
+            jacobian[1] = -w_y[nodes] @ d_pressure
+        else:
+            symmetric = film._symmetric and state.deformation is None
+            for row, weights in enumerate((w_x, w_y)):
+                adjoint = _adjoint(film, problem.h, weights, ~active, symmetric)
+                jacobian[row] = np.tensordot(d_residuals, adjoint * active, axes=2)
+    return FilmLinearisation(force=force, stiffness=-jacobian[:, :2], damping=-jacobian[:, 2:],
+                             speed=abs(omega_sum), clearance=film.geometry.radial_clearance)
+
+
+def _adjoint(film, h: np.ndarray, weights: np.ndarray, masked: np.ndarray,
+              symmetric: bool) -> np.ndarray:
+    """λ with K_AA λ = weights on the active nodes, λ = 0 on ``masked`` ones [m^-2]."""
+    from conrod.errors import ConvergenceError
+    from conrod.film import reynolds_multigrid as multigrid
+
+    adjoint = np.zeros(h.shape)
+    source = np.where(masked, 0.0, weights)
+    cycles, change = multigrid.solve_on_grid(
+        adjoint, h, source, masked, film.film_grid, -np.inf, ADJOINT_TOLERANCE,
+        film.max_iterations, symmetric)
+    if not change <= ADJOINT_TOLERANCE:
+        raise ConvergenceError(f"adjoint multigrid after {cycles} cycles",
+                               where="film sensitivities", residual=change)
+    return adjoint
+
+
+def linearise_by_differences(film, state: FilmState, relative_step: float = 1.0e-6
+                             ) -> FilmLinearisation:
+    """Central differences of ``film.force`` (any film model) [N/m, N s/m]."""
+    c = film.geometry.radial_clearance
+    omega_sum = state.journal_speed + state.shell_speed
+    steps = (relative_step * c,) * 2 + (relative_step * c * (abs(omega_sum) + 1.0),) * 2
+    jacobian = np.zeros((2, 4))
+    for column, (key, step) in enumerate(zip(STATE_KEYS, steps, strict=True)):
+        value = getattr(state, key)
+        plus = np.array(film.force(replace(state, **{key: value + step})))
+        minus = np.array(film.force(replace(state, **{key: value - step})))
+        jacobian[:, column] = (plus - minus) / (2.0 * step)
+    force = np.array(film.force(state))
+    return FilmLinearisation(force=force, stiffness=-jacobian[:, :2], damping=-jacobian[:, 2:],
+                             speed=abs(omega_sum), clearance=c)
+
+
+def linearise(film, state: FilmState) -> FilmLinearisation:
+    """Stiffness and damping of any film model: the active-set solve for the Reynolds
+    film, central differences otherwise."""
+    from conrod.film.reynolds import ReynoldsFilm
+
+    if isinstance(film, ReynoldsFilm):
+        return linearise_reynolds(film, state)
+    return linearise_by_differences(film, state)
