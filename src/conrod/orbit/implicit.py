@@ -34,6 +34,9 @@ from conrod.orbit.trajectory import CycleTrajectory
 
 FIRST_STEP = 1.0e-4
 """First trial step of a free segment [rad] (error control grows it)."""
+PYTHON_REFRESH_RATE = 0.1
+"""Newton contraction rate above which a film solved in Python gets a new Jacobian (a
+compiled film gets one after every step that needed more than one iteration) [-]."""
 STEPS_PER_DEGREE = 2000
 """Most accepted steps per degree of crank angle in a segment before giving up [-]."""
 
@@ -129,7 +132,7 @@ class _FreeFlight:
             self.rhs, self.params, self.data, float(phi), end,
             np.asarray(u, dtype=float), min(self.h, FIRST_STEP * 10), self.max_step,
             self.rtol, self.atol, self.circle, phi_out, out_u, next_out, max_steps,
-            compiled=self.compiled)
+            compiled=self.compiled, refresh_rate=0.0 if self.compiled else PYTHON_REFRESH_RATE)
         self.h = h
         if status not in (STATUS_END, STATUS_HIT):
             what = ("Newton iteration failed at the smallest step"

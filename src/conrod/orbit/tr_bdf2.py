@@ -35,6 +35,8 @@ WEIGHT = 0.25 * math.sqrt(2.0)
 """w = (1 − d)/2, weight of f_n and f(z) in the BDF2 stage [-]."""
 NEWTON_ITERATIONS = 8
 """Most simplified-Newton iterations per stage [-]."""
+NEWTON_KAPPA = 0.05
+"""Newton stops when its estimated error is below this fraction of the tolerance [-]."""
 
 STATUS_END, STATUS_HIT, STATUS_COLLAPSE, STATUS_NEWTON = 0, 1, -1, -2
 """Segment outcomes: end reached; contact circle reached; step size collapsed; Newton
@@ -61,26 +63,29 @@ def _norm(v, scale):
     return math.sqrt(total / v.size)
 
 
-def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol):
-    """Solve z = base + d h f(φ, z) by simplified Newton with ``inverse`` = (I − d h J)⁻¹.
-    Returns (z, f(z), converged, rate)."""
+def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol, eta):
+    """Solve z = base + d h f(φ, z) by simplified Newton with ``inverse`` = (I − d h J)⁻¹,
+    stopping when the estimated iteration error η‖Δz‖ (η = ρ/(1 − ρ), ρ the contraction
+    rate; ``eta`` from the previous stage before a rate is known) is below
+    :data:`NEWTON_KAPPA` of the tolerance (Hairer & Wanner, Solving ODEs II, IV.8).
+    Returns (z, f(z) = (z − base)/(d h), converged, rate, η)."""
     z = guess.copy()
     previous = 0.0
     rate = 0.0
     for it in range(NEWTON_ITERATIONS):
         f = rhs(phi, z, params, data)
-        residual = base + dh * f - z
-        delta = _apply(inverse, residual)
+        delta = _apply(inverse, base + dh * f - z)
         z = z + delta
         size = _norm(delta, atol + rtol * np.abs(z))
         if it > 0:
             rate = size / previous if previous > 0.0 else 0.0
-            if rate > 0.9:
-                return z, f, False, rate
-        if size < 0.03:
-            return z, rhs(phi, z, params, data), True, rate
+            if rate >= 0.9:
+                return z, f, False, rate, eta
+            eta = rate / (1.0 - rate)
+        if eta * size < NEWTON_KAPPA:
+            return z, rhs(phi, z, params, data), True, rate, eta
         previous = size
-    return z, rhs(phi, z, params, data), False, rate
+    return z, f, False, rate, eta
 
 
 @nb.njit(cache=True)
@@ -121,13 +126,14 @@ def _hit_fraction(h, u0, f0, u1, f1, circle):
 
 
 def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol, atol, circle,
-             out_phi, out_u, next_out, max_steps):
+             out_phi, out_u, next_out, max_steps, refresh_rate):
     """Integrate du/dφ = rhs(φ, u, params, data) from φ to ``end`` (free flight).
 
     u : scaled state (x/c, y/c, v_x/(c ω), v_y/(c ω)) [-]; h, max_step [rad];
     circle : contact radius / c [-] (the segment stops where the centre reaches it);
     out_phi : output angles [rad]; rows of ``out_u`` from ``next_out`` on are filled as
-    the steps pass them. Returns (status, φ, u, h, steps, next_out, jacobian evaluations).
+    the steps pass them; J is refreshed after a step whose Newton contraction rate
+    exceeded ``refresh_rate`` [-]. Returns (status, φ, u, h, steps, next_out, jacobian evaluations).
     """
     f = rhs(phi, u, params, data)
     jac = jacobian(rhs, phi, u, f, params, data)
@@ -137,6 +143,8 @@ def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol,
     dh_inverse = -1.0
     inverse = eye
     steps = 0
+    eta = 1.0
+    h_prev, u_prev, f_prev = 0.0, u, f
     while phi < end and steps < max_steps:
         h = min(h, max_step, end - phi)
         last = phi + h >= end - 1.0e-12 * max(1.0, abs(end))
@@ -146,15 +154,19 @@ def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol,
         if dh != dh_inverse:
             inverse = np.linalg.inv(eye - dh * jac)
             dh_inverse = dh
-        guess = u + 2.0 * dh * f
-        z, fz, ok, rate1 = stage(rhs, phi + 2.0 * dh, u + dh * f, guess, dh, inverse,
-                                  params, data, atol, rtol)
+        if h_prev > 0.0:  # extrapolate the previous step's interpolant
+            guess = _hermite(1.0 + 2.0 * dh / h_prev, h_prev, u_prev, f_prev, u, f)
+        else:
+            guess = u + 2.0 * dh * f
+        eta = max(eta, 1.0e-3) ** 0.8
+        z, fz, ok, rate1, eta = stage(rhs, phi + 2.0 * dh, u + dh * f, guess, dh, inverse,
+                                      params, data, atol, rtol, eta)
         rate2 = 0.0
         if ok:
             base = u + h * WEIGHT * (f + fz)
-            guess = u + h * (WEIGHT * (f + fz) + GAMMA_HALF * fz)
-            u1, f1, ok, rate2 = stage(rhs, phi + h, base, guess, dh, inverse, params,
-                                       data, atol, rtol)
+            guess = _hermite(0.5 / GAMMA_HALF, 2.0 * dh, u, f, z, fz)
+            u1, f1, ok, rate2, eta = stage(rhs, phi + h, base, guess, dh, inverse, params,
+                                           data, atol, rtol, eta)
         if not ok:
             if not fresh:
                 jac = jacobian(rhs, phi, u, f, params, data)
@@ -189,9 +201,10 @@ def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol,
             return (STATUS_HIT, stop, _hermite(fraction, h, u, f, u1, f1), h, steps,
                     next_out, evaluations)
         phi = end if last else phi + h
+        h_prev, u_prev, f_prev = h, u, f
         u, f = u1, f1
         fresh = False
-        if max(rate1, rate2) > 0.5:  # slow contraction: refresh J at the next step
+        if max(rate1, rate2) > refresh_rate:  # slow contraction: refresh J
             jac = jacobian(rhs, phi, u, f, params, data)
             evaluations += 1
             fresh, dh_inverse = True, -1.0
@@ -206,12 +219,13 @@ segment_compiled = nb.njit(_segment)
 
 
 def segment(rhs, params, data, phi, end, u, h, max_step, rtol, atol, circle, out_phi,
-            out_u, next_out, max_steps, *, compiled, jacobian=None):
+            out_u, next_out, max_steps, *, compiled, jacobian=None, refresh_rate=0.1):
     """:func:`_segment` compiled (``rhs`` a numba function) or in Python; ``jacobian``
     (rhs, φ, u, f, params, data) → ∂f/∂u, default forward differences."""
     if compiled:
         return segment_compiled(rhs, jacobian or fd_jacobian_compiled, stage_compiled,
                                 params, data, phi, end, u, h, max_step, rtol, atol, circle,
-                                out_phi, out_u, next_out, max_steps)
+                                out_phi, out_u, next_out, max_steps, refresh_rate)
     return _segment(rhs, jacobian or _fd_jacobian, _stage, params, data, phi, end, u, h,
-                    max_step, rtol, atol, circle, out_phi, out_u, next_out, max_steps)
+                    max_step, rtol, atol, circle, out_phi, out_u, next_out, max_steps,
+                    refresh_rate)
