@@ -20,9 +20,11 @@ class SolverSection(Section):
 
     film: FilmName = Field(default="short", description="Film model [-]")
     integrator: IntegratorName = Field(
-        default="adaptive",
-        description="adaptive (implicit, error-controlled), rk2 ([D0] fixed step) "
-        "or quasi_static (massless mobility) [-]",
+        default="auto",
+        description="auto (per film: implicit, or quasi_static for the mass-conserving "
+        "film), implicit (TR-BDF2, error-controlled, compiled with the film force), "
+        "adaptive (SciPy Radau/BDF/LSODA), rk2 ([D0] fixed step) or quasi_static "
+        "(massless mobility) [-]",
 )
     adaptive_method: AdaptiveMethod = Field(
         default="Radau", description="scipy solve_ivp method of the adaptive integrator [-]"
@@ -30,19 +32,23 @@ class SolverSection(Section):
     max_step_deg: float = Field(
         default=1.0, gt=0.0, le=1.0, description="Largest step of the adaptive integrator [deg]"
 )
-    step_deg: float = Field(
-        default=0.01, gt=0.0, le=5.0,
-        description="Fixed step of rk2 and quasi_static [deg] (rk2 needs a small one: stiff film)",
+    step_deg: float | None = Field(
+        default=None, gt=0.0, le=5.0,
+        description="Fixed step of rk2 [deg]; not given: the largest stable step that "
+        "divides output_step_deg (from the film's squeeze damping; 0.01 for a film "
+        "without a damping estimate)",
 )
     quasi_static_step_deg: float = Field(
         default=0.5, gt=0.0, le=5.0, description="Fixed step of the quasi_static integrator [deg]"
 )
     relative_tolerance: float = Field(
-        default=1.0e-6, gt=0.0, le=1.0e-2, description="Relative tolerance (adaptive) [-]"
+        default=1.0e-6, gt=0.0, le=1.0e-2,
+        description="Relative tolerance (adaptive, implicit) [-]"
 )
     absolute_tolerance: float = Field(
         default=1.0e-4, gt=0.0, le=1.0,
-        description="Absolute tolerance on position/c and velocity/(c ω) (adaptive) [-]",
+        description="Absolute tolerance on position/c and velocity/(c ω) (adaptive, "
+        "implicit) [-]",
 )
     output_step_deg: float = Field(
         default=1.0, gt=0.0, le=10.0, description="Crank-angle spacing of the results [deg]"

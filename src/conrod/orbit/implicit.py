@@ -18,6 +18,8 @@ import numba as nb
 import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
+from conrod.film.base import FilmState
+from conrod.film.capabilities import HasForceJacobian
 from conrod.orbit.adaptive import (
     MAX_PHASE_CHANGES,
     _free_rhs,
@@ -28,7 +30,7 @@ from conrod.orbit.adaptive import (
     _state,
     _switch,
 )
-from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.problem import OrbitProblem, OrbitState, periodic_sample
 from conrod.orbit.tr_bdf2 import STATUS_END, STATUS_HIT, STATUS_NEWTON, segment
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -115,6 +117,11 @@ class _FreeFlight:
             self.rhs, self.params = _kernel_rhs(kernel.force), kernel.params
         else:
             self.rhs, self.params = (lambda phi, u, params, data: phases.free_rhs(phi, u)), ()
+        self.jacobian = None
+        self.refresh_rate = 0.0 if self.compiled else PYTHON_REFRESH_RATE
+        if (not self.compiled and problem.asperity is None
+                and isinstance(problem.film, HasForceJacobian)):
+            self.jacobian = functools.partial(_film_jacobian, problem, phases)
         self.data = (phases.angles, phases.table, float(problem.loads.cycle),
                      float(problem.viscosity), float(problem.clearance),
                      float(problem.crank_speed), float(problem.mass_x),
@@ -132,7 +139,7 @@ class _FreeFlight:
             self.rhs, self.params, self.data, float(phi), end,
             np.asarray(u, dtype=float), min(self.h, FIRST_STEP * 10), self.max_step,
             self.rtol, self.atol, self.circle, phi_out, out_u, next_out, max_steps,
-            compiled=self.compiled, refresh_rate=0.0 if self.compiled else PYTHON_REFRESH_RATE)
+            compiled=self.compiled, jacobian=self.jacobian, refresh_rate=self.refresh_rate)
         self.h = h
         if status not in (STATUS_END, STATUS_HIT):
             what = ("Newton iteration failed at the smallest step"
@@ -143,6 +150,23 @@ class _FreeFlight:
                 "relative_tolerance/absolute_tolerance or use integrator = 'adaptive'",
                 where=f"crank angle {math.degrees(phi_new):.2f} deg")
         return status, phi_new, u_new, steps, next_out
+
+
+def _film_jacobian(problem: OrbitProblem, phases: _Phases, rhs, phi, u, f0, params, data):
+    """∂(du/dφ)/∂u [-] from the film's own ∂F/∂(e, ė)
+    (:class:`~conrod.film.capabilities.HasForceJacobian`)."""
+    c, w = problem.clearance, problem.crank_speed
+    _, _, wj, wb = periodic_sample(phi, phases.angles, phases.table, problem.loads.cycle)
+    state = FilmState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, wj, wb,
+                      problem.viscosity)
+    _, film, _ = problem.film.force_jacobian(state, phases.session.memory)
+    out = np.zeros((4, 4))
+    out[0, 2] = out[1, 3] = 1.0
+    for row, mass in ((0, problem.mass_x), (1, problem.mass_y)):
+        scale = mass * c * w * w
+        out[2 + row, :2] = film[row, :2] * c / scale
+        out[2 + row, 2:] = film[row, 2:] * c * w / scale
+    return out
 
 
 def _leave_event(phases: _Phases):
