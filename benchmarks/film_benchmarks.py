@@ -18,11 +18,8 @@ from the last field. The mass-conserving model is timed with a full film history
 
 from __future__ import annotations
 
-<<<<<<< HEAD
 import dataclasses
-=======
 import json
->>>>>>> solver
 import math
 import os
 import shutil
@@ -87,15 +84,9 @@ def time_grid_model(factory, n_warm: int = 30, n_cold: int = 5) -> dict[str, flo
     times, sweeps = [], []
     _, memory = model.solve_with_memory(state_at(0, history), model.initial_memory())
     for k in range(1, n_warm + 1):
-<<<<<<< HEAD
-        start = time.perf_counter()
-        result, memory = model.solve_with_memory(state_at(k, history), memory)  # warm start
-        times.append(time.perf_counter() - start)
-=======
         start = time.process_time()
-        result = model.solve(state_at(k, history))
+        result, memory = model.solve_with_memory(state_at(k, history), memory)  # warm start
         times.append(time.process_time() - start)
->>>>>>> solver
         sweeps.append(sweeps_of(model, result))
     return {"cold": cold_time, "cold_sweeps": sweeps_of(model, cold),
             "warm": float(np.median(times)), "warm_sweeps": float(np.median(sweeps)),
@@ -119,24 +110,14 @@ def time_broken_film(n_theta: int = 144, n_z: int = 32) -> dict[str, float]:
     jfo_memory, reynolds_memory = jfo.initial_memory(), reynolds.initial_memory()
     for k in range(400):
         state = whirling_state(k * dt, history)
-<<<<<<< HEAD
-        start = time.perf_counter()
+        start = time.process_time()
         jfo_memory = dataclasses.replace(jfo_memory, fraction=history)
         result, jfo_memory = jfo.solve_with_memory(state, jfo_memory)  # warm starts held here
         if k >= 360:
-            times["jfo"].append(time.perf_counter() - start)
-            start = time.perf_counter()
-            _, reynolds_memory = reynolds.solve_with_memory(state, reynolds_memory)
-            times["reynolds"].append(time.perf_counter() - start)
-=======
-        start = time.process_time()
-        result = jfo.solve(state)
-        if k >= 360:
             times["jfo"].append(time.process_time() - start)
             start = time.process_time()
-            reynolds.solve(state)
+            _, reynolds_memory = reynolds.solve_with_memory(state, reynolds_memory)
             times["reynolds"].append(time.process_time() - start)
->>>>>>> solver
         history = np.clip(history + dt * result.history_rate, 0.0, 1.0)
     return {"jfo": float(np.median(times["jfo"])), "reynolds": float(np.median(times["reynolds"])),
             "min_fraction": float(history.min()), "sweeps": result.extra["iterations"]}
