@@ -153,3 +153,20 @@ def _intervals(crank_angle, in_contact):
     angles = np.roll(np.degrees(crank_angle), -np.argmin(in_contact))
     idx = np.flatnonzero(shifted)
     return angles[idx[0]], angles[idx[-1]], np.all(np.diff(idx) == 1)
+
+
+@pytest.mark.parametrize("name", ["mobility", "table"])
+def test_map_films_refuse_a_supply_pressure_naming_the_film_asked(name):
+    from conrod.errors import CaseError
+    from conrod.film.base import BearingGeometry, Groove
+    from conrod.film.mobility import MobilityFilm
+    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.film.table import TabulatedFilm
+
+    fed = BearingGeometry(0.05, 0.025, 25e-6, grooves=(Groove(width=0.004),),
+                          supply_pressure=3e5)
+    with pytest.raises(CaseError, match=f"film '{name}'.*use film 'reynolds'"):
+        if name == "mobility":
+            MobilityFilm(fed)
+        else:
+            TabulatedFilm(ReynoldsFilm(fed, n_theta=16, n_z=8))
