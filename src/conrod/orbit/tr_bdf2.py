@@ -79,8 +79,8 @@ def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol, eta):
         size = _norm(delta, atol + rtol * np.abs(z))
         if it > 0:
             rate = size / previous if previous > 0.0 else 0.0
-            if rate >= 0.9:
-                return z, f, False, rate, eta
+            if rate >= 0.9:  # no contraction: converged only if already at noise level
+                return z, rhs(phi, z, params, data), size < NEWTON_KAPPA, rate, eta
             eta = rate / (1.0 - rate)
         if eta * size < NEWTON_KAPPA:
             return z, rhs(phi, z, params, data), True, rate, eta
