@@ -97,6 +97,8 @@ def time_row(film: str, integrator: str, overrides: dict) -> tuple[str, str, str
     except TimeoutError:
         return f"{build:.2f} s", f"> {TIME_LIMIT_S} s for 2 cycles", "not finished"
     except Exception as error:  # report, do not hide
+        if isinstance(error.__cause__ or error.__context__, TimeoutError):  # inside numba
+            return f"{build:.2f} s", f"> {TIME_LIMIT_S} s for 2 cycles", "not finished"
         return f"{build:.2f} s", "failed", f"{type(error).__name__}: {str(error)[:60]}"
     finally:
         signal.alarm(0)
