@@ -53,6 +53,11 @@ class SolverSection(Section):
     output_step_deg: float = Field(
         default=1.0, gt=0.0, le=10.0, description="Crank-angle spacing of the results [deg]"
 )
+    massless_start: bool = Field(
+        default=True,
+        description="Start the implicit orbit with mass from the periodic massless orbit "
+        "(fewer cycles); false: from the concentric position [-]",
+)
     max_cycles: int = Field(default=8, ge=1, le=200, description="Most cycles to integrate [-]")
     min_cycles: int = Field(default=2, ge=1, le=200, description="Fewest cycles to integrate [-]")
     periodicity_tolerance: float = Field(
