@@ -103,10 +103,11 @@ def _implicit(chosen: Integrator, problem: OrbitProblem) -> bool:
 
 
 def _massless_start(problem: OrbitProblem, settings) -> OrbitState | None:
-    """End state of the periodic massless orbit (None when it cannot be computed)."""
-    from conrod.errors import ConvergenceError
+    """End state of the periodic massless orbit (None, the concentric start, when it
+    cannot be computed, e.g. a quasi-static step that does not divide the output step)."""
+    from conrod.errors import CaseError, ConvergenceError
 
     try:
         return periodic_orbit(problem, settings, integrator="quasi_static").last.end_state
-    except ConvergenceError:
+    except (CaseError, ConvergenceError):
         return None
