@@ -14,7 +14,7 @@ from typing import Any, Literal, get_args
 from conrod.errors import CaseError
 
 FilmName = Literal["short", "mobility", "reynolds", "mass_conserving", "table"]
-IntegratorName = Literal["adaptive", "rk2", "quasi_static"]
+IntegratorName = Literal["auto", "adaptive", "implicit", "rk2", "quasi_static"]
 
 FILM_MODELS: dict[str, str] = {
     "short": "conrod.film.short_bearing:ShortBearingFilm",
@@ -26,7 +26,9 @@ FILM_MODELS: dict[str, str] = {
 """Film name → class (each has ``from_settings(geometry, settings)``)."""
 
 INTEGRATORS: dict[str, str] = {
+    "auto": "conrod.orbit.integrators:AutomaticIntegrator",
     "adaptive": "conrod.orbit.integrators:AdaptiveIntegrator",
+    "implicit": "conrod.orbit.integrators:ImplicitIntegrator",
     "rk2": "conrod.orbit.integrators:HeunIntegrator",
     "quasi_static": "conrod.orbit.integrators:QuasiStaticIntegrator",
 }

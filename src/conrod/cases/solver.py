@@ -30,33 +30,44 @@ class SolverSection(Section):
 
     film: FilmName = Field(default="short", description="Film model [-]")
     integrator: IntegratorName = Field(
-        default="adaptive",
-        description="adaptive (implicit, error-controlled), rk2 ([D0] fixed step) "
-        "or quasi_static (massless mobility) [-]",
-    )
+        default="auto",
+        description="auto (per film: implicit, or quasi_static for the mass-conserving "
+        "film), implicit (TR-BDF2, error-controlled, compiled with the film force), "
+        "adaptive (SciPy Radau/BDF/LSODA), rk2 ([D0] fixed step) or quasi_static "
+        "(massless mobility) [-]",
+)
     adaptive_method: AdaptiveMethod = Field(
         default="Radau", description="scipy solve_ivp method of the adaptive integrator [-]"
     )
     max_step_deg: float = Field(
         default=1.0, gt=0.0, le=1.0, description="Largest step of the adaptive integrator [deg]"
-    )
-    step_deg: float = Field(
-        default=0.01, gt=0.0, le=5.0,
-        description="Fixed step of rk2 and quasi_static [deg] (rk2 needs a small one: stiff film)",
-    )
+)
+    step_deg: float | None = Field(
+        default=None, gt=0.0, le=5.0,
+        description="Fixed step of rk2 [deg]; not given: the largest stable step that "
+        "divides output_step_deg (from the film's squeeze damping; 0.01 for a film "
+        "without a damping estimate)",
+)
     quasi_static_step_deg: float = Field(
         default=0.5, gt=0.0, le=5.0, description="Fixed step of the quasi_static integrator [deg]"
     )
     relative_tolerance: float = Field(
-        default=1.0e-6, gt=0.0, le=1.0e-2, description="Relative tolerance (adaptive) [-]"
-    )
+        default=1.0e-6, gt=0.0, le=1.0e-2,
+        description="Relative tolerance (adaptive, implicit) [-]"
+)
     absolute_tolerance: float = Field(
         default=1.0e-4, gt=0.0, le=1.0,
-        description="Absolute tolerance on position/c and velocity/(c ω) (adaptive) [-]",
-    )
+        description="Absolute tolerance on position/c and velocity/(c ω) (adaptive, "
+        "implicit) [-]",
+)
     output_step_deg: float = Field(
         default=1.0, gt=0.0, le=10.0, description="Crank-angle spacing of the results [deg]"
-    )
+)
+    massless_start: bool = Field(
+        default=True,
+        description="Start the implicit orbit with mass from the periodic massless orbit "
+        "(fewer cycles); false: from the concentric position [-]",
+)
     max_cycles: int = Field(default=8, ge=1, le=200, description="Most cycles to integrate [-]")
     min_cycles: int = Field(default=2, ge=1, le=200, description="Fewest cycles to integrate [-]")
     periodicity_tolerance: float = Field(
@@ -99,15 +110,17 @@ class SolverSection(Section):
     @model_validator(mode="after")
     def _within_budget(self) -> SolverSection:
         """Steps, result rows and grid nodes within the budgets, refused before any run."""
-        step_name = {"rk2": "step_deg", "quasi_static": "quasi_static_step_deg",
-                     "adaptive": "max_step_deg"}[self.integrator]
+        fixed_steps = {"rk2": "step_deg", "quasi_static": "quasi_static_step_deg"}
+        step_name = fixed_steps.get(self.integrator, "max_step_deg")  # error-controlled: bound
         step = getattr(self, step_name)
+        if step is None:  # rk2 without step_deg: the largest stable step, chosen per film
+            step_name, step = "max_step_deg", self.max_step_deg
         smallest = LONGEST_CYCLE_DEG * self.max_cycles / MAX_INTEGRATOR_STEPS
         if step < smallest:
             raise range_error(
                 f"solver.{step_name}", step, f">= {smallest:.3g} with max_cycles = "
                 f"{self.max_cycles} (budget {MAX_INTEGRATOR_STEPS} steps per run)", "deg")
-        if self.integrator != "adaptive":
+        if step_name in fixed_steps.values():
             ratio = self.output_step_deg / step
             if ratio < 1.0 - 1e-9 or abs(ratio - round(ratio)) > 1e-9 * ratio:
                 raise range_error(f"solver.{step_name}", step, "a divisor of "

@@ -10,6 +10,8 @@ declares what its inner model declares by delegating the methods.
 * :class:`SupportsDeformation` — the model honours ``FilmState.deformation``; a model that
   does not must refuse a deformation with :class:`~conrod.errors.CaseError`
   (:func:`refuse_deformation`), never ignore it;
+* :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
+  integrator's Newton matrix);
 * :class:`HasMemory` — the answer depends on an explicit memory value (warm-start field,
   film content) that the *integrator* owns: it initialises it, threads it through every
   solve, advances it over a step, snapshots it and restores it on a rejected step.
@@ -121,6 +123,20 @@ class HasMemory(Protocol):
     def advance_memory(self, state: FilmState, memory: Any, dt: float) -> Any:
         """Memory after a time step ``dt`` [s] taken from ``state`` (transport of the film
         content); unchanged for a memory that only holds a warm start."""
+        ...
+
+
+@runtime_checkable
+class HasForceJacobian(Protocol):
+    """A film that gives the derivatives of its force with respect to the journal-centre
+    state, J = ∂F/∂(e_x, e_y, ė_x, ė_y) (2 × 4: N/m, N s/m), from its own solver (e.g.
+    the linearised solve on the converged cavitation set); the implicit orbit integrator
+    uses it for its Newton iteration instead of finite differences."""
+
+    def force_jacobian(self, state: FilmState, memory: Any) -> tuple[np.ndarray, np.ndarray,
+                                                                        Any]:
+        """(F (2,) [N], J (2, 4), memory after the solve) at ``state`` from ``memory``
+        (None for a memoryless film)."""
         ...
 
 

@@ -64,6 +64,9 @@ class MobilityFilm:
     table: TabulatedFilm = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
+        from conrod.film.table import check_tabulable
+
+        check_tabulable(self.geometry, self.name)
         if self.base is None:
             from conrod.film.reynolds import ReynoldsFilm
 

@@ -199,6 +199,15 @@ class ReynoldsFilm:
 
         return linearise(self, state)
 
+    def force_jacobian(self, state: FilmState, memory: ReynoldsMemory):
+        """(F [N], ∂F/∂(e, ė) (2 × 4) [N/m, N s/m], memory) from the linearised solve on
+        the converged active set, warm-started from ``memory``
+        (:class:`~conrod.film.capabilities.HasForceJacobian`)."""
+        from conrod.film.linearised import linearise_reynolds
+
+        lin = linearise_reynolds(self, state, memory=memory)
+        return lin.force, np.hstack([-lin.stiffness, -lin.damping]), memory
+
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """All film characteristics for one state (cold solve)."""
         return self.solve_with_memory(state, self.initial_memory(),

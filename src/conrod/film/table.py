@@ -77,20 +77,23 @@ def kernel_force(x, y, vx, vy, omega_sum, viscosity, params):
                        params[3], params[4])
 
 
-def check_tabulable(geometry: BearingGeometry) -> None:
-    """CaseError unless the film is rotation-invariant and homogeneous in speed."""
+def check_tabulable(geometry: BearingGeometry, film: str = "table") -> None:
+    """CaseError unless the film is rotation-invariant and homogeneous in speed; the
+    message names ``film``, the model that was asked for ('table' or 'mobility')."""
     if geometry.feed_holes:
-        raise CaseError("film = 'table'/'mobility': feed holes break rotational symmetry "
+        raise CaseError(f"film = {film!r}: feed holes break rotational symmetry "
                         "(allowed: none; use 'reynolds' or 'mass_conserving')")
     if any(g.extent < 2.0 * math.pi - 1e-9 for g in geometry.grooves):
-        raise CaseError("film = 'table'/'mobility': partial grooves are not allowed "
+        raise CaseError(f"film = {film!r}: partial grooves are not allowed "
                         "(allowed: full circumferential grooves only)")
     if geometry.grooves and geometry.supply_pressure != 0.0:
-        raise CaseError(f"supply_pressure = {geometry.supply_pressure} Pa with film 'table': "
-                        "allowed 0 Pa (tables scale with speed)")
+        raise CaseError(
+            f"supply_pressure = {geometry.supply_pressure} Pa with film {film!r}: allowed "
+            "0 Pa (the map is computed once and scaled with speed; a supply pressure adds "
+            "a part that does not scale); use film 'reynolds' or 'mass_conserving'")
     if geometry.cavitation_pressure != 0.0:
         raise CaseError(f"cavitation_pressure = {geometry.cavitation_pressure} Pa with film "
-                        "'table': allowed 0 Pa (ambient)")
+                        f"{film!r}: allowed 0 Pa (ambient)")
 
 
 def base_description(base: FilmModel) -> dict:

@@ -49,6 +49,40 @@ class AdaptiveIntegrator:
 
 
 @dataclass(frozen=True)
+class AutomaticIntegrator:
+    """The default: per film model, the integrator that finishes fastest with mass —
+    TR-BDF2 (``implicit``) for films without a film content, the massless
+    ``quasi_static`` orbit for a film whose content is transported in lock-step with a
+    fixed step (mass-conserving)."""
+
+    name: str = "auto"
+
+    def choose(self, problem: OrbitProblem) -> Integrator:
+        """The integrator used for ``problem``."""
+        if problem.has_film_content:
+            return QuasiStaticIntegrator()
+        return ImplicitIntegrator()
+
+    def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
+        """One cycle with :meth:`choose`."""
+        return self.choose(problem).cycle(problem, state, settings)
+
+
+@dataclass(frozen=True)
+class ImplicitIntegrator:
+    """TR-BDF2 (L-stable, second order, error-controlled, steps ≤ ``max_step_deg``) with
+    contact phases; compiled with the film force for films with a compiled kernel."""
+
+    name: str = "implicit"
+
+    def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
+        """One cycle; refuses a film whose content evolves in lock-step with a fixed step."""
+        from conrod.orbit.implicit import implicit_cycle
+
+        return implicit_cycle(problem, state, settings)
+
+
+@dataclass(frozen=True)
 class HeunIntegrator:
     """Second-order Runge–Kutta (Heun) at the fixed step ``[solver] step_deg``."""
 

@@ -101,10 +101,49 @@ def _step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
     return phi, record_every, n_out
 
 
+DEFAULT_STEP_DEG = 0.01
+"""rk2 step for a film without a damping estimate when none is given [deg]."""
+STABILITY_MARGIN = 1.8
+"""Largest Δt·B/m the automatic step aims at (Heun: stable up to 2) [-]."""
+
+
 def rk2_cycle(
+    problem: OrbitProblem, state: OrbitState, step_deg: float | None, output_step_deg: float
+) -> CycleTrajectory:
+    """One cycle of fixed-step Heun integration from ``state`` at φ = 0; ``step_deg`` None:
+    :func:`stable_step_cycle`."""
+    if step_deg is None:
+        if problem.compiled_force is not None and problem.kernel.radial_damping is not None:
+            return stable_step_cycle(problem, state, output_step_deg)
+        step_deg = DEFAULT_STEP_DEG
+    return _fixed_step_cycle(problem, state, step_deg, output_step_deg)
+
+
+def stable_step_cycle(problem: OrbitProblem, state: OrbitState,
+                      output_step_deg: float) -> CycleTrajectory:
+    """Heun at the largest step output_step_deg/k whose stability number Δt·B_rr/m, with
+    the film's radial squeeze damping B_rr along the computed orbit, stays below
+    :data:`STABILITY_MARGIN`: a cycle at a trial step tells the stiffness met, and the step
+    shrinks until the cycle is stable."""
+    divisions = 1
+    for _ in range(12):
+        step = output_step_deg / divisions
+        try:
+            return _fixed_step_cycle(problem, state, step, output_step_deg)
+        except ConvergenceError as error:
+            stiffness = error.residual if error.residual == error.residual else None
+            factor = (stiffness / STABILITY_MARGIN if stiffness and math.isfinite(stiffness)
+                      else 10.0)
+            divisions = max(divisions + 1, math.ceil(divisions * factor))
+    raise ConvergenceError(
+        f"rk2 found no stable step down to {output_step_deg / divisions:.3g} deg (film too "
+        "stiff for an explicit scheme); use integrator = 'implicit'",
+        where="automatic rk2 step")
+
+
+def _fixed_step_cycle(
     problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float
 ) -> CycleTrajectory:
-    """One cycle of fixed-step Heun integration from ``state`` at φ = 0."""
     phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
@@ -123,7 +162,7 @@ def rk2_cycle(
             raise ConvergenceError(
                 f"rk2 step too large for the film stiffness: Δt·B/m = {stiffness:.3g} > 2 "
                 f"(explicit Heun unstable); use solver.step_deg ≤ {step_deg * 1.9 / stiffness:.2g}"
-                " deg or the adaptive integrator",
+                " deg, leave it unset (automatic stable step) or use integrator = 'implicit'",
                 where=f"step {step_deg} deg", residual=stiffness,
 )
     else:

@@ -1,0 +1,188 @@
+"""One cycle of the orbit with mass by TR-BDF2 (:mod:`conrod.orbit.tr_bdf2`).
+
+Free flight is integrated by the TR-BDF2 segment: compiled together with the film force
+for a film with a compiled kernel (short bearing, tables), in Python with the film solved
+through its :class:`~conrod.orbit.memory.FilmSession` otherwise. The state is scaled as in
+:mod:`conrod.orbit.adaptive`, u = (x/c, y/c, v_x/(c ω), v_y/(c ω)), over the crank angle.
+Hard contact is the adaptive integrator's: a segment stops where the centre reaches the
+contact circle (located on the step's cubic interpolant), the plastic impact removes the
+normal velocity, the contact phase runs on the circle until the normal force vanishes.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numba as nb
+import numpy as np
+
+from conrod.errors import CaseError, ConvergenceError
+from conrod.film.base import FilmState
+from conrod.film.capabilities import HasForceJacobian
+from conrod.orbit.adaptive import (
+    MAX_PHASE_CHANGES,
+    _free_rhs,
+    _Phases,
+    _record,
+    _scaled,
+    _solve_segment,
+    _state,
+    _switch,
+)
+from conrod.orbit.problem import OrbitProblem, OrbitState, periodic_sample
+from conrod.orbit.tr_bdf2 import STATUS_END, STATUS_HIT, STATUS_NEWTON, segment
+from conrod.orbit.trajectory import CycleTrajectory
+
+FIRST_STEP = 1.0e-4
+"""First trial step of a free segment [rad] (error control grows it)."""
+PYTHON_REFRESH_RATE = 0.1
+"""Newton contraction rate above which a film solved in Python gets a new Jacobian (a
+compiled film gets one after every step that needed more than one iteration) [-]."""
+STEPS_PER_DEGREE = 2000
+"""Most accepted steps per degree of crank angle in a segment before giving up [-]."""
+
+
+@functools.cache
+def _kernel_rhs(force):
+    """Compiled du/dφ(φ, u, params, data) of a film with the compiled ``force``;
+    data = (angles, table, cycle, μ, c, ω, m_x, m_y) as :func:`adaptive._free_rhs`."""
+
+    @nb.njit
+    def rhs(phi, u, params, data):
+        angles, table, cycle, mu, c, omega, mass_x, mass_y = data
+        return _free_rhs(force, params, phi, u, angles, table, cycle, mu, c, omega,
+                         mass_x, mass_y)
+
+    return rhs
+
+
+def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleTrajectory:
+    """One cycle from ``state`` at φ = 0; ``settings`` = the ``[solver]`` section."""
+    if problem.has_film_content:
+        raise CaseError(
+            f"solver.integrator = 'implicit': the {problem.film.name} film carries a film "
+            "content that is advanced in lock-step with a fixed step (allowed: rk2, "
+            "quasi_static)")
+    phases = _Phases(problem, state)
+    runner = _FreeFlight(problem, phases, settings)
+    phi_out = problem.output_angles(settings.output_step_deg)
+    table = np.zeros((phi_out.size, 7))
+    free_u = np.zeros((phi_out.size, 4))
+    free_rows = np.zeros(phi_out.size, dtype=bool)
+    end = float(problem.loads.cycle)
+    phi, contact, steps, next_out = 0.0, state.in_contact, 0, 0
+    current = _scaled(state, problem.clearance, problem.crank_speed, phases)
+    leave = _leave_event(phases)
+    for _ in range(MAX_PHASE_CHANGES):
+        if not contact:
+            first = next_out
+            status, phi, u, taken, next_out = runner.run(phi, end, current, phi_out,
+                                                         free_u, next_out)
+            free_rows[first:next_out] = True
+            steps += taken
+            if status == STATUS_END:
+                _fill_free(table, free_u, free_rows, problem)
+                return CycleTrajectory.from_table(
+                    phi_out, table, _state(phases, u, False), steps)
+            current, contact = _switch(phases, phi, u, False)
+            continue
+        sol = _solve_segment(phases.contact_rhs, phi, end, current, leave, settings)
+        if sol.status < 0:
+            raise ConvergenceError(f"contact phase integration failed: {sol.message}",
+                                   where=f"crank angle {math.degrees(phi):.2f} deg")
+        steps += sol.t.size - 1
+        phi_end = float(sol.t[-1])
+        last = sol.status == 0
+        mask = (phi_out >= phi) & ((phi_out <= phi_end) if last else (phi_out < phi_end))
+        _record(phases, sol, phi_out, mask, table, True)
+        if last:
+            _fill_free(table, free_u, free_rows, problem)
+            return CycleTrajectory.from_table(
+                phi_out, table, _state(phases, sol.y[:, -1], True), steps)
+        next_out = int(np.searchsorted(phi_out, phi_end, side="left"))
+        phi = phi_end
+        current, contact = _switch(phases, phi, sol.y[:, -1], True)
+    raise ConvergenceError("contact chattering: too many contact entries/exits",
+                           where=f"crank angle {math.degrees(phi):.2f} deg")
+
+
+class _FreeFlight:
+    """TR-BDF2 free-flight segments of one cycle (compiled or Python)."""
+
+    def __init__(self, problem: OrbitProblem, phases: _Phases, settings):
+        kernel = problem.compiled_force
+        self.compiled = kernel is not None
+        if self.compiled:
+            self.rhs, self.params = _kernel_rhs(kernel.force), kernel.params
+        else:
+            self.rhs, self.params = (lambda phi, u, params, data: phases.free_rhs(phi, u)), ()
+        self.jacobian = None
+        self.refresh_rate = 0.0 if self.compiled else PYTHON_REFRESH_RATE
+        if (not self.compiled and problem.asperity is None
+                and isinstance(problem.film, HasForceJacobian)):
+            self.jacobian = functools.partial(_film_jacobian, problem, phases)
+        self.data = (phases.angles, phases.table, float(problem.loads.cycle),
+                     float(problem.viscosity), float(problem.clearance),
+                     float(problem.crank_speed), float(problem.mass_x),
+                     float(problem.mass_y))
+        self.circle = problem.contact_radius / problem.clearance
+        self.max_step = math.radians(settings.max_step_deg)
+        self.rtol = float(settings.relative_tolerance)
+        self.atol = float(settings.absolute_tolerance)
+        self.h = FIRST_STEP
+
+    def run(self, phi, end, u, phi_out, out_u, next_out):
+        """(status, φ, u, steps, next output row) of one segment from φ."""
+        max_steps = int(STEPS_PER_DEGREE * max(math.degrees(end - phi), 1.0))
+        status, phi_new, u_new, h, steps, next_out, _ = segment(
+            self.rhs, self.params, self.data, float(phi), end,
+            np.asarray(u, dtype=float), min(self.h, FIRST_STEP * 10), self.max_step,
+            self.rtol, self.atol, self.circle, phi_out, out_u, next_out, max_steps,
+            compiled=self.compiled, jacobian=self.jacobian, refresh_rate=self.refresh_rate)
+        self.h = h
+        if status not in (STATUS_END, STATUS_HIT):
+            what = ("Newton iteration failed at the smallest step"
+                    if status == STATUS_NEWTON else "step size collapsed")
+            raise ConvergenceError(
+                f"implicit orbit integration: {what} (eccentricity ratio "
+                f"{math.hypot(u_new[0], u_new[1]):.4f}); loosen [solver] "
+                "relative_tolerance/absolute_tolerance or use integrator = 'adaptive'",
+                where=f"crank angle {math.degrees(phi_new):.2f} deg")
+        return status, phi_new, u_new, steps, next_out
+
+
+def _film_jacobian(problem: OrbitProblem, phases: _Phases, rhs, phi, u, f0, params, data):
+    """∂(du/dφ)/∂u [-] from the film's own ∂F/∂(e, ė)
+    (:class:`~conrod.film.capabilities.HasForceJacobian`)."""
+    c, w = problem.clearance, problem.crank_speed
+    _, _, wj, wb = periodic_sample(phi, phases.angles, phases.table, problem.loads.cycle)
+    state = FilmState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, wj, wb,
+                      problem.viscosity)
+    _, film, _ = problem.film.force_jacobian(state, phases.session.memory)
+    out = np.zeros((4, 4))
+    out[0, 2] = out[1, 3] = 1.0
+    for row, mass in ((0, problem.mass_x), (1, problem.mass_y)):
+        scale = mass * c * w * w
+        out[2 + row, :2] = film[row, :2] * c / scale
+        out[2 + row, 2:] = film[row, 2:] * c * w / scale
+    return out
+
+
+def _leave_event(phases: _Phases):
+    def leave(phi_event: float, u: np.ndarray) -> float:
+        return phases.leave(phi_event, u)
+
+    leave.terminal, leave.direction = True, -1.0  # type: ignore[attr-defined]
+    return leave
+
+
+def _fill_free(table, free_u, free_rows, problem: OrbitProblem) -> None:
+    """Rows of the free phases in SI units (contact columns zero)."""
+    c, w = problem.clearance, problem.crank_speed
+    rows = np.flatnonzero(free_rows)
+    table[rows, 0] = free_u[rows, 0] * c
+    table[rows, 1] = free_u[rows, 1] * c
+    table[rows, 2] = free_u[rows, 2] * c * w
+    table[rows, 3] = free_u[rows, 3] * c * w
+    table[rows, 4:] = 0.0

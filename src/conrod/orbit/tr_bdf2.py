@@ -1,0 +1,231 @@
+"""TR-BDF2: an L-stable, second-order implicit Runge–Kutta step with an embedded
+third-order error estimate, for the stiff free flight of the journal centre.
+
+One step of length h from u_n (Bank et al. 1985; Hosea & Shampine 1996, the method of
+MATLAB's ``ode23tb``), d = 1 − √2/2, w = √2/4:
+
+* trapezoidal stage to φ_n + 2d h:   z = u_n + d h (f_n + f(z)),
+* BDF2 stage to φ_n + h:             u_{n+1} = u_n + h (w f_n + w f(z) + d f(u_{n+1})),
+* error estimate (third-order companion weights ((1 − w)/3, (3w + 1)/3, d/3)), filtered
+  through (I − d h J)⁻¹ as Shampine recommends for stiff problems.
+
+Both implicit stages share the matrix I − d h J, J = ∂f/∂u; Newton is simplified (J kept
+over steps while the iteration contracts, refreshed when it does not). Steps are
+error-controlled (mixed absolute/relative RMS norm, as SciPy's) and never longer than
+``max_step``. The step function is written once: compiled with numba for films with a
+compiled force, run as plain Python for films solved in Python (Reynolds), where each
+evaluation of f is a film solve.
+
+[1] R.E. Bank, W.M. Coughran, W. Fichtner, E.H. Grosse, D.J. Rose, R.K. Smith, Transient
+    simulation of silicon devices and circuits, IEEE Trans. CAD 4 (1985) 436–451.
+[2] M.E. Hosea, L.F. Shampine, Analysis and implementation of TR-BDF2, Appl. Numer. Math.
+    20 (1996) 21–37.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+GAMMA_HALF = 1.0 - 0.5 * math.sqrt(2.0)
+"""d = γ/2 with γ = 2 − √2, the diagonal of both implicit stages [-]."""
+WEIGHT = 0.25 * math.sqrt(2.0)
+"""w = (1 − d)/2, weight of f_n and f(z) in the BDF2 stage [-]."""
+NEWTON_ITERATIONS = 8
+"""Most simplified-Newton iterations per stage [-]."""
+NEWTON_KAPPA = 0.05
+"""Newton stops when its estimated error is below this fraction of the tolerance [-]."""
+
+STATUS_END, STATUS_HIT, STATUS_COLLAPSE, STATUS_NEWTON = 0, 1, -1, -2
+"""Segment outcomes: end reached; contact circle reached; step size collapsed; Newton
+failed with a fresh Jacobian at the smallest step."""
+
+
+def _fd_jacobian(rhs, phi, u, f0, params, data):
+    """Forward-difference J = ∂f/∂u (4 × 4) [-]."""
+    jac = np.empty((4, 4))
+    for j in range(4):
+        step = 1.0e-7 * max(1.0, abs(u[j]))
+        shifted = u.copy()
+        shifted[j] += step
+        jac[:, j] = (rhs(phi, shifted, params, data) - f0) / step
+    return jac
+
+
+@nb.njit(cache=True)
+def _norm(v, scale):
+    """RMS of v/scale [-]."""
+    total = 0.0
+    for i in range(v.size):
+        total += (v[i] / scale[i]) ** 2
+    return math.sqrt(total / v.size)
+
+
+def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol, eta):
+    """Solve z = base + d h f(φ, z) by simplified Newton with ``inverse`` = (I − d h J)⁻¹,
+    stopping when the estimated iteration error η‖Δz‖ (η = ρ/(1 − ρ), ρ the contraction
+    rate; ``eta`` from the previous stage before a rate is known) is below
+    :data:`NEWTON_KAPPA` of the tolerance (Hairer & Wanner, Solving ODEs II, IV.8).
+    Returns (z, f(z) = (z − base)/(d h), converged, rate, η)."""
+    z = guess.copy()
+    previous = 0.0
+    rate = 0.0
+    for it in range(NEWTON_ITERATIONS):
+        f = rhs(phi, z, params, data)
+        delta = _apply(inverse, base + dh * f - z)
+        z = z + delta
+        size = _norm(delta, atol + rtol * np.abs(z))
+        if it > 0:
+            rate = size / previous if previous > 0.0 else 0.0
+            if rate >= 0.9:  # no contraction: converged only if already at noise level
+                return z, rhs(phi, z, params, data), size < NEWTON_KAPPA, rate, eta
+            eta = rate / (1.0 - rate)
+        if eta * size < NEWTON_KAPPA:
+            return z, rhs(phi, z, params, data), True, rate, eta
+        previous = size
+    return z, f, False, rate, eta
+
+
+@nb.njit(cache=True)
+def _apply(matrix, v):
+    """matrix @ v for a small dense matrix (any memory layout)."""
+    out = np.zeros(v.size)
+    for i in range(v.size):
+        for j in range(v.size):
+            out[i] += matrix[i, j] * v[j]
+    return out
+
+
+@nb.njit(cache=True)
+def _hermite(theta, h, u0, f0, u1, f1):
+    """Cubic Hermite interpolant at the fraction ``theta`` of a step [-]."""
+    t2, t3 = theta * theta, theta * theta * theta
+    return ((2 * t3 - 3 * t2 + 1) * u0 + (t3 - 2 * t2 + theta) * h * f0
+            + (-2 * t3 + 3 * t2) * u1 + (t3 - t2) * h * f1)
+
+
+@nb.njit(cache=True)
+def _overshoot(u, circle):
+    """|e|/r_c − 1 from the scaled position [-]; ``circle`` = r_c/c."""
+    return math.hypot(u[0], u[1]) / circle - 1.0
+
+
+@nb.njit(cache=True)
+def _hit_fraction(h, u0, f0, u1, f1, circle):
+    """Fraction of a step where the interpolant reaches the contact circle (bisection)."""
+    low, high = 0.0, 1.0
+    for _ in range(60):
+        mid = 0.5 * (low + high)
+        if _overshoot(_hermite(mid, h, u0, f0, u1, f1), circle) > 0.0:
+            high = mid
+        else:
+            low = mid
+    return high
+
+
+def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol, atol, circle,
+             out_phi, out_u, next_out, max_steps, refresh_rate):
+    """Integrate du/dφ = rhs(φ, u, params, data) from φ to ``end`` (free flight).
+
+    u : scaled state (x/c, y/c, v_x/(c ω), v_y/(c ω)) [-]; h, max_step [rad];
+    circle : contact radius / c [-] (the segment stops where the centre reaches it);
+    out_phi : output angles [rad]; rows of ``out_u`` from ``next_out`` on are filled as
+    the steps pass them; J is refreshed after a step whose Newton contraction rate
+    exceeded ``refresh_rate`` [-]. Returns (status, φ, u, h, steps, next_out, jacobian evaluations).
+    """
+    f = rhs(phi, u, params, data)
+    jac = jacobian(rhs, phi, u, f, params, data)
+    fresh = True
+    evaluations = 1
+    eye = np.eye(4)
+    dh_inverse = -1.0
+    inverse = eye
+    steps = 0
+    eta = 1.0
+    h_prev, u_prev, f_prev = 0.0, u, f
+    while phi < end and steps < max_steps:
+        h = min(h, max_step, end - phi)
+        last = phi + h >= end - 1.0e-12 * max(1.0, abs(end))
+        if last:
+            h = end - phi
+        dh = GAMMA_HALF * h
+        if dh != dh_inverse:
+            inverse = np.linalg.inv(eye - dh * jac)
+            dh_inverse = dh
+        if h_prev > 0.0:  # extrapolate the previous step's interpolant
+            guess = _hermite(1.0 + 2.0 * dh / h_prev, h_prev, u_prev, f_prev, u, f)
+        else:
+            guess = u + 2.0 * dh * f
+        eta = max(eta, 1.0e-3) ** 0.8
+        z, fz, ok, rate1, eta = stage(rhs, phi + 2.0 * dh, u + dh * f, guess, dh, inverse,
+                                      params, data, atol, rtol, eta)
+        rate2 = 0.0
+        if ok:
+            base = u + h * WEIGHT * (f + fz)
+            guess = _hermite(0.5 / GAMMA_HALF, 2.0 * dh, u, f, z, fz)
+            u1, f1, ok, rate2, eta = stage(rhs, phi + h, base, guess, dh, inverse, params,
+                                           data, atol, rtol, eta)
+        if not ok:
+            if not fresh:
+                jac = jacobian(rhs, phi, u, f, params, data)
+                evaluations += 1
+                fresh, dh_inverse = True, -1.0
+                continue
+            h *= 0.25
+            if h < 1.0e-12 * max_step:
+                return STATUS_NEWTON, phi, u, h, steps, next_out, evaluations
+            continue
+        estimate = h * ((1.0 - WEIGHT) / 3.0 - WEIGHT) * f \
+            + h * ((3.0 * WEIGHT + 1.0) / 3.0 - WEIGHT) * fz \
+            + h * (GAMMA_HALF / 3.0 - GAMMA_HALF) * f1
+        estimate = _apply(inverse, estimate)
+        scale = atol + rtol * np.maximum(np.abs(u), np.abs(u1))
+        error = _norm(estimate, scale)
+        if error > 1.0:
+            h *= max(0.2, 0.9 * error ** (-1.0 / 3.0))
+            if h < 1.0e-12 * max_step:
+                return STATUS_COLLAPSE, phi, u, h, steps, next_out, evaluations
+            continue
+        steps += 1
+        hit = _overshoot(u1, circle) > 0.0
+        fraction = _hit_fraction(h, u, f, u1, f1, circle) if hit else 1.0
+        stop = phi + fraction * h
+        while next_out < out_phi.size and (out_phi[next_out] < stop
+                                           or (not hit and last
+                                               and out_phi[next_out] <= stop)):
+            out_u[next_out] = _hermite((out_phi[next_out] - phi) / h, h, u, f, u1, f1)
+            next_out += 1
+        if hit:
+            return (STATUS_HIT, stop, _hermite(fraction, h, u, f, u1, f1), h, steps,
+                    next_out, evaluations)
+        phi = end if last else phi + h
+        h_prev, u_prev, f_prev = h, u, f
+        u, f = u1, f1
+        fresh = False
+        if max(rate1, rate2) > refresh_rate:  # slow contraction: refresh J
+            jac = jacobian(rhs, phi, u, f, params, data)
+            evaluations += 1
+            fresh, dh_inverse = True, -1.0
+        h *= min(4.0, max(0.2, 0.9 * max(error, 1.0e-10) ** (-1.0 / 3.0)))
+    status = STATUS_END if phi >= end else STATUS_COLLAPSE
+    return status, phi, u, h, steps, next_out, evaluations
+
+
+fd_jacobian_compiled = nb.njit(_fd_jacobian)
+stage_compiled = nb.njit(_stage)
+segment_compiled = nb.njit(_segment)
+
+
+def segment(rhs, params, data, phi, end, u, h, max_step, rtol, atol, circle, out_phi,
+            out_u, next_out, max_steps, *, compiled, jacobian=None, refresh_rate=0.1):
+    """:func:`_segment` compiled (``rhs`` a numba function) or in Python; ``jacobian``
+    (rhs, φ, u, f, params, data) → ∂f/∂u, default forward differences."""
+    if compiled:
+        return segment_compiled(rhs, jacobian or fd_jacobian_compiled, stage_compiled,
+                                params, data, phi, end, u, h, max_step, rtol, atol, circle,
+                                out_phi, out_u, next_out, max_steps, refresh_rate)
+    return _segment(rhs, jacobian or _fd_jacobian, _stage, params, data, phi, end, u, h,
+                    max_step, rtol, atol, circle, out_phi, out_u, next_out, max_steps,
+                    refresh_rate)
