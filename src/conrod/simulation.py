@@ -219,7 +219,7 @@ class Simulation:
         thermal = self._thermal_orbit(self.problem(), progress)
         orbit, problem, cycle = thermal.orbit, thermal.problem, thermal.cycle
         summary = summarise(cycle, orbit, problem, self.solver, thermal.temperature,
-                            thermal.cycles, thermal.iterations, _name(self.integrator()))
+                            thermal.cycles, thermal.iterations, _name(self.integrator(), problem))
         pressure, grid = _pressure_map(problem, cycle, orbit.last.film_memory)
         results = RunResults(
             cycle=cycle, summary=summary, clearance=problem.clearance,
@@ -316,8 +316,14 @@ def coupling_settings(case: Case):
                            max_iterations=h.coupling_iterations)
 
 
-def _name(choice: Integrator | str) -> str:
-    return choice if isinstance(choice, str) else choice.name
+def _name(choice: Integrator | str, problem: OrbitProblem | None = None) -> str:
+    """Integrator name; an automatic choice names what it chose, e.g. 'auto (implicit)'."""
+    if isinstance(choice, str):
+        return choice
+    choose = getattr(choice, "choose", None)
+    if choose is not None and problem is not None:
+        return f"{choice.name} ({choose(problem).name})"
+    return choice.name
 
 
 def _solver_with(case: Case, overrides: dict[str, Any]):

@@ -146,8 +146,7 @@ def print_headline(results: Any, out: Path) -> None:
 
     from conrod.results.summary import headline
 
-    lines = headline(results)  # as in summary.json (reproducible: no wall time in it)
-    lines["wall time"] = f"{results.summary.wall_time:.2f} s"
+    lines = headline(results)  # as in summary.json (reproducible: the wall time is not in it)
     if sys.stdout.isatty():
         from rich.console import Console
         from rich.table import Table

@@ -87,7 +87,8 @@ def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleT
                     phi_out, table, _state(phases, u, False), steps)
             current, contact = _switch(phases, phi, u, False)
             continue
-        sol = _solve_segment(phases.contact_rhs, phi, end, current, leave, settings)
+        sol = _solve_segment(phases.contact_rhs, phi, end, current, leave, settings,
+                             phases.session)
         if sol.status < 0:
             raise ConvergenceError(f"contact phase integration failed: {sol.message}",
                                    where=f"crank angle {math.degrees(phi):.2f} deg")

@@ -125,7 +125,7 @@ def quasi_static_cycle(
     x, y, guess = state.x, state.y, (state.vx, state.vy)
     table = np.zeros((n_out, 7))
     memory = [None] * n_out if session.has_memory else None
-    worst = 0.0
+    worst, worst_k = 0.0, 0
     for k in range(len(phi) - 1):
         vx, vy, r1 = velocity(x, y, load_x[k], load_y[k], wj[k], wb[k], guess, phi[k])
         contact = math.hypot(x, y) >= rc * (1.0 - 1e-9)
@@ -141,10 +141,14 @@ def quasi_static_cycle(
                                 phi[k1])
         x, y, _ = project_onto_circle(x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), rc)
         guess = (vx2, vy2)
-        worst = max(worst, r1, r2)
+        if max(r1, r2) > worst:
+            worst, worst_k = max(r1, r2), k
         session.advance(FilmState(xp, yp, vx, vy, wj[k], wb[k], problem.viscosity), dt)
     if worst > 1e-4 or not np.all(np.isfinite(table)):
-        raise ConvergenceError("quasi-static velocity solve failed", residual=worst)
+        raise ConvergenceError(
+            "quasi-static velocity solve failed (relative force residual; try a smaller "
+            "solver.quasi_static_step_deg or the integrator 'implicit')",
+            where=f"crank angle {math.degrees(float(phi[worst_k])):.1f} deg", residual=worst)
     sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
     _contact_forces(problem, table, *sampled)
     end = OrbitState(x, y, guess[0], guess[1], False, session.snapshot())
@@ -180,7 +184,10 @@ def _compiled(problem: OrbitProblem, kernel: CompiledKernel, request: QuasiStati
             r.journal_speed, r.shell_speed, r.record_every, r.viscosity, r.contact_radius,
             scale)
     if worst > 1e-4 or not np.all(np.isfinite(table)):
-        raise ConvergenceError("quasi-static velocity solve failed", residual=worst)
+        raise ConvergenceError(
+            "quasi-static velocity solve failed (relative force residual, worst over the cycle; "
+            "try a smaller solver.quasi_static_step_deg or the integrator 'implicit')",
+            residual=worst)
     every = request.record_every
     sampled = [a[::every][:n_out] for a in (request.load_x, request.load_y,
                                             request.journal_speed, request.shell_speed)]
