@@ -54,7 +54,7 @@ def rated(state: FilmState, deformation: np.ndarray, rate: np.ndarray | None) ->
 def with_deformation_rate(film):
     """The rate-aware version of a plain :class:`ReynoldsFilm` (same settings); other films
     unchanged (their squeeze term keeps the journal's velocity only)."""
-    if type(film) is not ReynoldsFilm:
+    if not isinstance(film, ReynoldsFilm) or isinstance(film, ReynoldsWithDeformationRate):
         return film
     values = {f.name: getattr(film, f.name) for f in dataclasses.fields(film) if f.init}
     return ReynoldsWithDeformationRate(**values)
