@@ -319,7 +319,9 @@ def coupling_settings(case: Case):
 def _name(choice: Integrator | str, problem: OrbitProblem | None = None) -> str:
     """Integrator name; an automatic choice names what it chose, e.g. 'auto (implicit)'."""
     if isinstance(choice, str):
-        return choice
+        from conrod.registry import integrator
+
+        choice = integrator(choice)
     choose = getattr(choice, "choose", None)
     if choose is not None and problem is not None:
         return f"{choice.name} ({choose(problem).name})"
