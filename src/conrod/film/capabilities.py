@@ -10,6 +10,8 @@ declares what its inner model declares by delegating the methods.
 * :class:`SupportsDeformation` — the model honours ``FilmState.deformation``; a model that
   does not must refuse a deformation with :class:`~conrod.errors.CaseError`
   (:func:`refuse_deformation`), never ignore it;
+* :class:`HasContentStep` — an implicit (BDF2 / backward Euler) step of a transported film
+  content (mass-conserving film), the orbit's step for films with content;
 * :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
   integrator's Newton matrix);
 * :class:`HasMemory` — the answer depends on an explicit memory value (warm-start field,
@@ -123,6 +125,22 @@ class HasMemory(Protocol):
     def advance_memory(self, state: FilmState, memory: Any, dt: float) -> Any:
         """Memory after a time step ``dt`` [s] taken from ``state`` (transport of the film
         content); unchanged for a memory that only holds a warm start."""
+        ...
+
+
+@runtime_checkable
+class HasContentStep(Protocol):
+    """A film with a transported film content (mass-conserving) that solves its content
+    balance implicitly over a time step: the orbit integrators of films with content take
+    BDF2 / backward Euler steps through it, which have an answer for any journal motion."""
+
+    def content_step(self, state: FilmState, memory: Any, dt: float, warm: Any = None,
+                     previous: Any = None) -> tuple[float, float, Any]:
+        """(F_x, F_y) [N] at the end of a step ``dt`` [s] from the content of ``memory``
+        (``state``: end of the step, its velocity the journal velocity there), and the
+        memory at the end of the step; ``warm``: start values from an earlier trial;
+        ``previous``: the memory one step earlier (second-order BDF2 step), None: backward
+        Euler."""
         ...
 
 

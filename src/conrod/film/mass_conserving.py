@@ -60,10 +60,13 @@ class MassConservingMemory:
     fraction : ndarray  Film fraction ϑ(θ, z) on the grid, 1 = full film [-].
     pressure : ndarray or None  Last shifted pressure p̃ = p − p_cav, the warm start of the
         next solve [Pa]; None: start from p̃ = −p_cav.
+    thickness : ndarray or None  Film thickness h at the instant of ``fraction`` [m], set by
+        an implicit content step (:meth:`MassConservingFilm.content_step`); None otherwise.
     """
 
     fraction: np.ndarray
     pressure: np.ndarray | None = None
+    thickness: np.ndarray | None = None
 
 
 @dataclass
@@ -177,7 +180,7 @@ class MassConservingFilm:
         ``history`` is not read), and the memory with the new pressure."""
         result, pressure = self._solve_transient(state, memory.fraction, memory.pressure,
                                                  with_pressure)
-        return result, replace(memory, pressure=pressure)
+        return result, replace(memory, pressure=pressure, thickness=None)
 
     def force_with_memory(self, state: FilmState, memory: MassConservingMemory
 ) -> tuple[float, float, MassConservingMemory]:
@@ -193,7 +196,19 @@ class MassConservingFilm:
         result, memory = self.solve_with_memory(state, memory)
         rate = result.history_rate if result.history_rate is not None else 0.0
         fraction = np.clip(memory.fraction + dt * rate, 0.0, 1.0)
-        return replace(memory, fraction=fraction)
+        return replace(memory, fraction=fraction, thickness=None)
+
+    def content_step(self, state: FilmState, memory: MassConservingMemory, dt: float,
+                     warm: MassConservingMemory | None = None,
+                     previous: MassConservingMemory | None = None,
+) -> tuple[float, float, MassConservingMemory]:
+        """Film force (F_x, F_y) [N] at the end of an implicit step ``dt`` [s] from the
+        content of ``memory`` (BDF2 with the content of ``previous``, one step earlier;
+        else backward Euler), and the memory after it
+        (:func:`conrod.film.mass_conserving_step.content_step`)."""
+        from conrod.film.mass_conserving_step import content_step
+
+        return content_step(self, state, memory, dt, warm, previous)
 
     def fields(self, state: FilmState) -> FilmFields:
         """Assemble the cell-balance coefficients for one state."""

@@ -10,10 +10,12 @@ in :data:`conrod.registry.INTEGRATORS`, or any such object handed to
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any, Protocol, runtime_checkable
 
 from conrod.errors import CaseError
+from conrod.film.capabilities import HasContentStep
 from conrod.orbit.problem import OrbitProblem, OrbitState
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -50,16 +52,16 @@ class AdaptiveIntegrator:
 
 @dataclass(frozen=True)
 class AutomaticIntegrator:
-    """The default: per film model, the integrator that finishes fastest with mass —
-    TR-BDF2 (``implicit``) for films without a film content, the massless
-    ``quasi_static`` orbit for a film whose content is transported in lock-step with a
-    fixed step (mass-conserving)."""
+    """The default: the orbit with mass by ``implicit`` — TR-BDF2 for films without a film
+    content, BDF2 steps of the film content for the mass-conserving film — and the massless
+    ``quasi_static`` orbit for another film whose content is transported in lock-step with
+    a fixed step."""
 
     name: str = "auto"
 
     def choose(self, problem: OrbitProblem) -> Integrator:
         """The integrator used for ``problem``."""
-        if problem.has_film_content:
+        if problem.has_film_content and not isinstance(problem.film, HasContentStep):
             return QuasiStaticIntegrator()
         return ImplicitIntegrator()
 
@@ -76,9 +78,17 @@ class ImplicitIntegrator:
     name: str = "implicit"
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
-        """One cycle; refuses a film whose content evolves in lock-step with a fixed step."""
+        """One cycle; a film with a transported content that steps it implicitly
+        (mass-conserving) runs the BDF2 orbit with mass of :mod:`conrod.orbit.content_orbit`
+        at the largest step ≤ ``max_step_deg`` that divides ``output_step_deg``."""
         from conrod.orbit.implicit import implicit_cycle
 
+        if problem.has_film_content and isinstance(problem.film, HasContentStep):
+            from conrod.orbit.content_orbit import content_cycle
+
+            output = settings.output_step_deg
+            step = output / math.ceil(output / settings.max_step_deg - 1e-9)
+            return content_cycle(problem, state, step, output, with_mass=True)
         return implicit_cycle(problem, state, settings)
 
 

@@ -21,7 +21,7 @@ import numpy as np
 
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
-from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest
+from conrod.film.capabilities import CompiledKernel, HasContentStep, QuasiStaticRequest
 from conrod.film.massless import (
     NEWTON_ITERATIONS,
     contact_forces,
@@ -29,6 +29,7 @@ from conrod.film.massless import (
     newton_velocity,
 )
 from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
+from conrod.orbit.content_orbit import content_cycle
 from conrod.orbit.memory import FilmSession
 from conrod.orbit.problem import OrbitProblem, OrbitState
 from conrod.orbit.trajectory import CycleTrajectory
@@ -109,6 +110,8 @@ def quasi_static_cycle(
     """One cycle of the massless orbit from ``state`` (only its position is used)."""
     from conrod.orbit.rk2 import _step_grid
 
+    if isinstance(problem.film, HasContentStep):
+        return content_cycle(problem, state, step_deg, output_step_deg, with_mass=False)
     phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)

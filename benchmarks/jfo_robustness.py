@@ -1,0 +1,149 @@
+"""Robustness of the mass-conserving (JFO) orbit on random but plausible fed bearings.
+
+Run from the repository root:  python benchmarks/jfo_robustness.py [grid]
+Writes benchmarks/jfo_robustness.md. Fifteen bearings drawn with a fixed seed: bore
+60–150 mm, L/D 0.3–0.6, 600–4000 rpm, radial clearance 10–60 µm, a central
+circumferential groove (10 % of the width) fed at 0.1–0.5 MPa, viscosity 5–20 mPa s, a
+four-stroke big-end-like load (firing pulse on a rotating inertia load) whose peak is a
+specific load of 5–40 MPa on L·D. Each bearing runs the Reynolds and the mass-conserving
+film, massless (``quasi_static``) and with mass (the integrator ``auto`` chooses), to a
+periodic orbit; a run longer than :data:`TIME_LIMIT_S` is reported as not finished.
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+SEED = 20261122
+CASES = 15
+TIME_LIMIT_S = 120
+"""A run still going after this is reported as '> limit' [s]."""
+GRID = (36, 8)
+"""Film grid n_theta × n_z of the table (coarse, as the property test)."""
+
+
+def draw_bearings(seed: int = SEED, count: int = CASES) -> list[dict]:
+    """``count`` random plausible fed bearings (SI units)."""
+    rng = np.random.default_rng(seed)
+    return [{
+        "bore": rng.uniform(0.06, 0.15),
+        "width_ratio": rng.uniform(0.3, 0.6),
+        "rpm": rng.uniform(600.0, 4000.0),
+        "clearance": rng.uniform(10e-6, 60e-6),
+        "supply": rng.uniform(0.1e6, 0.5e6),
+        "viscosity": rng.uniform(0.005, 0.02),
+        "unit_load": rng.uniform(5e6, 40e6),
+    } for _ in range(count)]
+
+
+def problem(bearing: dict, film: str, settings, mass: float = 1.0):
+    """OrbitProblem of one bearing with the film ``film`` on the grid of ``settings``."""
+    from conrod.film.base import BearingGeometry, Groove
+    from conrod.film.mass_conserving import MassConservingFilm
+    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.loads.cycle import LoadCycle
+    from conrod.orbit import OrbitProblem
+
+    width = bearing["width_ratio"] * bearing["bore"]
+    geometry = BearingGeometry(bearing["bore"], width, bearing["clearance"],
+                               grooves=(Groove(width=0.1 * width),),
+                               supply_pressure=bearing["supply"])
+    model = {"reynolds": ReynoldsFilm, "mass_conserving": MassConservingFilm}[film]
+    omega = bearing["rpm"] * math.pi / 30.0
+    count = 144
+    phi = np.linspace(0.0, 4 * math.pi, count, endpoint=False)
+    peak = bearing["unit_load"] * bearing["bore"] * width
+    firing = np.exp(-(((phi + math.pi) % (4 * math.pi) - math.pi) / 0.3) ** 2)
+    inertia = 0.3 * peak
+    load_x = peak * firing - inertia * np.cos(phi)
+    load_y = -inertia * 0.4 * np.sin(phi)
+    loads = LoadCycle(phi, load_x, load_y, np.full(count, omega), np.zeros(count), omega,
+                      4 * math.pi)
+    return OrbitProblem(model.from_settings(geometry, settings), loads,
+                        bearing["viscosity"], mass, mass, 0.1, 0.05 * bearing["clearance"])
+
+
+def run(bearing: dict, film: str, integrator: str, grid=GRID) -> dict:
+    """Outcome of one periodic orbit: status, message, wall time, cycles, h_min."""
+    from conrod.cases.solver import SolverSection
+    from conrod.orbit.periodic import periodic_orbit
+
+    settings = SolverSection(film=film, integrator=integrator, quasi_static_step_deg=1.0,
+                             output_step_deg=2.0, max_cycles=8, n_theta=grid[0],
+                             n_z=grid[1])
+    orbit_problem = problem(bearing, film, settings)
+    signal.signal(signal.SIGALRM, _timeout)
+    signal.alarm(TIME_LIMIT_S)
+    start = time.perf_counter()
+    try:
+        result = periodic_orbit(orbit_problem, settings)
+        h_min = orbit_problem.clearance - float(np.max(np.hypot(result.last.x,
+                                                                result.last.y)))
+        status = "periodic" if result.periodic else "not periodic"
+        return {"status": status, "message": "", "time": time.perf_counter() - start,
+                "cycles": result.cycles, "h_min": h_min}
+    except TimeoutError:
+        return {"status": "timeout", "message": f"> {TIME_LIMIT_S} s",
+                "time": time.perf_counter() - start, "cycles": 0, "h_min": math.nan}
+    except Exception as error:  # report, do not hide
+        if isinstance(error.__cause__ or error.__context__, TimeoutError):
+            return {"status": "timeout", "message": f"> {TIME_LIMIT_S} s",
+                    "time": time.perf_counter() - start, "cycles": 0, "h_min": math.nan}
+        return {"status": "failed", "message": f"{type(error).__name__}: {error}",
+                "time": time.perf_counter() - start, "cycles": 0, "h_min": math.nan}
+    finally:
+        signal.alarm(0)
+
+
+def _timeout(signum, frame):
+    raise TimeoutError
+
+
+def main() -> None:
+    configurations = [("reynolds", "quasi_static"), ("mass_conserving", "quasi_static"),
+                      ("reynolds", "auto"), ("mass_conserving", "auto")]
+    only = sys.argv[1:]  # optional subset of configuration indices
+    if only:
+        configurations = [configurations[int(k)] for k in only]
+    lines = [
+        "# Mass-conserving orbit on random fed bearings",
+        "",
+        f"Seed {SEED}, {CASES} bearings (bore 60–150 mm, L/D 0.3–0.6, 600–4000 rpm, "
+        "c 10–60 µm, central groove fed at 0.1–0.5 MPa, μ 5–20 mPa s, four-stroke load "
+        f"peaking at 5–40 MPa on L·D), grid {GRID[0]}×{GRID[1]}, quasi-static step 1°, "
+        f"up to 8 cycles, time limit {TIME_LIMIT_S} s per run. "
+        "`auto` is the integrator chosen by default (with mass where the film allows it).",
+        "",
+        "| case | bore [mm] | rpm | c [µm] | p_s [MPa] | W/(LD) [MPa] | film | integrator "
+        "| outcome | time [s] | cycles | h_min [µm] | message |",
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |",
+    ]
+    totals = {}
+    for k, bearing in enumerate(draw_bearings()):
+        for film, integrator in configurations:
+            out = run(bearing, film, integrator)
+            key = (film, integrator)
+            done = totals.setdefault(key, [0, 0.0])
+            done[0] += out["status"] == "periodic"
+            done[1] += out["time"]
+            row = (f"| {k} | {bearing['bore'] * 1e3:.0f} | {bearing['rpm']:.0f} | "
+                   f"{bearing['clearance'] * 1e6:.1f} | {bearing['supply'] / 1e6:.2f} | "
+                   f"{bearing['unit_load'] / 1e6:.1f} | {film} | {integrator} | "
+                   f"{out['status']} | {out['time']:.1f} | {out['cycles']} | "
+                   f"{out['h_min'] * 1e6:.2f} | {out['message'][:110]} |")
+            print(row, flush=True)
+            lines.append(row)
+    lines += ["", "| film | integrator | periodic | total time [s] |", "| --- | --- | --- | --- |"]
+    lines += [f"| {f} | {i} | {n}/{CASES} | {t:.1f} |" for (f, i), (n, t) in totals.items()]
+    (ROOT / "benchmarks" / "jfo_robustness.md").write_text("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,115 @@
+"""Implicit time step of the mass-conserving (JFO) film: the content balance over a step.
+
+The instantaneous JFO problem (:meth:`MassConservingFilm.solve_with_memory`) takes the film
+fraction ϑ as given and can pressurise only the cells that are already full. When the
+journal moves towards a ruptured region, no velocity balances the load at that instant
+(the ruptured cells cannot carry pressure), and an orbit that solves the force balance
+there fails. Over a time step Δt the content balance has an answer for any motion: oil
+squeezed into a shrinking gap fills the cell and then raises the pressure. Following
+Ausas, Jai & Buscaglia (2009), the step is implicit in the content ϑh (backward Euler),
+
+.. math:: a_P p̃_P − Σ a_{nb} p̃_{nb} + C_e ϑ_e − C_w ϑ_w
+          + 12μΔxΔz\\,\\frac{ϑ_P h_P − ϑ_P^n h_P^n}{Δt} = 0,
+
+with h, a, C at the end of the step, and is solved with ϑ for the Elrod–Adams
+complementarity (p̃ > 0 ⇒ ϑ = 1, ϑ < 1 ⇒ p̃ = 0) by the Ausas sweep
+(:func:`~conrod.film.mass_conserving_kernel.elrod_adams_step`).
+
+The state handed in is the one at the end of the step. With the content of the step
+before, the step is BDF2 (second order, ∂q/∂t ≈ (3q^{n+1} − 4q^n + q^{n−1})/(2Δt)); in
+the full film this is Reynolds' equation with ∂h/∂t of the journal velocity, since
+3h^{n+1} − 4h^n + h^{n−1} = 2Δt ∂h/∂t for a rigid film moved by the same BDF2 step.
+
+[1] R.F. Ausas, M. Jai, G.C. Buscaglia, "A mass-conserving algorithm for dynamical
+    lubrication problems with cavitation", J. Tribol. 131 (2009) 031702.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from conrod.errors import ConvergenceError
+from conrod.film.base import FilmState
+from conrod.film.capabilities import refuse_deformation
+from conrod.film.mass_conserving_kernel import elrod_adams_step
+from conrod.film.mass_conserving_results import axial_weights
+
+STEP_TOLERANCE = 1.0e-10
+"""Tightest relative change per sweep the step's Ausas sweep is asked for: tighter
+tolerances stagnate in round-off on some fields [-]."""
+
+if TYPE_CHECKING:
+    from conrod.film.mass_conserving import MassConservingFilm, MassConservingMemory
+
+
+def content_step(
+    film: MassConservingFilm, state: FilmState, memory: MassConservingMemory, dt: float,
+    warm: MassConservingMemory | None = None, previous: MassConservingMemory | None = None,
+) -> tuple[float, float, MassConservingMemory]:
+    """Film force (F_x, F_y) [N] at the end of a step ``dt`` [s] that starts from the film
+    content of ``memory``, and the memory at the end of the step.
+
+    state : FilmState  End of the step; its velocity is the journal velocity there [m/s].
+    memory : MassConservingMemory  Film fraction ϑ^n (and h^n) at the start of the step.
+    warm : MassConservingMemory or None  Start values of ϑ and p̃ for the sweep (an earlier
+        trial of the same step); None: those of ``memory``.
+    previous : MassConservingMemory or None  Content one step earlier: the step is BDF2,
+        ∂q/∂t ≈ (3q^{n+1} − 4q^n + q^{n−1})/(2Δt), when both memories carry their
+        thickness; else backward Euler.
+    """
+    from conrod.film.mass_conserving import MassConservingMemory
+
+    if film.pressure_viscosity is not None:
+        raise ConvergenceError("implicit film-content step: not available with a "
+                               "pressure-viscosity law")
+    refuse_deformation(state, film.name)
+    f = film.fields(state)
+    dx, dz = film.spacing()
+    cell = 12.0 * state.viscosity * dx * dz / dt
+    content = _content(film, f, memory, cell, dt)
+    if (previous is not None and memory.thickness is not None
+            and previous.thickness is not None):
+        capacity = 1.5 * cell * f.h
+        known = 2.0 * content - 0.5 * _content(film, f, previous, cell, dt)
+    else:
+        capacity, known = cell * f.h, content
+    first = warm if warm is not None else memory
+    fraction = np.ascontiguousarray(film._fraction(first.fraction, f))
+    pressure = film._start_pressure(f, fraction, first.pressure, state)
+    tolerance = max(film.tolerance, STEP_TOLERANCE)
+    sweeps, change = elrod_adams_step(
+        pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east, capacity,
+        np.ascontiguousarray(known), film._omega, tolerance, film.max_iterations)
+    film.last_iterations = sweeps
+    if not change <= tolerance:
+        raise ConvergenceError(
+            f"mass-conserving film step did not converge in {sweeps} sweeps",
+            where=f"e = ({state.eccentricity_x:.3e}, {state.eccentricity_y:.3e}) m",
+            residual=change)
+    fx, fy = shifted_pressure_force(film, pressure, state)
+    return fx, fy, MassConservingMemory(fraction, pressure, f.h)
+
+
+def _content(film: MassConservingFilm, f, memory: MassConservingMemory, cell: float,
+             dt: float) -> np.ndarray:
+    """12μΔxΔz ϑh/Δt of ``memory`` [Pa m³]; without its thickness, h^n = h − Δt ∂h/∂t
+    (the backward Euler position of a rigid film)."""
+    fraction = film._fraction(memory.fraction, f)
+    if memory.thickness is not None:
+        return cell * fraction * memory.thickness
+    return fraction * (cell * f.h - f.squeeze)
+
+
+def shifted_pressure_force(film: MassConservingFilm, pressure: np.ndarray,
+                           state: FilmState) -> tuple[float, float]:
+    """Film force −∫∫ p (cos θ, sin θ) R dθ dz [N] from the shifted pressure p̃ [Pa]."""
+    theta, _ = film.grid()
+    _, dz = film.spacing()
+    gauge = film.gauge_pressure(pressure, state)
+    line_load = gauge @ axial_weights(pressure.shape[1], dz)
+    factor = -film.geometry.radius * 2.0 * math.pi / theta.size
+    return factor * float(film._cos_theta @ line_load), factor * float(
+        film._sin_theta @ line_load)

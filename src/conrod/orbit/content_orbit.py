@@ -1,0 +1,297 @@
+"""Orbit of a film with a transported content (mass-conserving, JFO) by implicit steps.
+
+One step from φ_n to φ_{n+1} = φ_n + Δφ (Δt = Δφ/ω) solves, for the end velocity v,
+
+.. math:: e^{n+1} = e^n + Δt\\,v,\\qquad
+          F(e^{n+1}, v;\\ ϑ^n h^n, Δt) + W(φ_{n+1}) − m\\,\\frac{v − v^n}{Δt} = 0
+
+(backward Euler, the first step of a cycle and after a contact event), then BDF2,
+e^{n+1} = (4e^n − e^{n−1} + 2Δt v)/3 with the same formula for the velocity and the film
+content (second order). F is the film force at the end of the implicit step of the film
+content (:mod:`conrod.film.mass_conserving_step`), m the moving mass (0: the massless
+orbit). Unlike the instantaneous force balance at a frozen film fraction, this balance has
+an answer for any motion of the journal towards a ruptured region (the squeezed content
+refills the gap and carries the load), so the step is well posed; both formulas are
+L-stable. The 2 × 2 balance is solved by a damped Newton iteration with a finite-difference
+Jacobian, each film solve warm-started from the previous trial; a step that does not
+converge is split in halves (backward Euler, down to 1/2^:data:`MAX_HALVINGS` of the step)
+before the orbit stops with the crank angle, the force residual [N] and what to change.
+
+On the contact circle r_c the centre moves along the circle (one unknown, the angle) and
+the normal force that the film and load leave unbalanced is the contact force P_c ≥ 0
+(eqs 4.1.5–4.1.8 of the contact model, [D0]); the centre leaves the circle when P_c < 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from conrod.errors import CaseError, ConvergenceError
+from conrod.film.base import FilmState
+from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.trajectory import CycleTrajectory
+
+NEWTON_ITERATIONS = 40
+"""Most Newton iterations per step [-]."""
+RELATIVE_RESIDUAL = 1.0e-8
+"""Force residual, relative to the load plus 1 N, that ends the Newton iteration [-]."""
+ACCEPTED_RESIDUAL = 1.0e-5
+"""Largest relative residual accepted when the iteration limit is reached [-]."""
+MAX_HALVINGS = 6
+"""Most halvings of a step that does not converge [-]."""
+
+
+@dataclass
+class _Step:
+    """Outcome of one step: end position, velocity, memory, contact force, residual."""
+
+    x: float
+    y: float
+    vx: float
+    vy: float
+    memory: Any
+    contact_force: float
+    in_contact: bool
+    residual: float
+    converged: bool
+
+
+@dataclass(frozen=True)
+class _Start:
+    """Where a step starts: position [m], velocity [m/s], film memory, and the same one step
+    earlier (``before``; None: a backward Euler step)."""
+
+    x: float
+    y: float
+    vx: float
+    vy: float
+    memory: Any
+    before: _Start | None = None
+
+    def position(self, v, dt: float) -> tuple[float, float]:
+        """End position of the step at end velocity ``v`` [m]."""
+        b = self.before
+        if b is None:
+            return self.x + dt * v[0], self.y + dt * v[1]
+        return ((dt * v[0] + 2.0 * self.x - 0.5 * b.x) / 1.5,
+                (dt * v[1] + 2.0 * self.y - 0.5 * b.y) / 1.5)
+
+    def velocity(self, x1: float, y1: float, dt: float) -> np.ndarray:
+        """End velocity of the step that ends at (x1, y1) [m/s]."""
+        b = self.before
+        if b is None:
+            return np.array([(x1 - self.x) / dt, (y1 - self.y) / dt])
+        return np.array([(1.5 * x1 - 2.0 * self.x + 0.5 * b.x) / dt,
+                         (1.5 * y1 - 2.0 * self.y + 0.5 * b.y) / dt])
+
+    def acceleration(self, v, dt: float) -> np.ndarray:
+        """dv/dt at the end of the step [m/s²]."""
+        b = self.before
+        if b is None:
+            return np.array([(v[0] - self.vx) / dt, (v[1] - self.vy) / dt])
+        return np.array([(1.5 * v[0] - 2.0 * self.vx + 0.5 * b.vx) / dt,
+                         (1.5 * v[1] - 2.0 * self.vy + 0.5 * b.vy) / dt])
+
+
+class _Balance:
+    """Force balance of one implicit step (film, load, mass, contact circle)."""
+
+    def __init__(self, problem: OrbitProblem, with_mass: bool):
+        self.problem = problem
+        self.film = problem.film
+        self.mass = np.array([problem.mass_x, problem.mass_y]) if with_mass else np.zeros(2)
+        self.radius = problem.contact_radius * (1.0 - 1e-9)
+        self.scale = problem.clearance * max(problem.crank_speed, 1e-3)
+
+    def residual(self, start: _Start, v, load, speeds, dt, warm):
+        """(residual W + F − m dv/dt [N], memory at the end of the step) at end velocity v."""
+        x1, y1 = start.position(v, dt)
+        state = FilmState(x1, y1, v[0], v[1], speeds[0], speeds[1], self.problem.viscosity)
+        previous = start.before.memory if start.before is not None else None
+        fx, fy, after = self.film.content_step(state, start.memory, dt, warm, previous)
+        if self.problem.asperity is not None:
+            from conrod.contact.asperity import asperity_force
+
+            ax, ay = asperity_force(x1, y1, self.problem.clearance, self.problem.asperity)
+            fx, fy = fx + ax, fy + ay
+        r = np.array([load[0] + fx, load[1] + fy]) - self.mass * start.acceleration(v, dt)
+        return r, after
+
+    def inside(self, start: _Start, v, dt) -> bool:
+        return math.hypot(*start.position(v, dt)) <= self.radius
+
+    def free(self, start: _Start, load, speeds, dt) -> _Step | None:
+        """Levenberg–Marquardt on the velocity off the circle (the film force can be nearly
+        insensitive to one direction of the velocity where little film is left, so plain
+        Newton steps explode); None when the centre is pushed onto the circle."""
+        v = np.array([start.vx, start.vy])
+        if not self.inside(start, v, dt):
+            v = start.velocity(start.x, start.y, dt)
+        size = math.hypot(*load) + 1.0
+        r, warm = self.residual(start, v, load, speeds, dt, None)
+        norm, damping, blocked = float(np.hypot(*r)), 1e-9, False
+        for _ in range(NEWTON_ITERATIONS):
+            if norm <= RELATIVE_RESIDUAL * size:
+                break
+            jac = self._jacobian(start, v, r, load, speeds, dt, warm) * self.scale
+            normal, gradient = jac.T @ jac, jac.T @ r
+            level = float(np.max(np.diag(normal))) or 1.0
+            for _ in range(16):
+                step = -np.linalg.solve(normal + damping * level * np.eye(2), gradient)
+                trial = v + self.scale * step
+                blocked = not self.inside(start, trial, dt)
+                if not blocked:
+                    r_trial, w_trial = self.residual(start, trial, load, speeds, dt, warm)
+                    if np.hypot(*r_trial) < norm:
+                        v, r, warm = trial, r_trial, w_trial
+                        norm, damping = float(np.hypot(*r_trial)), max(damping / 10.0, 1e-15)
+                        break
+                damping *= 10.0
+            else:
+                break  # no decrease even with tiny steps: not converged
+        if norm > ACCEPTED_RESIDUAL * size and (blocked or self._near_circle(start, v, dt)):
+            return None
+        x1, y1 = start.position(v, dt)
+        return _Step(x1, y1, float(v[0]), float(v[1]), warm, 0.0, False, norm / size,
+                     norm <= ACCEPTED_RESIDUAL * size)
+
+    def _near_circle(self, start: _Start, v, dt) -> bool:
+        return math.hypot(*start.position(v, dt)) > self.radius - 1e-3 * self.problem.clearance
+
+    def _jacobian(self, start: _Start, v, r, load, speeds, dt, warm):
+        delta = 1e-4 * self.scale  # well above the film solver's noise
+        jac = np.empty((2, 2))
+        for i in range(2):
+            dv = v.copy()
+            dv[i] += delta
+            jac[:, i] = (self.residual(start, dv, load, speeds, dt, warm)[0] - r) / delta
+        return jac
+
+    def on_circle(self, start: _Start, load, speeds, dt) -> _Step | None:
+        """Centre on the contact circle: the angle balances the tangential force; None when
+        the normal force pulls the centre off the circle (P_c < 0)."""
+        size = math.hypot(*load) + 1.0
+
+        def tangential(angle, warm):
+            normal = np.array([math.cos(angle), math.sin(angle)])
+            v = start.velocity(self.radius * normal[0], self.radius * normal[1], dt)
+            r, after = self.residual(start, v, load, speeds, dt, warm)
+            return float(r @ np.array([-normal[1], normal[0]])), r, v, after
+
+        alpha = math.atan2(start.y, start.x)
+        rt, r, v, warm = tangential(alpha, None)
+        for _ in range(NEWTON_ITERATIONS):
+            if abs(rt) <= RELATIVE_RESIDUAL * size:
+                break
+            slope = (tangential(alpha + 1e-7, warm)[0] - rt) / 1e-7
+            change = max(min(-rt / slope if slope != 0.0 else 0.0, 0.05), -0.05)
+            lam, trial = 1.0, None
+            while lam >= 1e-6:
+                trial = tangential(alpha + lam * change, warm)
+                if abs(trial[0]) < abs(rt):
+                    break
+                lam, trial = 0.5 * lam, None
+            if trial is None:
+                break  # no decrease: not converged
+            alpha += lam * change
+            rt, r, v, warm = trial
+        normal = np.array([math.cos(alpha), math.sin(alpha)])
+        contact = float(r @ normal)  # the unbalanced force pressing outwards = P_c
+        if contact < 0.0:
+            return None
+        return _Step(self.radius * normal[0], self.radius * normal[1], float(v[0]),
+                     float(v[1]), warm, contact, True, abs(rt) / size,
+                     abs(rt) <= ACCEPTED_RESIDUAL * size)
+
+    def step(self, start: _Start, load, speeds, dt, contact: bool) -> _Step | None:
+        """One step from ``start``; contact tried first when on the circle."""
+        attempts = (self.on_circle, self.free) if contact else (self.free, self.on_circle)
+        for attempt in attempts:
+            result = attempt(start, load, speeds, dt)
+            if result is not None:
+                return result
+        return None
+
+
+def content_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
+                  output_step_deg: float, *, with_mass: bool) -> CycleTrajectory:
+    """One cycle from ``state`` by implicit steps of ``step_deg`` [deg] (BDF2 after a first
+    backward Euler step); massless (``with_mass`` False) or with the problem's masses."""
+    from conrod.orbit.rk2 import _step_grid
+
+    phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
+    balance = _Balance(problem, with_mass)
+    memory = state.film_memory if state.film_memory is not None else problem.film.initial_memory()
+    start = _Start(state.x, state.y, state.vx, state.vy, memory)
+    contact = state.in_contact or math.hypot(state.x, state.y) >= balance.radius
+    table = np.zeros((n_out, 7))
+    memories: list[Any] = [None] * n_out
+    last_force = _start_contact_force(problem, state, memory) if contact else 0.0
+    steps = 0
+    for k in range(len(phi) - 1):
+        if k % record_every == 0:
+            row = k // record_every
+            table[row] = (start.x, start.y, start.vx, start.vy, last_force,
+                          problem.dry_friction * last_force, float(contact))
+            memories[row] = start.memory
+        done, taken, smooth = _advance(balance, problem, phi[k], phi[k + 1], start, contact)
+        steps += taken
+        before = _Start(start.x, start.y, start.vx, start.vy, start.memory)
+        # BDF2 needs two equal steps on the same side of a contact event
+        keep = smooth and done.in_contact == contact
+        start = _Start(done.x, done.y, done.vx, done.vy, done.memory, before if keep else None)
+        contact, last_force = done.in_contact, done.contact_force
+    end = OrbitState(start.x, start.y, start.vx, start.vy, contact, start.memory)
+    traj = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, steps)
+    traj.film_memory = memories
+    return traj
+
+
+def _advance(balance: _Balance, problem: OrbitProblem, phi0: float, phi1: float,
+             start: _Start, contact: bool, depth: int = 0) -> tuple[_Step, int, bool]:
+    """Step φ0 → φ1, split in halves (backward Euler) where it does not converge;
+    (step, steps taken, True when taken in one piece)."""
+    dt = (phi1 - phi0) / problem.crank_speed
+    load = problem.loads.load(np.array([phi1]))
+    speeds = problem.loads.speeds(np.array([phi1]))
+    result = balance.step(start, (float(load[0][0]), float(load[1][0])),
+                          (float(speeds[0][0]), float(speeds[1][0])), dt, contact)
+    if result is not None and result.converged:
+        return result, 1, True
+    if depth >= MAX_HALVINGS:
+        raise _failure(problem, phi1, result, load)
+    middle = 0.5 * (phi0 + phi1)
+    first = _Start(start.x, start.y, start.vx, start.vy, start.memory)
+    half, count, _ = _advance(balance, problem, phi0, middle, first, contact, depth + 1)
+    second = _Start(half.x, half.y, half.vx, half.vy, half.memory)
+    end, more, _ = _advance(balance, problem, middle, phi1, second, half.in_contact, depth + 1)
+    return end, count + more, False
+
+
+def _failure(problem: OrbitProblem, phi: float, result: _Step | None, load) -> ConvergenceError:
+    """What stopped the orbit, where, by how much, and what to change."""
+    size = math.hypot(float(load[0][0]), float(load[1][0])) + 1.0
+    residual = result.residual * size if result is not None else float("nan")
+    return ConvergenceError(
+        f"film-content orbit step did not balance the load after {MAX_HALVINGS} halvings "
+        f"(force residual {residual:.3g} N of a {size - 1.0:.3g} N load); refine "
+        "solver.n_theta/n_z, reduce solver.quasi_static_step_deg, or check that the oil "
+        "feed (bearing.supply_pressure, grooves) can fill the film under this load",
+        where=f"crank angle {math.degrees(phi):.2f} deg", residual=residual)
+
+
+def _start_contact_force(problem: OrbitProblem, state: OrbitState, memory) -> float:
+    """P_c = max((W + F)·n̂, 0) at the start of a cycle on the contact circle [N]."""
+    wx, wy = (float(a[0]) for a in problem.loads.load(np.array([0.0])))
+    wj, wb = (float(a[0]) for a in problem.loads.speeds(np.array([0.0])))
+    try:
+        result, _ = problem.film.solve_with_memory(
+            FilmState(state.x, state.y, state.vx, state.vy, wj, wb, problem.viscosity), memory)
+    except (CaseError, ConvergenceError):
+        return 0.0
+    e = math.hypot(state.x, state.y)
+    return max(((wx + result.force_x) * state.x + (wy + result.force_y) * state.y) / e, 0.0)
