@@ -121,16 +121,12 @@ class _Balance:
         r = np.array([load[0] + fx, load[1] + fy]) - self.mass * start.acceleration(v, dt)
         return r, after
 
-    def inside(self, start: _Start, v, dt) -> bool:
-        return math.hypot(*start.position(v, dt)) <= self.radius
-
     def free(self, start: _Start, load, speeds, dt) -> _Step | None:
         """Levenberg–Marquardt on the velocity off the circle (the film force can be nearly
         insensitive to one direction of the velocity where little film is left, so plain
-        Newton steps explode); None when the centre is pushed onto the circle."""
-        v = np.array([start.vx, start.vy])
-        if not self.inside(start, v, dt):
-            v = start.velocity(start.x, start.y, dt)
+        Newton steps explode), trial end positions projected onto the contact circle;
+        None when the centre is pushed onto the circle."""
+        v, _ = self._admissible(start, np.array([start.vx, start.vy]), dt)
         size = math.hypot(*load) + 1.0
         r, warm = self.residual(start, v, load, speeds, dt, None)
         norm, damping, blocked = float(np.hypot(*r)), 1e-9, False
@@ -142,14 +138,12 @@ class _Balance:
             level = float(np.max(np.diag(normal))) or 1.0
             for _ in range(16):
                 step = -np.linalg.solve(normal + damping * level * np.eye(2), gradient)
-                trial = v + self.scale * step
-                blocked = not self.inside(start, trial, dt)
-                if not blocked:
-                    r_trial, w_trial = self.residual(start, trial, load, speeds, dt, warm)
-                    if np.hypot(*r_trial) < norm:
-                        v, r, warm = trial, r_trial, w_trial
-                        norm, damping = float(np.hypot(*r_trial)), max(damping / 10.0, 1e-15)
-                        break
+                trial, blocked = self._admissible(start, v + self.scale * step, dt)
+                r_trial, w_trial = self.residual(start, trial, load, speeds, dt, warm)
+                if np.hypot(*r_trial) < norm:
+                    v, r, warm = trial, r_trial, w_trial
+                    norm, damping = float(np.hypot(*r_trial)), max(damping / 10.0, 1e-15)
+                    break
                 damping *= 10.0
             else:
                 break  # no decrease even with tiny steps: not converged
@@ -158,6 +152,15 @@ class _Balance:
         x1, y1 = start.position(v, dt)
         return _Step(x1, y1, float(v[0]), float(v[1]), warm, 0.0, False, norm / size,
                      norm <= ACCEPTED_RESIDUAL * size)
+
+    def _admissible(self, start: _Start, v, dt):
+        """(v, True) moved so that the end position lies on the contact circle when it would
+        leave it (radial projection), else (v, False)."""
+        x1, y1 = start.position(v, dt)
+        e = math.hypot(x1, y1)
+        if e <= self.radius:
+            return v, False
+        return start.velocity(x1 * self.radius / e, y1 * self.radius / e, dt), True
 
     def _near_circle(self, start: _Start, v, dt) -> bool:
         return math.hypot(*start.position(v, dt)) > self.radius - 1e-3 * self.problem.clearance
@@ -263,7 +266,7 @@ def _advance(balance: _Balance, problem: OrbitProblem, phi0: float, phi1: float,
     if result is not None and result.converged:
         return result, 1, True
     if depth >= MAX_HALVINGS:
-        raise _failure(problem, phi1, result, load)
+        raise _failure(problem, phi1, result, load, bool(np.any(balance.mass > 0.0)))
     middle = 0.5 * (phi0 + phi1)
     first = _Start(start.x, start.y, start.vx, start.vy, start.memory)
     half, count, _ = _advance(balance, problem, phi0, middle, first, contact, depth + 1)
@@ -272,15 +275,22 @@ def _advance(balance: _Balance, problem: OrbitProblem, phi0: float, phi1: float,
     return end, count + more, False
 
 
-def _failure(problem: OrbitProblem, phi: float, result: _Step | None, load) -> ConvergenceError:
+def _failure(problem: OrbitProblem, phi: float, result: _Step | None, load,
+             with_mass: bool) -> ConvergenceError:
     """What stopped the orbit, where, by how much, and what to change."""
     size = math.hypot(float(load[0][0]), float(load[1][0])) + 1.0
     residual = result.residual * size if result is not None else float("nan")
+    if with_mass:
+        advice = ("refine solver.n_theta/n_z, reduce solver.max_step_deg, or check that the "
+                  "oil feed (bearing.supply_pressure, grooves) can fill the film under this "
+                  "load")
+    else:
+        advice = ("without mass the journal would have to jump: the film left between the "
+                  "ruptured regions cannot turn its force with the load; run the orbit with "
+                  "mass (solver.integrator = 'auto' or 'implicit')")
     return ConvergenceError(
-        f"film-content orbit step did not balance the load after {MAX_HALVINGS} halvings "
-        f"(force residual {residual:.3g} N of a {size - 1.0:.3g} N load); refine "
-        "solver.n_theta/n_z, reduce solver.quasi_static_step_deg, or check that the oil "
-        "feed (bearing.supply_pressure, grooves) can fill the film under this load",
+        f"mass-conserving orbit step did not balance the load after {MAX_HALVINGS} halvings "
+        f"(force residual {residual:.3g} N of a {size - 1.0:.3g} N load); {advice}",
         where=f"crank angle {math.degrees(phi):.2f} deg", residual=residual)
 
 
