@@ -1,0 +1,76 @@
+"""Property test: on random plausible fed bearings every grid film (Reynolds and
+mass-conserving, massless and with mass) reaches a periodic orbit or stops with a message
+naming the cause, within a step count tied to the case."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from conrod.cases.solver import SolverSection
+from conrod.errors import CaseError, ConvergenceError
+from conrod.film.base import BearingGeometry, Groove
+from conrod.film.mass_conserving import MassConservingFilm
+from conrod.film.reynolds import ReynoldsFilm
+from conrod.loads.cycle import LoadCycle
+from conrod.orbit import OrbitProblem
+from conrod.orbit.periodic import periodic_orbit
+
+STEP_DEG = 2.0
+"""Quasi-static step and largest step with mass [deg]."""
+
+bearings = st.fixed_dictionaries({
+    "bore": st.floats(0.06, 0.15),
+    "width_ratio": st.floats(0.3, 0.6),
+    "rpm": st.floats(600.0, 4000.0),
+    "clearance": st.floats(10e-6, 60e-6),
+    "supply": st.floats(0.1e6, 0.5e6),
+    "unit_load": st.floats(5e6, 40e6),
+    "film": st.sampled_from(["reynolds", "mass_conserving"]),
+    "integrator": st.sampled_from(["quasi_static", "auto"]),
+})
+
+
+def _problem(b) -> OrbitProblem:
+    """Four-stroke big-end-like load: firing pulse on a rotating inertia load."""
+    width = b["width_ratio"] * b["bore"]
+    geometry = BearingGeometry(b["bore"], width, b["clearance"],
+                               grooves=(Groove(width=0.1 * width),), supply_pressure=b["supply"])
+    model = ReynoldsFilm if b["film"] == "reynolds" else MassConservingFilm
+    omega = b["rpm"] * math.pi / 30.0
+    phi = np.linspace(0.0, 4 * math.pi, 144, endpoint=False)
+    peak = b["unit_load"] * b["bore"] * width
+    firing = np.exp(-(((phi + math.pi) % (4 * math.pi) - math.pi) / 0.3) ** 2)
+    loads = LoadCycle(phi, peak * firing - 0.3 * peak * np.cos(phi),
+                      -0.12 * peak * np.sin(phi), np.full(144, omega), np.zeros(144), omega,
+                      4 * math.pi)
+    return OrbitProblem(model(geometry, n_theta=36, n_z=8, tolerance=1e-10), loads, 0.01,
+                        1.0, 1.0, 0.1, 0.05 * b["clearance"])
+
+
+@pytest.mark.slow
+@settings(max_examples=5, deadline=None, derandomize=True,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(bearings)
+def test_fed_bearing_orbit_is_periodic_or_names_the_cause(b):
+    problem = _problem(b)
+    solver = SolverSection(integrator=b["integrator"], quasi_static_step_deg=STEP_DEG,
+                           max_step_deg=1.0, output_step_deg=STEP_DEG, max_cycles=4,
+                           massless_start=False)
+    try:
+        result = periodic_orbit(problem, solver)
+    except (ConvergenceError, CaseError) as error:
+        assert "crank angle" in str(error)
+        return
+    last = result.last
+    assert np.all(np.isfinite(last.x)) and np.all(np.isfinite(last.y))
+    assert np.max(np.hypot(last.x, last.y)) <= problem.contact_radius * (1 + 1e-9)
+    # bound tied to the case: steps per cycle at most twice the nominal count of the step
+    # (halved steps of the film-content orbit, error-controlled steps of TR-BDF2)
+    nominal = 720.0 / min(STEP_DEG, solver.max_step_deg)
+    assert last.steps <= 2 * 2 * nominal  # 2 per Heun step of the quasi-static loop
+    assert result.cycles <= solver.max_cycles
