@@ -74,3 +74,26 @@ def test_fed_bearing_orbit_is_periodic_or_names_the_cause(b):
     nominal = 720.0 / min(STEP_DEG, solver.max_step_deg)
     assert last.steps <= 2 * 2 * nominal  # 2 per Heun step of the quasi-static loop
     assert result.cycles <= solver.max_cycles
+
+
+@pytest.mark.parametrize("film", ["mobility", "table"])
+def test_tabulated_films_refuse_a_supply_pressure_naming_the_film_asked(film, tmp_path):
+    """The maps are computed once and scaled with speed (Booker's reduction); a supply
+    pressure adds a part that does not scale, so a fed groove is refused with a message
+    naming the film that was asked for and the films that take it."""
+    from conrod.film.mobility import MobilityFilm
+    from conrod.film.table import TabulatedFilm
+
+    geometry = BearingGeometry(0.05, 0.02, 25e-6, supply_pressure=3e5,
+                               grooves=(Groove(width=0.002),))
+    with pytest.raises(CaseError) as error:
+        if film == "mobility":
+            MobilityFilm(geometry, cache_dir=tmp_path)
+        else:
+            TabulatedFilm(ReynoldsFilm(geometry), cache_dir=tmp_path)
+    message = str(error.value)
+    assert f"film {film!r}" in message
+    assert "supply_pressure = 300000.0 Pa" in message and "scaled with speed" in message
+    assert "'reynolds' or 'mass_conserving'" in message
+    other = "table" if film == "mobility" else "mobility"
+    assert repr(other) not in message

@@ -31,8 +31,9 @@ class SolverSection(Section):
     film: FilmName = Field(default="short", description="Film model [-]")
     integrator: IntegratorName = Field(
         default="auto",
-        description="auto (per film: implicit, or quasi_static for the mass-conserving "
-        "film), implicit (TR-BDF2, error-controlled, compiled with the film force), "
+        description="auto (implicit: the orbit with mass), implicit (TR-BDF2, "
+        "error-controlled, compiled with the film force; implicit steps of the film content "
+        "for the mass-conserving film), "
         "adaptive (SciPy Radau/BDF/LSODA), rk2 ([D0] fixed step) or quasi_static "
         "(massless mobility) [-]",
 )
