@@ -43,6 +43,9 @@ ACCEPTED_RESIDUAL = 1.0e-5
 """Largest relative residual accepted when the iteration limit is reached [-]."""
 MAX_HALVINGS = 6
 """Most halvings of a step that does not converge [-]."""
+SUBSTEP_BUDGET = 4
+"""Most steps per cycle, halved ones included, as a multiple of the nominal count: a cycle
+that needs more stops instead of grinding on [-]."""
 
 
 @dataclass
@@ -243,6 +246,12 @@ def content_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
             memories[row] = start.memory
         done, taken, smooth = _advance(balance, problem, phi[k], phi[k + 1], start, contact)
         steps += taken
+        if steps > SUBSTEP_BUDGET * (len(phi) - 1):
+            raise ConvergenceError(
+                f"mass-conserving orbit: more than {SUBSTEP_BUDGET}× the nominal "
+                f"{len(phi) - 1} steps per cycle (steps halved over and over); reduce the "
+                "step or refine solver.n_theta/n_z",
+                where=f"crank angle {math.degrees(phi[k + 1]):.2f} deg")
         before = _Start(start.x, start.y, start.vx, start.vy, start.memory)
         # BDF2 needs two equal steps on the same side of a contact event
         keep = smooth and done.in_contact == contact
