@@ -75,6 +75,8 @@ class _Problem:
     fixed_values: np.ndarray
     cavitation: float = 0.0
     """Cavitation bound of the solved variable (reduced pressure when piezoviscous) [Pa]."""
+    coefficients: tuple | None = None
+    """(a_E, a_N, b) of the last solve on this level (reused by the characteristics)."""
 
     def coarsened(self) -> _Problem:
         """The same problem on every other node (coinciding nodes, exact subsampling)."""
@@ -301,6 +303,7 @@ class ReynoldsFilm:
             level.h, level.h_rate, g.radius, g.d_theta, g.d_z,
             state.journal_speed + state.shell_speed, state.viscosity,
 )
+        level.coefficients = (a_east, a_north, source)
         pressure[level.fixed] = level.fixed_values[level.fixed]
         if self.method == "multigrid":
             cycles, change = multigrid.solve_on_grid(
@@ -354,7 +357,7 @@ class ReynoldsFilm:
         grid, h = self.film_grid, problem.h
         p_cav = problem.cavitation
         omega_sum = state.journal_speed + state.shell_speed
-        a_east, a_north, source = kernel.assemble_coefficients(
+        a_east, a_north, source = problem.coefficients or kernel.assemble_coefficients(
             h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
         )
         inflow = kernel.node_imbalance(reduced, a_east, a_north, source) / (12.0 * state.viscosity)

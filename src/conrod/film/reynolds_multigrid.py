@@ -22,8 +22,12 @@ What limits the finer grids is the rupture line: with cavitation the V-cycle con
 ~0.45 per cycle on 288×64 and ~0.8 on 576×128 (a full film: 0.22 on every grid), because
 the sampled coarse masks misplace the free boundary by up to one coarse cell.
 
-Cycles stop when the largest change of one cycle is ≤ tolerance·max|p|. Everything
-runs in one compiled call, lexicographic order, deterministic.
+Cycles stop when the largest change of one cycle is ≤ tolerance·max|p|, or earlier when
+two successive cycles contracted the change by ρ < ``ESTIMATE_RATE`` and the remaining
+error of a geometric sequence, change·ρ/(1 − ρ), is ≤ tolerance·max|p| (warm 72×16 and
+144×32 at 1e-12: 11 → 10 cycles). The coarse cycle works in arrays allocated once per
+solve (5–9 % faster than allocating per level visit). Everything runs in one compiled
+call, lexicographic order, deterministic.
 
 [1] A. Brandt, C.W. Cryer, "Multigrid algorithms for the solution of linear
     complementarity problems arising from free boundary problems", SIAM J. Sci. Stat.
@@ -47,11 +51,15 @@ from conrod.film.multigrid_operators import (
 )
 
 __all__ = ["add_prolongated", "coarse_levels", "coarsen", "coarsest_relaxation", "conductances",
-           "multigrid_solve", "relax", "residual", "restrict", "solve_on_grid", "stencil"]
+           "level_arrays", "multigrid_solve", "relax", "residual", "restrict", "solve_on_grid",
+           "stencil"]
 
 PRE_SWEEPS = 2
 POST_SWEEPS = 1
 COARSEST_SWEEPS = 8
+ESTIMATE_RATE = 0.5
+"""Contraction per cycle below which (in two successive cycles) the remaining error is
+estimated as change·ρ/(1 − ρ) and the cycles stop once that is ≤ tolerance [-]."""
 W_CYCLE_LEVELS = 4
 """Coarse-level count from which the correction is a W-cycle (V below): on 288×64 a
 V-cycle's convergence degrades to ~0.45 per cycle near the rupture line, a W-cycle keeps
@@ -59,13 +67,13 @@ V-cycle's convergence degrades to ~0.45 per cycle near the rupture line, a W-cyc
 
 
 @nb.njit(cache=True)
-def _descend(k, errors, sources, stencils, masks, symmetric):
-    """Pre-smooth the correction on coarse level k and restrict its residual to k + 1."""
+def _descend(k, errors, sources, work, stencils, masks, symmetric):
+    """Pre-smooth the correction on coarse level k and restrict its residual to k + 1
+    (``sources`` hold normalised sources b/a_P, ``work`` the residuals; no allocation)."""
     w_e, w_w, w_n, w_s, a_p = stencils[k]
-    s = sources[k] / a_p
-    relax(errors[k], w_e, w_w, w_n, w_s, s, 1.0, -np.inf, PRE_SWEEPS)
-    r = residual(errors[k], w_e, w_w, w_n, w_s, s, a_p, masks[k])
-    sources[k + 1] = restrict(r, masks[k + 1], symmetric)
+    relax(errors[k], w_e, w_w, w_n, w_s, sources[k], 1.0, -np.inf, PRE_SWEEPS)
+    residual(errors[k], w_e, w_w, w_n, w_s, sources[k], a_p, masks[k], work[k])
+    restrict(work[k], masks[k + 1], symmetric, stencils[k + 1][4], sources[k + 1])
     errors[k + 1][:] = 0.0
 
 
@@ -73,8 +81,8 @@ def _descend(k, errors, sources, stencils, masks, symmetric):
 def _ascend(k, errors, sources, stencils, masks):
     """Add the prolongated correction of level k + 1 to level k and post-smooth."""
     add_prolongated(errors[k + 1], errors[k], masks[k])
-    w_e, w_w, w_n, w_s, a_p = stencils[k]
-    relax(errors[k], w_e, w_w, w_n, w_s, sources[k] / a_p, 1.0, -np.inf, POST_SWEEPS)
+    w_e, w_w, w_n, w_s, _ = stencils[k]
+    relax(errors[k], w_e, w_w, w_n, w_s, sources[k], 1.0, -np.inf, POST_SWEEPS)
 
 
 @nb.njit(cache=True)
@@ -147,17 +155,26 @@ def coarse_operators(mask_fine, coarse_east, coarse_north, symmetric):
 
 
 @nb.njit(cache=True)
-def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, coarse_cycles):
+def level_arrays(coarse_east):
+    """Zeroed work arrays of the coarse levels: corrections, normalised sources and
+    residuals (allocated once per solve, reused by every :func:`correction`)."""
+    errors = [np.zeros(a.shape) for a in coarse_east]
+    sources = [np.zeros(a.shape) for a in coarse_east]
+    work = [np.zeros(a.shape) for a in coarse_east]
+    return errors, sources, work
+
+
+@nb.njit(cache=True)
+def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, coarse_cycles,
+               errors, sources, work):
     """Linear cycle for A e = rhs on the coarse levels (lists, fine → coarse; masks and
-    stencils of :func:`coarse_operators`): ``coarse_cycles`` visits of every level per
-    visit of its parent (1: V-cycle, 2: W-cycle; non-recursive, with visit counters);
-    returns the correction on the first coarse level."""
+    stencils of :func:`coarse_operators`, work arrays of :func:`level_arrays`):
+    ``coarse_cycles`` visits of every level per visit of its parent (1: V-cycle, 2:
+    W-cycle; non-recursive, with visit counters); returns the correction on the first
+    coarse level."""
     levels = len(coarse_east)
-    sources = [restrict(rhs_fine, masks[0], symmetric)]
-    errors = [np.zeros(masks[0].shape)]
-    for k in range(1, levels):
-        sources.append(np.zeros(masks[k].shape))
-        errors.append(np.zeros(masks[k].shape))
+    restrict(rhs_fine, masks[0], symmetric, stencils[0][4], sources[0])
+    errors[0][:] = 0.0
     last = levels - 1
     w_e, w_w, w_n, w_s, a_p = stencils[last]
     omega = coarsest_relaxation(coarse_east[last], coarse_north[last])
@@ -165,9 +182,9 @@ def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, 
     k = 0
     while True:
         while k < last:
-            _descend(k, errors, sources, stencils, masks, symmetric)
+            _descend(k, errors, sources, work, stencils, masks, symmetric)
             k += 1
-        relax(errors[last], w_e, w_w, w_n, w_s, sources[last] / a_p, omega, -np.inf,
+        relax(errors[last], w_e, w_w, w_n, w_s, sources[last], omega, -np.inf,
               COARSEST_SWEEPS)
         if last == 0:
             return errors[0]
@@ -180,7 +197,7 @@ def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, 
             visits[k] = 0
             if k == 0:
                 return errors[0]
-        _descend(k, errors, sources, stencils, masks, symmetric)
+        _descend(k, errors, sources, work, stencils, masks, symmetric)
         k += 1
 
 
@@ -226,6 +243,8 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
     mask = np.ones(p.shape, dtype=np.bool_)
     coarse_cycles = 2 if n_coarse >= W_CYCLE_LEVELS else 1
     masks, stencils = coarse_operators(mask, coarse_east, coarse_north, symmetric)
+    errors, sources, work = level_arrays(coarse_east)
+    last_change, last_rate = np.inf, 1.0
     for cycle in range(1, max_cycles + 1):
         relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS)
         if n_coarse > 0:
@@ -234,11 +253,18 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
             if moved or cycle == 1:
                 masks, stencils = coarse_operators(mask, coarse_east, coarse_north, symmetric)
             add_projected(correction(flux_residual, masks, stencils, coarse_east, coarse_north,
-                                     symmetric, coarse_cycles), p, mask, cavitation_pressure)
+                                     symmetric, coarse_cycles, errors, sources, work),
+                          p, mask, cavitation_pressure)
         relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS)
         change = cycle_change(p, previous)
         if change <= tolerance:
             return cycle, change
+        rate = change / last_change
+        if rate < ESTIMATE_RATE and last_rate < ESTIMATE_RATE:
+            remaining = change * rate / (1.0 - rate)
+            if remaining <= tolerance:
+                return cycle, remaining
+        last_change, last_rate = change, rate
     return max_cycles, change
 
 
