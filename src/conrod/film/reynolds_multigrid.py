@@ -86,28 +86,74 @@ def _ascend(k, errors, sources, stencils, masks):
 
 
 @nb.njit(cache=True)
-def masked_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure, mask, out):
-    """In one pass: mask := fixed | (p ≤ p_cav) and the flux residual of :func:`residual`
-    on the unmasked nodes (0 elsewhere). Returns True when any mask entry changed (the
-    coarse operators are rebuilt only then — along a warm-started orbit the set rarely
-    moves)."""
+def _row_residual(p, i, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure, mask, out):
+    """Row i: mask := fixed | (p ≤ p_cav) and the flux residual of :func:`residual` on
+    the unmasked nodes (0 elsewhere); returns True when a mask entry of the row changed."""
     changed = False
     n, m = p.shape
-    for i in range(n):
-        ip = i + 1 if i + 1 < n else 0
-        im = i - 1 if i > 0 else n - 1
-        for j in range(m):
-            value = fixed[i, j] or p[i, j] <= cavitation_pressure
-            if value != mask[i, j]:
-                mask[i, j] = value
-                changed = True
-            if value or j == 0 or j == m - 1:
-                out[i, j] = 0.0
-                continue
-            target = (w_e[i, j] * p[ip, j] + w_w[i, j] * p[im, j]
-                      + w_n[i, j] * p[i, j + 1] + w_s[i, j] * p[i, j - 1])
-            out[i, j] = a_p[i, j] * (target + s[i, j] - p[i, j])
+    ip = i + 1 if i + 1 < n else 0
+    im = i - 1 if i > 0 else n - 1
+    for j in range(m):
+        value = fixed[i, j] or p[i, j] <= cavitation_pressure
+        if value != mask[i, j]:
+            mask[i, j] = value
+            changed = True
+        if value or j == 0 or j == m - 1:
+            out[i, j] = 0.0
+            continue
+        target = (w_e[i, j] * p[ip, j] + w_w[i, j] * p[im, j]
+                  + w_n[i, j] * p[i, j + 1] + w_s[i, j] * p[i, j - 1])
+        out[i, j] = a_p[i, j] * (target + s[i, j] - p[i, j])
     return changed
+
+
+@nb.njit(cache=True)
+def _relax_row(p, i, w_e, w_w, w_n, w_s, s, floor):
+    """One projected Gauss–Seidel update of row i (as :func:`relax` with ω = 1)."""
+    n, m = p.shape
+    row, up, down = p[i], p[i + 1 if i + 1 < n else 0], p[i - 1 if i > 0 else n - 1]
+    we, ww, wn, ws, si = w_e[i], w_w[i], w_n[i], w_s[i], s[i]
+    for j in range(1, m - 1):
+        new = we[j] * up[j] + ww[j] * down[j] + wn[j] * row[j + 1] + ws[j] * row[j - 1] + si[j]
+        row[j] = new if new > floor else floor
+
+
+@nb.njit(cache=True)
+def relax_with_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure, mask,
+                        out):
+    """One projected sweep and, one row behind it, the mask fixed | (p ≤ p_cav) and the
+    flux residual on the unmasked nodes (:func:`_row_residual`) — in one pass over the
+    grid. Returns True when any mask entry changed (the coarse operators are rebuilt only
+    then — along a warm-started orbit the set rarely moves)."""
+    n = p.shape[0]
+    changed = False
+    for i in range(n):
+        _relax_row(p, i, w_e, w_w, w_n, w_s, s, cavitation_pressure)
+        if i >= 2:  # rows i − 2, i − 1, i are final: the residual of row i − 1 is
+            changed |= _row_residual(p, i - 1, w_e, w_w, w_n, w_s, s, a_p, fixed,
+                                     cavitation_pressure, mask, out)
+    for i in (n - 1, 0):  # their θ neighbours (periodic) were updated last
+        changed |= _row_residual(p, i, w_e, w_w, w_n, w_s, s, a_p, fixed,
+                                 cavitation_pressure, mask, out)
+    return changed
+
+
+@nb.njit(cache=True)
+def relax_with_change(p, w_e, w_w, w_n, w_s, s, floor, previous):
+    """One projected sweep that also returns max|p − previous| / max|p| [-] (0 when
+    p ≡ 0) against ``previous`` (the field at the start of the cycle) and sets
+    previous := p, in one pass."""
+    n, m = p.shape
+    largest_change = 0.0
+    largest_value = 0.0
+    for i in range(n):
+        _relax_row(p, i, w_e, w_w, w_n, w_s, s, floor)
+        for j in range(m):
+            value = p[i, j]
+            largest_change = max(largest_change, abs(value - previous[i, j]))
+            largest_value = max(largest_value, abs(value))
+            previous[i, j] = value
+    return largest_change / largest_value if largest_value > 0.0 else 0.0
 
 
 @nb.njit(cache=True)
@@ -126,20 +172,6 @@ def add_projected(coarse, fine, fine_mask, floor):
             value = fine[i, j] + 0.25 * (coarse[i0, j0] + coarse[i1, j0] + coarse[i0, j1]
                                          + coarse[i1, j1])
             fine[i, j] = value if value > floor else floor
-
-
-@nb.njit(cache=True)
-def cycle_change(p, previous):
-    """max|p − previous| / max|p| [-] (0 when p ≡ 0), then previous := p, in one pass."""
-    largest_change = 0.0
-    largest_value = 0.0
-    n, m = p.shape
-    for i in range(n):
-        for j in range(m):
-            largest_change = max(largest_change, abs(p[i, j] - previous[i, j]))
-            largest_value = max(largest_value, abs(p[i, j]))
-            previous[i, j] = p[i, j]
-    return largest_change / largest_value if largest_value > 0.0 else 0.0
 
 
 @nb.njit(cache=True)
@@ -246,17 +278,19 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
     errors, sources, work = level_arrays(coarse_east)
     last_change, last_rate = np.inf, 1.0
     for cycle in range(1, max_cycles + 1):
-        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS)
+        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS - 1)
         if n_coarse > 0:
-            moved = masked_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure,
-                                    mask, flux_residual)
+            moved = relax_with_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed,
+                                        cavitation_pressure, mask, flux_residual)
             if moved or cycle == 1:
                 masks, stencils = coarse_operators(mask, coarse_east, coarse_north, symmetric)
             add_projected(correction(flux_residual, masks, stencils, coarse_east, coarse_north,
                                      symmetric, coarse_cycles, errors, sources, work),
                           p, mask, cavitation_pressure)
-        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS)
-        change = cycle_change(p, previous)
+        else:
+            relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, 1)
+        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS - 1)
+        change = relax_with_change(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, previous)
         if change <= tolerance:
             return cycle, change
         rate = change / last_change
