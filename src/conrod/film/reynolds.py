@@ -360,13 +360,9 @@ class ReynoldsFilm:
         a_east, a_north, source = problem.coefficients or kernel.assemble_coefficients(
             h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
         )
-        inflow = kernel.node_imbalance(reduced, a_east, a_north, source) / (12.0 * state.viscosity)
-        free = ~problem.fixed
-        cavitated = free & (reduced <= p_cav)
-        leaking = self._edges.copy()
-        leaking[:, 0] &= ~cavitated[:, 1]
-        leaking[:, -1] &= ~cavitated[:, -2]
-        lost = cavitated | (self._edges & ~leaking)
+        lost, leaking, supply, cavitated_width = kernel.flow_balance(
+            reduced, a_east, a_north, source, problem.fixed, p_cav, grid.axial_weights)
+        to_flow = 1.0 / (12.0 * state.viscosity)
         fraction = None
         if self.friction == "film_fraction":
             direction = 1 if omega_sum >= 0.0 else -1
@@ -381,18 +377,17 @@ class ReynoldsFilm:
         h_min, h_angle = chars.minimum_film(h, grid)
         p_max, p_angle = chars.peak_pressure(pressure, grid)
         info = dict(info)
-        info["cavitation_flow_m3_per_s"] = float(inflow[lost].sum())
+        info["cavitation_flow_m3_per_s"] = lost * to_flow
         info["friction_full_film"] = float(self.friction == "full_film")
         if law is not None:
             info.update(law.diagnostics(reduced, pressure, state.viscosity))
         return FilmResult(
             force_x=fx, force_y=fy,
             friction_torque_journal=torque_j, friction_torque_shell=torque_b,
-            side_flow=-float(inflow[leaking].sum()),
-            supply_flow=float(inflow[problem.fixed & ~self._edges].sum()),
+            side_flow=-leaking * to_flow, supply_flow=supply * to_flow,
             min_film_thickness=h_min, min_film_angle=h_angle,
             max_pressure=p_max, max_pressure_angle=p_angle,
-            cavitated_fraction=chars.cavitated_fraction(reduced, free, p_cav, grid),
+            cavitated_fraction=cavitated_width * grid.d_theta / (2.0 * math.pi * grid.width),
             friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
             extra=info,
 )
