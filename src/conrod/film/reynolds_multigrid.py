@@ -250,7 +250,8 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
     h : film thickness [m]; source : b of the flux balance [Pa m^4]; fixed : Dirichlet
     nodes (edge rows included) holding their current value; symmetric : arrays hold
     z ≤ 0 of a z-symmetric problem, the mid-plane row before a padding row (masked).
-    Returns (cycles, last relative change [-]).
+    Returns (cycles, relative error measure [-]: the last cycle's change, or the geometric
+    estimate of the remaining error when that stopped the cycles).
     """
     a_east, a_north = conductances(h, radius, d_theta, d_z)
     w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, fixed, symmetric)
