@@ -28,6 +28,7 @@ import math
 from dataclasses import dataclass
 from functools import cached_property
 
+import numba as nb
 import numpy as np
 
 
@@ -110,20 +111,51 @@ def theta_derivative(field: np.ndarray, grid: FilmGrid) -> np.ndarray:
 
 def friction_torques(
     pressure: np.ndarray, h: np.ndarray, grid: FilmGrid, journal_speed: float,
-    shell_speed: float, viscosity: float, film_fraction: np.ndarray | None = None,
+    shell_speed: float, viscosity: float | np.ndarray, film_fraction: np.ndarray | None = None,
 ) -> tuple[float, float]:
     """Shear moments of the film on the journal and on the shell [N m].
 
     M_j = R ∫∫ τ_j dA, M_b = R ∫∫ τ_b dA (module docstring); ``film_fraction`` None
-    means the full-film (Raimondi–Boyd) convention.
+    means the full-film (Raimondi–Boyd) convention; ``viscosity`` [Pa s] a number or a
+    field of the grid's shape (pressure-dependent viscosity).
     """
     sliding = grid.radius * (journal_speed - shell_speed)
+    if np.ndim(viscosity) == 0:  # compiled, one pass, no temporaries
+        fraction = np.ones((1, 1)) if film_fraction is None else film_fraction
+        couette_sum, poiseuille_sum = _shear_sums(pressure, h, fraction, grid.axial_weights,
+                                                  float(viscosity) * sliding, grid.d_theta)
+        scale = grid.radius * grid.d_theta
+        couette = grid.radius * scale * couette_sum
+        poiseuille = 0.5 * scale * poiseuille_sum
+        return -couette + poiseuille, couette + poiseuille
     couette_stress = viscosity * sliding / h
     if film_fraction is not None:
         couette_stress = couette_stress * film_fraction
     couette = grid.radius * grid.integrate(couette_stress)
     poiseuille = 0.5 * grid.integrate(pressure * theta_derivative(h, grid))
     return -couette + poiseuille, couette + poiseuille
+
+
+@nb.njit(cache=True)
+def _shear_sums(pressure, h, fraction, axial_weights, stress_numerator, d_theta):
+    """Σ w_j ϑ μΔU/h [N/m^2 · m] and Σ w_j p ∂h/∂θ [Pa m · m] over the nodes (ϑ ≡ 1 when
+    ``fraction`` is 1 × 1); the rectangle × trapezoid rule of :meth:`FilmGrid.integrate`
+    without the factor R Δθ."""
+    n, m = h.shape
+    full = fraction.shape[0] == 1
+    couette = 0.0
+    poiseuille = 0.0
+    for i in range(n):
+        ip = i + 1 if i + 1 < n else 0
+        im = i - 1 if i > 0 else n - 1
+        for j in range(m):
+            stress = stress_numerator / h[i, j]
+            if not full:
+                stress *= fraction[i, j]
+            couette += axial_weights[j] * stress
+            slope = (h[ip, j] - h[im, j]) / (2.0 * d_theta)
+            poiseuille += axial_weights[j] * pressure[i, j] * slope
+    return couette, poiseuille
 
 
 def peak_pressure(pressure: np.ndarray, grid: FilmGrid) -> tuple[float, float]:

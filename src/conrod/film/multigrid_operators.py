@@ -116,15 +116,20 @@ def residual(p, w_e, w_w, w_n, w_s, s, a_p, mask, out=None):
 
 
 @nb.njit(cache=True)
-def restrict(fine: np.ndarray, coarse_mask: np.ndarray, symmetric: bool) -> np.ndarray:
-    """Transpose of bilinear prolongation: weighted sums of fine balances (1, ½, ¼), on
-    the grid of ``coarse_mask``; a symmetric problem mirrors the row above the mid-plane."""
+def restrict(fine: np.ndarray, coarse_mask: np.ndarray, symmetric: bool,
+             a_p: np.ndarray, out: np.ndarray) -> None:
+    """out := (transpose of bilinear prolongation of ``fine``) / a_P — weighted sums of
+    fine balances (1, ½, ¼) on the grid of ``coarse_mask``, normalised by the coarse
+    diagonal a_P [m^4] (the source form of :func:`relax`), 0 on masked nodes and edges; a
+    symmetric problem mirrors the row above the mid-plane."""
     n, m = fine.shape
     nc, mc = coarse_mask.shape
-    out = np.zeros((nc, mc))
     for ic in range(nc):
+        out[ic, 0] = 0.0
+        out[ic, mc - 1] = 0.0
         for jc in range(1, mc - 1):
             if coarse_mask[ic, jc]:
+                out[ic, jc] = 0.0
                 continue
             total = 0.0
             for di in range(-1, 2):
@@ -134,8 +139,7 @@ def restrict(fine: np.ndarray, coarse_mask: np.ndarray, symmetric: bool) -> np.n
                     if symmetric and j == m - 1:
                         j = 2 * jc - 1
                     total += (1.0 - 0.5 * abs(di)) * (1.0 - 0.5 * abs(dj)) * fine[i, j]
-            out[ic, jc] = total
-    return out
+            out[ic, jc] = total / a_p[ic, jc]
 
 
 @nb.njit(cache=True)

@@ -75,6 +75,8 @@ class _Problem:
     fixed_values: np.ndarray
     cavitation: float = 0.0
     """Cavitation bound of the solved variable (reduced pressure when piezoviscous) [Pa]."""
+    coefficients: tuple | None = None
+    """(a_E, a_N, b) of the last solve on this level (reused by the characteristics)."""
 
     def coarsened(self) -> _Problem:
         """The same problem on every other node (coinciding nodes, exact subsampling)."""
@@ -93,10 +95,13 @@ class ReynoldsFilm:
     n_theta : int  Circumferential intervals (= nodes, periodic) [-].
     n_z : int  Axial intervals; the grid has n_z + 1 axial nodes including the edges [-].
     tolerance : float  Stop when max|Δp| ≤ tolerance·max|p| over one multigrid cycle
-        (one sweep for SOR) [-]. The tight default makes the force a smooth function of
-        the state to ~1e-12, which implicit integrators need for finite-difference
-        Jacobians (Radau on the Ruston & Hornsby case: 16 000 calls at 1e-12, > 450 000
-        at 1e-7, where the solver noise swamps the Jacobian perturbations).
+        (one sweep for SOR), or when two cycles contracted by ρ < 0.5 and the geometric
+        estimate of the remaining error, max|Δp|·ρ/(1 − ρ), is ≤ tolerance·max|p| [-].
+        The tight default makes the force a smooth function of the state to ~1e-12,
+        which implicit integrators need: Radau's finite-difference Jacobians (Ruston &
+        Hornsby: 16 000 calls at 1e-12, > 450 000 at 1e-7) and TR-BDF2's Newton
+        iterations with the analytic Jacobian (passenger car, 72×16: 9 400 solves per
+        cycle at 1e-12, 17 400 at 1e-10, no convergence at 1e-9).
     max_iterations : int  Cycle (SOR: sweep) limit per grid level; beyond it
         ConvergenceError [-].
     friction : 'full_film' (Raimondi–Boyd 360° Couette) or 'film_fraction'.
@@ -301,6 +306,7 @@ class ReynoldsFilm:
             level.h, level.h_rate, g.radius, g.d_theta, g.d_z,
             state.journal_speed + state.shell_speed, state.viscosity,
 )
+        level.coefficients = (a_east, a_north, source)
         pressure[level.fixed] = level.fixed_values[level.fixed]
         if self.method == "multigrid":
             cycles, change = multigrid.solve_on_grid(
@@ -354,16 +360,12 @@ class ReynoldsFilm:
         grid, h = self.film_grid, problem.h
         p_cav = problem.cavitation
         omega_sum = state.journal_speed + state.shell_speed
-        a_east, a_north, source = kernel.assemble_coefficients(
+        a_east, a_north, source = problem.coefficients or kernel.assemble_coefficients(
             h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
         )
-        inflow = kernel.node_imbalance(reduced, a_east, a_north, source) / (12.0 * state.viscosity)
-        free = ~problem.fixed
-        cavitated = free & (reduced <= p_cav)
-        leaking = self._edges.copy()
-        leaking[:, 0] &= ~cavitated[:, 1]
-        leaking[:, -1] &= ~cavitated[:, -2]
-        lost = cavitated | (self._edges & ~leaking)
+        lost, leaking, supply, cavitated_width = kernel.flow_balance(
+            reduced, a_east, a_north, source, problem.fixed, p_cav, grid.axial_weights)
+        to_flow = 1.0 / (12.0 * state.viscosity)
         fraction = None
         if self.friction == "film_fraction":
             direction = 1 if omega_sum >= 0.0 else -1
@@ -378,18 +380,17 @@ class ReynoldsFilm:
         h_min, h_angle = chars.minimum_film(h, grid)
         p_max, p_angle = chars.peak_pressure(pressure, grid)
         info = dict(info)
-        info["cavitation_flow_m3_per_s"] = float(inflow[lost].sum())
+        info["cavitation_flow_m3_per_s"] = lost * to_flow
         info["friction_full_film"] = float(self.friction == "full_film")
         if law is not None:
             info.update(law.diagnostics(reduced, pressure, state.viscosity))
         return FilmResult(
             force_x=fx, force_y=fy,
             friction_torque_journal=torque_j, friction_torque_shell=torque_b,
-            side_flow=-float(inflow[leaking].sum()),
-            supply_flow=float(inflow[problem.fixed & ~self._edges].sum()),
+            side_flow=-leaking * to_flow, supply_flow=supply * to_flow,
             min_film_thickness=h_min, min_film_angle=h_angle,
             max_pressure=p_max, max_pressure_angle=p_angle,
-            cavitated_fraction=chars.cavitated_fraction(reduced, free, p_cav, grid),
+            cavitated_fraction=cavitated_width * grid.d_theta / (2.0 * math.pi * grid.width),
             friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
             extra=info,
 )

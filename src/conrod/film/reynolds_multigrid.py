@@ -22,8 +22,12 @@ What limits the finer grids is the rupture line: with cavitation the V-cycle con
 ~0.45 per cycle on 288×64 and ~0.8 on 576×128 (a full film: 0.22 on every grid), because
 the sampled coarse masks misplace the free boundary by up to one coarse cell.
 
-Cycles stop when the largest change of one cycle is ≤ tolerance·max|p|. Everything
-runs in one compiled call, lexicographic order, deterministic.
+Cycles stop when the largest change of one cycle is ≤ tolerance·max|p|, or earlier when
+two successive cycles contracted the change by ρ < ``ESTIMATE_RATE`` and the remaining
+error of a geometric sequence, change·ρ/(1 − ρ), is ≤ tolerance·max|p| (warm 72×16 and
+144×32 at 1e-12: 11 → 10 cycles). The coarse cycle works in arrays allocated once per
+solve (5–9 % faster than allocating per level visit). Everything runs in one compiled
+call, lexicographic order, deterministic.
 
 [1] A. Brandt, C.W. Cryer, "Multigrid algorithms for the solution of linear
     complementarity problems arising from free boundary problems", SIAM J. Sci. Stat.
@@ -47,11 +51,15 @@ from conrod.film.multigrid_operators import (
 )
 
 __all__ = ["add_prolongated", "coarse_levels", "coarsen", "coarsest_relaxation", "conductances",
-           "multigrid_solve", "relax", "residual", "restrict", "solve_on_grid", "stencil"]
+           "level_arrays", "multigrid_solve", "relax", "residual", "restrict", "solve_on_grid",
+           "stencil"]
 
 PRE_SWEEPS = 2
 POST_SWEEPS = 1
 COARSEST_SWEEPS = 8
+ESTIMATE_RATE = 0.5
+"""Contraction per cycle below which (in two successive cycles) the remaining error is
+estimated as change·ρ/(1 − ρ) and the cycles stop once that is ≤ tolerance [-]."""
 W_CYCLE_LEVELS = 4
 """Coarse-level count from which the correction is a W-cycle (V below): on 288×64 a
 V-cycle's convergence degrades to ~0.45 per cycle near the rupture line, a W-cycle keeps
@@ -59,13 +67,13 @@ V-cycle's convergence degrades to ~0.45 per cycle near the rupture line, a W-cyc
 
 
 @nb.njit(cache=True)
-def _descend(k, errors, sources, stencils, masks, symmetric):
-    """Pre-smooth the correction on coarse level k and restrict its residual to k + 1."""
+def _descend(k, errors, sources, work, stencils, masks, symmetric):
+    """Pre-smooth the correction on coarse level k and restrict its residual to k + 1
+    (``sources`` hold normalised sources b/a_P, ``work`` the residuals; no allocation)."""
     w_e, w_w, w_n, w_s, a_p = stencils[k]
-    s = sources[k] / a_p
-    relax(errors[k], w_e, w_w, w_n, w_s, s, 1.0, -np.inf, PRE_SWEEPS)
-    r = residual(errors[k], w_e, w_w, w_n, w_s, s, a_p, masks[k])
-    sources[k + 1] = restrict(r, masks[k + 1], symmetric)
+    relax(errors[k], w_e, w_w, w_n, w_s, sources[k], 1.0, -np.inf, PRE_SWEEPS)
+    residual(errors[k], w_e, w_w, w_n, w_s, sources[k], a_p, masks[k], work[k])
+    restrict(work[k], masks[k + 1], symmetric, stencils[k + 1][4], sources[k + 1])
     errors[k + 1][:] = 0.0
 
 
@@ -73,33 +81,79 @@ def _descend(k, errors, sources, stencils, masks, symmetric):
 def _ascend(k, errors, sources, stencils, masks):
     """Add the prolongated correction of level k + 1 to level k and post-smooth."""
     add_prolongated(errors[k + 1], errors[k], masks[k])
-    w_e, w_w, w_n, w_s, a_p = stencils[k]
-    relax(errors[k], w_e, w_w, w_n, w_s, sources[k] / a_p, 1.0, -np.inf, POST_SWEEPS)
+    w_e, w_w, w_n, w_s, _ = stencils[k]
+    relax(errors[k], w_e, w_w, w_n, w_s, sources[k], 1.0, -np.inf, POST_SWEEPS)
 
 
 @nb.njit(cache=True)
-def masked_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure, mask, out):
-    """In one pass: mask := fixed | (p ≤ p_cav) and the flux residual of :func:`residual`
-    on the unmasked nodes (0 elsewhere). Returns True when any mask entry changed (the
-    coarse operators are rebuilt only then — along a warm-started orbit the set rarely
-    moves)."""
+def _row_residual(p, i, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure, mask, out):
+    """Row i: mask := fixed | (p ≤ p_cav) and the flux residual of :func:`residual` on
+    the unmasked nodes (0 elsewhere); returns True when a mask entry of the row changed."""
     changed = False
     n, m = p.shape
-    for i in range(n):
-        ip = i + 1 if i + 1 < n else 0
-        im = i - 1 if i > 0 else n - 1
-        for j in range(m):
-            value = fixed[i, j] or p[i, j] <= cavitation_pressure
-            if value != mask[i, j]:
-                mask[i, j] = value
-                changed = True
-            if value or j == 0 or j == m - 1:
-                out[i, j] = 0.0
-                continue
-            target = (w_e[i, j] * p[ip, j] + w_w[i, j] * p[im, j]
-                      + w_n[i, j] * p[i, j + 1] + w_s[i, j] * p[i, j - 1])
-            out[i, j] = a_p[i, j] * (target + s[i, j] - p[i, j])
+    ip = i + 1 if i + 1 < n else 0
+    im = i - 1 if i > 0 else n - 1
+    for j in range(m):
+        value = fixed[i, j] or p[i, j] <= cavitation_pressure
+        if value != mask[i, j]:
+            mask[i, j] = value
+            changed = True
+        if value or j == 0 or j == m - 1:
+            out[i, j] = 0.0
+            continue
+        target = (w_e[i, j] * p[ip, j] + w_w[i, j] * p[im, j]
+                  + w_n[i, j] * p[i, j + 1] + w_s[i, j] * p[i, j - 1])
+        out[i, j] = a_p[i, j] * (target + s[i, j] - p[i, j])
     return changed
+
+
+@nb.njit(cache=True)
+def _relax_row(p, i, w_e, w_w, w_n, w_s, s, floor):
+    """One projected Gauss–Seidel update of row i (as :func:`relax` with ω = 1)."""
+    n, m = p.shape
+    row, up, down = p[i], p[i + 1 if i + 1 < n else 0], p[i - 1 if i > 0 else n - 1]
+    we, ww, wn, ws, si = w_e[i], w_w[i], w_n[i], w_s[i], s[i]
+    for j in range(1, m - 1):
+        new = we[j] * up[j] + ww[j] * down[j] + wn[j] * row[j + 1] + ws[j] * row[j - 1] + si[j]
+        row[j] = new if new > floor else floor
+
+
+@nb.njit(cache=True)
+def relax_with_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure, mask,
+                        out):
+    """One projected sweep and, one row behind it, the mask fixed | (p ≤ p_cav) and the
+    flux residual on the unmasked nodes (:func:`_row_residual`) — in one pass over the
+    grid. Returns True when any mask entry changed (the coarse operators are rebuilt only
+    then — along a warm-started orbit the set rarely moves)."""
+    n = p.shape[0]
+    changed = False
+    for i in range(n):
+        _relax_row(p, i, w_e, w_w, w_n, w_s, s, cavitation_pressure)
+        if i >= 2:  # rows i − 2, i − 1, i are final: the residual of row i − 1 is
+            changed |= _row_residual(p, i - 1, w_e, w_w, w_n, w_s, s, a_p, fixed,
+                                     cavitation_pressure, mask, out)
+    for i in (n - 1, 0):  # their θ neighbours (periodic) were updated last
+        changed |= _row_residual(p, i, w_e, w_w, w_n, w_s, s, a_p, fixed,
+                                 cavitation_pressure, mask, out)
+    return changed
+
+
+@nb.njit(cache=True)
+def relax_with_change(p, w_e, w_w, w_n, w_s, s, floor, previous):
+    """One projected sweep that also returns max|p − previous| / max|p| [-] (0 when
+    p ≡ 0) against ``previous`` (the field at the start of the cycle) and sets
+    previous := p, in one pass."""
+    n, m = p.shape
+    largest_change = 0.0
+    largest_value = 0.0
+    for i in range(n):
+        _relax_row(p, i, w_e, w_w, w_n, w_s, s, floor)
+        for j in range(m):
+            value = p[i, j]
+            largest_change = max(largest_change, abs(value - previous[i, j]))
+            largest_value = max(largest_value, abs(value))
+            previous[i, j] = value
+    return largest_change / largest_value if largest_value > 0.0 else 0.0
 
 
 @nb.njit(cache=True)
@@ -121,20 +175,6 @@ def add_projected(coarse, fine, fine_mask, floor):
 
 
 @nb.njit(cache=True)
-def cycle_change(p, previous):
-    """max|p − previous| / max|p| [-] (0 when p ≡ 0), then previous := p, in one pass."""
-    largest_change = 0.0
-    largest_value = 0.0
-    n, m = p.shape
-    for i in range(n):
-        for j in range(m):
-            largest_change = max(largest_change, abs(p[i, j] - previous[i, j]))
-            largest_value = max(largest_value, abs(p[i, j]))
-            previous[i, j] = p[i, j]
-    return largest_change / largest_value if largest_value > 0.0 else 0.0
-
-
-@nb.njit(cache=True)
 def coarse_operators(mask_fine, coarse_east, coarse_north, symmetric):
     """Masks (every other node of the finer mask) and stencils of the coarse levels."""
     levels = len(coarse_east)
@@ -147,17 +187,26 @@ def coarse_operators(mask_fine, coarse_east, coarse_north, symmetric):
 
 
 @nb.njit(cache=True)
-def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, coarse_cycles):
+def level_arrays(coarse_east):
+    """Zeroed work arrays of the coarse levels: corrections, normalised sources and
+    residuals (allocated once per solve, reused by every :func:`correction`)."""
+    errors = [np.zeros(a.shape) for a in coarse_east]
+    sources = [np.zeros(a.shape) for a in coarse_east]
+    work = [np.zeros(a.shape) for a in coarse_east]
+    return errors, sources, work
+
+
+@nb.njit(cache=True)
+def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, coarse_cycles,
+               errors, sources, work):
     """Linear cycle for A e = rhs on the coarse levels (lists, fine → coarse; masks and
-    stencils of :func:`coarse_operators`): ``coarse_cycles`` visits of every level per
-    visit of its parent (1: V-cycle, 2: W-cycle; non-recursive, with visit counters);
-    returns the correction on the first coarse level."""
+    stencils of :func:`coarse_operators`, work arrays of :func:`level_arrays`):
+    ``coarse_cycles`` visits of every level per visit of its parent (1: V-cycle, 2:
+    W-cycle; non-recursive, with visit counters); returns the correction on the first
+    coarse level."""
     levels = len(coarse_east)
-    sources = [restrict(rhs_fine, masks[0], symmetric)]
-    errors = [np.zeros(masks[0].shape)]
-    for k in range(1, levels):
-        sources.append(np.zeros(masks[k].shape))
-        errors.append(np.zeros(masks[k].shape))
+    restrict(rhs_fine, masks[0], symmetric, stencils[0][4], sources[0])
+    errors[0][:] = 0.0
     last = levels - 1
     w_e, w_w, w_n, w_s, a_p = stencils[last]
     omega = coarsest_relaxation(coarse_east[last], coarse_north[last])
@@ -165,9 +214,9 @@ def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, 
     k = 0
     while True:
         while k < last:
-            _descend(k, errors, sources, stencils, masks, symmetric)
+            _descend(k, errors, sources, work, stencils, masks, symmetric)
             k += 1
-        relax(errors[last], w_e, w_w, w_n, w_s, sources[last] / a_p, omega, -np.inf,
+        relax(errors[last], w_e, w_w, w_n, w_s, sources[last], omega, -np.inf,
               COARSEST_SWEEPS)
         if last == 0:
             return errors[0]
@@ -180,7 +229,7 @@ def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, 
             visits[k] = 0
             if k == 0:
                 return errors[0]
-        _descend(k, errors, sources, stencils, masks, symmetric)
+        _descend(k, errors, sources, work, stencils, masks, symmetric)
         k += 1
 
 
@@ -201,7 +250,8 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
     h : film thickness [m]; source : b of the flux balance [Pa m^4]; fixed : Dirichlet
     nodes (edge rows included) holding their current value; symmetric : arrays hold
     z ≤ 0 of a z-symmetric problem, the mid-plane row before a padding row (masked).
-    Returns (cycles, last relative change [-]).
+    Returns (cycles, relative error measure [-]: the last cycle's change, or the geometric
+    estimate of the remaining error when that stopped the cycles).
     """
     a_east, a_north = conductances(h, radius, d_theta, d_z)
     w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, fixed, symmetric)
@@ -226,19 +276,30 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
     mask = np.ones(p.shape, dtype=np.bool_)
     coarse_cycles = 2 if n_coarse >= W_CYCLE_LEVELS else 1
     masks, stencils = coarse_operators(mask, coarse_east, coarse_north, symmetric)
+    errors, sources, work = level_arrays(coarse_east)
+    last_change, last_rate = np.inf, 1.0
     for cycle in range(1, max_cycles + 1):
-        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS)
+        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS - 1)
         if n_coarse > 0:
-            moved = masked_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed, cavitation_pressure,
-                                    mask, flux_residual)
+            moved = relax_with_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed,
+                                        cavitation_pressure, mask, flux_residual)
             if moved or cycle == 1:
                 masks, stencils = coarse_operators(mask, coarse_east, coarse_north, symmetric)
             add_projected(correction(flux_residual, masks, stencils, coarse_east, coarse_north,
-                                     symmetric, coarse_cycles), p, mask, cavitation_pressure)
-        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS)
-        change = cycle_change(p, previous)
+                                     symmetric, coarse_cycles, errors, sources, work),
+                          p, mask, cavitation_pressure)
+        else:
+            relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, 1)
+        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS - 1)
+        change = relax_with_change(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, previous)
         if change <= tolerance:
             return cycle, change
+        rate = change / last_change
+        if rate < ESTIMATE_RATE and last_rate < ESTIMATE_RATE:
+            remaining = change * rate / (1.0 - rate)
+            if remaining <= tolerance:
+                return cycle, remaining
+        last_change, last_rate = change, rate
     return max_cycles, change
 
 
