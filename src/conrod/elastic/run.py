@@ -8,6 +8,7 @@ import time
 
 import numpy as np
 
+from conrod import registry
 from conrod.elastic.cycle import elastic_cycle
 from conrod.results.ehd import ElasticRunResults
 
@@ -18,7 +19,11 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     results, thermal = simulation._run(progress)
     problem, orbit = thermal.problem, thermal.orbit
     integrator = simulation.integrator()
-    name = integrator if isinstance(integrator, str) else integrator.name
+    if isinstance(integrator, str):
+        integrator = registry.integrator(integrator)
+    if hasattr(integrator, "choose"):  # the automatic integrator: the one it chose
+        integrator = integrator.choose(problem)
+    name = integrator.name
     diagnostics = elastic_cycle(problem, results.cycle, orbit.last.film_memory,
                                 massless=name == "quasi_static")
     film = problem.film
