@@ -52,9 +52,15 @@ from conrod.elastic.coupling import (
     fixed_point_coupling,
     solve_coupling,
 )
-from conrod.elastic.newton import newton_balance
+from conrod.elastic.newton import ChordJacobian, newton_balance
 from conrod.elastic.rate import rated, with_deformation_rate
-from conrod.elastic.response import film_response, has_exact_response, nodal_force_weights
+from conrod.elastic.response import (
+    PressureEvaluation,
+    evaluate_pressure,
+    film_response,
+    has_exact_response,
+    nodal_force_weights,
+)
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.capabilities import SupportsDeformation, film_memory, solve_film
@@ -171,6 +177,8 @@ class ElasticFilm(FilmWrapper):
         self.balance_jacobian = BalanceJacobian(directions, housing.angles)
         self.rigid_jacobian = BalanceJacobian(directions[:, :0], housing.angles)
         self._zero_operator = np.zeros_like(housing.corrected_compliance)
+        self.chords = {"balance": ChordJacobian(), "rigid": ChordJacobian(),
+                       "coupling": ChordJacobian()}
         self.exact = has_exact_response(self.base) and self.settings.method == "quasi_newton"
         self._nodal = (nodal_force_weights(self.base, housing.angles, housing.radius)
                        if self.exact else None)
@@ -198,7 +206,7 @@ class ElasticFilm(FilmWrapper):
             raise CaseError("elastic film: the bore deformation is computed by the housing; "
                             "a FilmState.deformation cannot be added")
         outcome = self._couple(state, memory)
-        result, inner = outcome.payload[:2]  # type: ignore[index]
+        result, inner = self._finish(outcome.payload)
         result = dataclasses.replace(result, pressure=result.pressure if with_pressure
                                      else None, extra=dict(result.extra))
         u = outcome.deformation
@@ -268,17 +276,19 @@ class ElasticFilm(FilmWrapper):
 
         def evaluate(u: np.ndarray, v: np.ndarray):
             moving = dataclasses.replace(state, velocity_x=float(v[0]), velocity_y=float(v[1]))
-            forces, _, payload = self.evaluator(moving, memory)(u)
+            forces, h_min, payload = self.evaluator(moving, memory)(u)
+            if isinstance(payload, PressureEvaluation):
+                return forces, payload.force(self.base), h_min, payload
             result = payload[0]
-            return (forces, np.array([result.force_x, result.force_y]),
-                    result.min_film_thickness, payload)
+            return forces, np.array([result.force_x, result.force_y]), h_min, payload
 
         if self.exact:
             outcome = newton_balance(
                 evaluate, self._responder(memory), start,
                 np.array([state.velocity_x, state.velocity_y]), np.asarray(load, dtype=float),
                 inertia, operator, c, scale, self._coupling.tolerance,
-                5 * self.settings.max_iterations, self.settings.increment_share)
+                5 * self.settings.max_iterations, self.settings.increment_share,
+                chord=self.chords["balance" if elastic else "rigid"])
         else:
             outcome = solve_balance(
                 evaluate, start, np.array([state.velocity_x, state.velocity_y]),
@@ -292,7 +302,7 @@ class ElasticFilm(FilmWrapper):
                 f"load, N; bore displacement residual {outcome.residual:.3g} m)",
                 where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
                 residual=outcome.force_residual * (float(np.hypot(*load)) + 1.0))
-        result, inner = outcome.payload[:2]  # type: ignore[index]
+        result, inner = self._finish(outcome.payload)
         after = dataclasses.replace(
             memory, inner=inner, deformation=outcome.deformation,
             iterations=memory.iterations + outcome.iterations, residual=outcome.residual,
@@ -341,6 +351,10 @@ class ElasticFilm(FilmWrapper):
         def evaluate(u: np.ndarray):
             rate = self._field((u - reference) / memory.reference_dt) if use_rate else None
             deformed = rated(state, self._field(u), rate)
+            if self.exact:  # pressure only; the characteristics once, for the answer
+                solved = evaluate_pressure(self.base, deformed, inner)
+                forces = np.sum(self._nodal * solved.pressure, axis=1)
+                return forces, solved.min_film_thickness(), solved
             result, after = solve_film(self.base, deformed, inner, with_pressure=True)
             forces = self.housing.nodal_forces(result.pressure, self._z)
             return forces, result.min_film_thickness, (result, after, deformed)
@@ -353,10 +367,16 @@ class ElasticFilm(FilmWrapper):
             memory.reference_dt > 0.0)
         step = memory.reference_dt if use_rate else None
 
-        def respond(payload):
-            result, _, deformed = payload
-            return film_response(self.base, deformed, result.pressure, self._nodal, step)
+        def respond(payload: PressureEvaluation):
+            return film_response(self.base, payload.state, payload.pressure, self._nodal,
+                                 step)
         return respond
+
+    def _finish(self, payload) -> tuple[FilmResult, Any]:
+        """(film result, inner memory) of an evaluation's payload."""
+        if isinstance(payload, PressureEvaluation):
+            return payload.finish(self.base)
+        return payload[0], payload[1]
 
     def _couple(self, state: FilmState, memory: ElasticMemory) -> CouplingOutcome:
         evaluate = self.evaluator(state, memory)
@@ -394,7 +414,8 @@ class ElasticFilm(FilmWrapper):
         outcome = newton_balance(
             with_velocity, self._responder(memory), memory.deformation, np.zeros(2),
             np.zeros(2), inertia, operator, c, 1.0, self._coupling.tolerance,
-            self.settings.max_iterations, self.settings.increment_share, with_velocity=False)
+            self.settings.max_iterations, self.settings.increment_share, with_velocity=False,
+            chord=self.chords["coupling"])
         return CouplingOutcome(outcome.deformation, outcome.payload, outcome.iterations,
                                outcome.residual, outcome.increment,
                                outcome.residual <= self._coupling.tolerance)

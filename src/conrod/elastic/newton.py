@@ -23,22 +23,33 @@ import numpy as np
 
 from conrod.elastic.balance import ACCEPTABLE, FORCE_TOLERANCE, BalanceOutcome
 
-CONTRACTION = 0.2
+CONTRACTION = 0.1
 """Keep a Jacobian while an update reduces max|r| at least by this factor [-]."""
 
 LINE_SEARCH_CUTS = 6
 """Halvings of an update before the Jacobian is rebuilt at the current point [-]."""
 
 
+class ChordJacobian:
+    """The inverse Jacobian of the last Newton iteration, carried to the next state (the
+    next step) while it keeps contracting; ``builds`` counts the film responses [-]."""
+
+    def __init__(self) -> None:
+        self.inverse: np.ndarray | None = None
+        self.builds = 0
+
+
 def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance: float,
                    v_scale: float, tolerance: float, max_iterations: int, share: float,
-                   with_velocity: bool = True) -> BalanceOutcome:
+                   with_velocity: bool = True,
+                   chord: ChordJacobian | None = None) -> BalanceOutcome:
     """(u, v) with G = 0 (and F + W = 0 when ``with_velocity``) from (u0 [m], v0 [m/s]).
 
     evaluate : callable  (u, v) → (nodal forces f [N], film force F [N] (2,), h_min [m],
         payload); respond : callable  payload → FilmResponse at that evaluation.
     load : W [N] (2,); inertia : λ P U c(φ) [m]; operator : λ P C [m/N];
-    tolerance : max|G| accepted [m]; max_iterations : film solves before giving up [-].
+    tolerance : max|G| accepted [m]; max_iterations : film solves before giving up [-];
+    chord : the Jacobian carried from the last call (updated in place), None: fresh.
     """
     c, n = clearance, len(u0)
     w_scale = float(np.hypot(*load)) + 1.0
@@ -60,11 +71,15 @@ def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance
     if with_velocity:
         z = np.concatenate([z, v / v_scale])
     r, h_min, payload = residual(z)
-    inverse, increment = None, 0.0
+    chord = chord if chord is not None else ChordJacobian()
+    inverse, increment = chord.inverse, 0.0
+    if inverse is not None and inverse.shape[0] != z.size:
+        inverse = None
     while solves < max_iterations and not _done(r, n, c, tolerance, with_velocity):
         if inverse is None:
             inverse = _inverse(respond(payload), operator, n, c, v_scale, w_scale,
                                with_velocity)
+            chord.builds += 1
         step = -inverse @ r
         step *= _limit(step, n, h_min / c, share, with_velocity)
         norm = float(np.linalg.norm(r))
@@ -85,6 +100,7 @@ def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance
         r, h_min, payload = best
         if _norm(best) > CONTRACTION * norm or best_lam < 1.0:
             inverse = None
+    chord.inverse = inverse
     bore = float(c * np.max(np.abs(r[:n])))
     force = float(np.max(np.abs(r[n:]))) if with_velocity else 0.0
     velocity = v_scale * z[n:] if with_velocity else v

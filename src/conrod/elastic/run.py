@@ -37,7 +37,8 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
         "bore_nodes": int(len(film.housing.angles)),
         "coupling_tolerance_m": film._coupling.tolerance,
         "rigid_start_deg": float(np.degrees(film.settings.rigid_start)),
-        "jacobian_builds": film.jacobian.builds + film.balance_jacobian.builds,
+        "jacobian_builds": film.jacobian.builds + film.balance_jacobian.builds + sum(
+            chord.builds for chord in film.chords.values()),
         "elastic_wall_time_s": elastic_seconds,
         "deformation_rate_in_squeeze_term": bool(film.settings.deformation_rate
                                                  and film.base.name == "reynolds"),
