@@ -10,11 +10,30 @@ import numpy as np
 
 from conrod import registry
 from conrod.elastic.cycle import elastic_cycle
+from conrod.errors import CaseError
 from conrod.results.ehd import ElasticRunResults
+
+FIXED_STEP_INTEGRATORS = ("auto", "quasi_static", "rk2")
+"""Integrators that run the elastic film: its bore deformation, crank angle and
+deformation rate advance in lock-step with a fixed step (``auto`` picks quasi_static)."""
+
+
+def check_integrator(simulation) -> None:
+    """CaseError naming the field, before anything runs, for an error-controlled
+    integrator (implicit, adaptive) with an elastic housing."""
+    integrator = simulation.integrator()
+    name = integrator if isinstance(integrator, str) else integrator.name
+    if name not in FIXED_STEP_INTEGRATORS:
+        raise CaseError(
+            f"solver.integrator = {name!r} with an elastic [housing]: the bore deformation "
+            "and its rate advance in lock-step with a fixed step, which an error-controlled "
+            "integrator cannot hold (allowed: quasi_static or auto for the massless journal, "
+            "rk2 for the journal with mass)")
 
 
 def elastic_run(simulation, progress=None) -> ElasticRunResults:
     """Elastic answer, diagnostics and (unless skipped) the rigid companion run."""
+    check_integrator(simulation)
     start = time.perf_counter()
     results, thermal = simulation._run(progress)
     problem, orbit = thermal.problem, thermal.orbit
