@@ -31,8 +31,11 @@ film resistance, and the force balance on the deformed bore fails. The largest r
 over a step is kept in the memory (``deformation_rate`` [m/s]).
 
 The massless orbit asks :meth:`ElasticFilm.balance_velocity` for the velocity that balances
-the load, bore displacement and velocity solved together (:mod:`conrod.elastic.balance`),
-passing the crank angle of each state.
+the load, bore displacement and velocity solved together, passing the crank angle of each
+state: by Newton's method with the film's exact response on its active set for the
+isoviscous Reynolds film (:mod:`conrod.elastic.newton`, :mod:`conrod.elastic.response`),
+by the finite-difference quasi-Newton iteration of :mod:`conrod.elastic.balance` for the
+other films.
 """
 
 from __future__ import annotations
