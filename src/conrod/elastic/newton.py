@@ -9,12 +9,13 @@ quasi-Newton method with finite differences). Here the Jacobian is exact:
                                ∂F/∂u & ∂F/∂v \\end{pmatrix}
 
 with ∂f/∂u, ∂f/∂v, ∂F/∂u, ∂F/∂v from one sparse LU of the film on its converged active set
-(:mod:`conrod.elastic.response`). A Jacobian is reused while it contracts the residual by
-at least :data:`CONTRACTION` per update (chord steps) and rebuilt otherwise; each update
-is cut back (halving) until max|r| decreases, and scaled so that max|Δu| stays below a
-share of the current h_min (Rodin 2004: the relaxation factor Δ of the deformation
-increment). With the velocity held (``with_velocity=False``) the same iteration solves
-G(u) = 0 at fixed journal kinematics.
+(:mod:`conrod.elastic.response`). A Jacobian is reused while an update reduces the residual
+norm to at most :data:`CONTRACTION` of its value (chord steps, also across steps) and
+rebuilt otherwise; each update is cut back (halving) until the residual norm decreases —
+across a switch of the cavitation set, where no cut may decrease it, the best trial is
+taken — and scaled so that max|Δu| stays below a share of the current h_min (Rodin 2004:
+the relaxation factor Δ of the deformation increment). With the velocity held
+(``with_velocity=False``) the same iteration solves G(u) = 0 at fixed journal kinematics.
 """
 
 from __future__ import annotations
@@ -24,10 +25,10 @@ import numpy as np
 from conrod.elastic.balance import ACCEPTABLE, FORCE_TOLERANCE, BalanceOutcome
 
 CONTRACTION = 0.1
-"""Keep a Jacobian while an update reduces max|r| at least by this factor [-]."""
+"""Keep a Jacobian while an update reduces the residual norm to at most this share [-]."""
 
 LINE_SEARCH_CUTS = 6
-"""Halvings of an update before the Jacobian is rebuilt at the current point [-]."""
+"""Trials of an update (halving the step) before the best one is taken [-]."""
 
 
 class ChordJacobian:
