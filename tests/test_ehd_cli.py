@@ -67,3 +67,15 @@ def test_a_coupling_that_does_not_converge_exits_3_naming_the_crank_angle(runner
     assert result.exit_code == 3, result.output
     assert "crank angle" in result.output and "did not converge" in result.output
     assert not out.exists() or not any(out.iterdir())
+
+
+@pytest.mark.parametrize("integrator", ["implicit", "adaptive"])
+def test_an_error_controlled_integrator_is_refused_before_the_run(runner, tmp_path,
+                                                                  integrator):
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", _case_file(tmp_path, 1e4), "--out", str(out),
+                                 "--integrator", integrator])
+    assert result.exit_code == 2, result.output
+    assert f"solver.integrator = {integrator!r}" in result.output
+    assert "rk2" in result.output and "quasi_static" in result.output
+    assert not out.exists() or not any(out.iterdir())

@@ -31,8 +31,11 @@ film resistance, and the force balance on the deformed bore fails. The largest r
 over a step is kept in the memory (``deformation_rate`` [m/s]).
 
 The massless orbit asks :meth:`ElasticFilm.balance_velocity` for the velocity that balances
-the load, bore displacement and velocity solved together (:mod:`conrod.elastic.balance`),
-passing the crank angle of each state.
+the load, bore displacement and velocity solved together, passing the crank angle of each
+state: by Newton's method with the film's exact response on its active set for the
+isoviscous Reynolds film (:mod:`conrod.elastic.newton`, :mod:`conrod.elastic.response`),
+by the finite-difference quasi-Newton iteration of :mod:`conrod.elastic.balance` for the
+other films.
 """
 
 from __future__ import annotations
@@ -52,7 +55,15 @@ from conrod.elastic.coupling import (
     fixed_point_coupling,
     solve_coupling,
 )
+from conrod.elastic.newton import ChordJacobian, newton_balance
 from conrod.elastic.rate import rated, with_deformation_rate
+from conrod.elastic.response import (
+    PressureEvaluation,
+    evaluate_pressure,
+    film_response,
+    has_exact_response,
+    nodal_force_weights,
+)
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.capabilities import SupportsDeformation, film_memory, solve_film
@@ -169,6 +180,11 @@ class ElasticFilm(FilmWrapper):
         self.balance_jacobian = BalanceJacobian(directions, housing.angles)
         self.rigid_jacobian = BalanceJacobian(directions[:, :0], housing.angles)
         self._zero_operator = np.zeros_like(housing.corrected_compliance)
+        self.chords = {"balance": ChordJacobian(), "rigid": ChordJacobian(),
+                       "coupling": ChordJacobian()}
+        self.exact = has_exact_response(self.base) and self.settings.method == "quasi_newton"
+        self._nodal = (nodal_force_weights(self.base, housing.angles, housing.radius)
+                       if self.exact else None)
 
     # ----------------------------------------------------------- capabilities
     def initial_history(self) -> np.ndarray:
@@ -193,7 +209,7 @@ class ElasticFilm(FilmWrapper):
             raise CaseError("elastic film: the bore deformation is computed by the housing; "
                             "a FilmState.deformation cannot be added")
         outcome = self._couple(state, memory)
-        result, inner = outcome.payload  # type: ignore[misc]
+        result, inner = self._finish(outcome.payload)
         result = dataclasses.replace(result, pressure=result.pressure if with_pressure
                                      else None, extra=dict(result.extra))
         u = outcome.deformation
@@ -250,35 +266,46 @@ class ElasticFilm(FilmWrapper):
         it (bore displacement and velocity solved together, :mod:`conrod.elastic.balance`).
         The velocity of ``state`` is the start value; ``crank_angle`` φ [rad] is the time
         of the state (a new φ makes the last deformation the reference of the rate)."""
-        memory = self._clock(memory, crank_angle)
+        before, memory = memory, self._clock(memory, crank_angle)
         share = self.settings.share(memory.elapsed)
         elastic = share > 0.0
         operator = (share * self.housing.corrected_compliance if elastic
                     else self._zero_operator)
         inertia = share * self.inertia_deformation(memory.crank_angle)
-        start = memory.deformation if elastic else np.zeros(len(self.housing.angles))
+        start = (_extrapolated(before, memory) if elastic
+                 else np.zeros(len(self.housing.angles)))
         c = self.base.geometry.radial_clearance
         scale = c * max(self.crank_speed, 1e-3)
 
         def evaluate(u: np.ndarray, v: np.ndarray):
             moving = dataclasses.replace(state, velocity_x=float(v[0]), velocity_y=float(v[1]))
-            forces, _, (result, after) = self.evaluator(moving, memory)(u)
-            return (forces, np.array([result.force_x, result.force_y]),
-                    result.min_film_thickness, (result, after))
+            forces, h_min, payload = self.evaluator(moving, memory)(u)
+            if isinstance(payload, PressureEvaluation):
+                return forces, payload.force(self.base), h_min, payload
+            result = payload[0]
+            return forces, np.array([result.force_x, result.force_y]), h_min, payload
 
-        outcome = solve_balance(
-            evaluate, start, np.array([state.velocity_x, state.velocity_y]),
-            np.asarray(load, dtype=float), inertia, operator,
-            self.balance_jacobian if elastic else self.rigid_jacobian, c, scale,
-            self._coupling.tolerance, 5 * self.settings.max_iterations,
-            self.settings.increment_share)
+        if self.exact:
+            outcome = newton_balance(
+                evaluate, self._responder(memory), start,
+                np.array([state.velocity_x, state.velocity_y]), np.asarray(load, dtype=float),
+                inertia, operator, c, scale, self._coupling.tolerance,
+                5 * self.settings.max_iterations, self.settings.increment_share,
+                chord=self.chords["balance" if elastic else "rigid"])
+        else:
+            outcome = solve_balance(
+                evaluate, start, np.array([state.velocity_x, state.velocity_y]),
+                np.asarray(load, dtype=float), inertia, operator,
+                self.balance_jacobian if elastic else self.rigid_jacobian, c, scale,
+                self._coupling.tolerance, 5 * self.settings.max_iterations,
+                self.settings.increment_share)
         if not outcome.converged:
             raise ConvergenceError(
                 "elastohydrodynamic force balance did not converge (residual: film force + "
                 f"load, N; bore displacement residual {outcome.residual:.3g} m)",
                 where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
                 residual=outcome.force_residual * (float(np.hypot(*load)) + 1.0))
-        result, inner = outcome.payload  # type: ignore[misc]
+        result, inner = self._finish(outcome.payload)
         after = dataclasses.replace(
             memory, inner=inner, deformation=outcome.deformation,
             iterations=memory.iterations + outcome.iterations, residual=outcome.residual,
@@ -327,10 +354,32 @@ class ElasticFilm(FilmWrapper):
         def evaluate(u: np.ndarray):
             rate = self._field((u - reference) / memory.reference_dt) if use_rate else None
             deformed = rated(state, self._field(u), rate)
+            if self.exact:  # pressure only; the characteristics once, for the answer
+                solved = evaluate_pressure(self.base, deformed, inner)
+                forces = np.sum(self._nodal * solved.pressure, axis=1)
+                return forces, solved.min_film_thickness(), solved
             result, after = solve_film(self.base, deformed, inner, with_pressure=True)
             forces = self.housing.nodal_forces(result.pressure, self._z)
-            return forces, result.min_film_thickness, (result, after)
+            return forces, result.min_film_thickness, (result, after, deformed)
         return evaluate
+
+    def _responder(self, memory: ElasticMemory):
+        """payload of :meth:`evaluator` → the film's exact response there
+        (:func:`conrod.elastic.response.film_response`)."""
+        use_rate = self.settings.deformation_rate and memory.reference is not None and (
+            memory.reference_dt > 0.0)
+        step = memory.reference_dt if use_rate else None
+
+        def respond(payload: PressureEvaluation):
+            return film_response(self.base, payload.state, payload.pressure, self._nodal,
+                                 step)
+        return respond
+
+    def _finish(self, payload) -> tuple[FilmResult, Any]:
+        """(film result, inner memory) of an evaluation's payload."""
+        if isinstance(payload, PressureEvaluation):
+            return payload.finish(self.base)
+        return payload[0], payload[1]
 
     def _couple(self, state: FilmState, memory: ElasticMemory) -> CouplingOutcome:
         evaluate = self.evaluator(state, memory)
@@ -338,13 +387,15 @@ class ElasticFilm(FilmWrapper):
         if share == 0.0:
             result, after = solve_film(self.base, state, memory.inner, with_pressure=True)
             zero = np.zeros(len(self.housing.angles))
-            return CouplingOutcome(zero, (result, after), 1, 0.0, 0.0, True)
+            return CouplingOutcome(zero, (result, after, state), 1, 0.0, 0.0, True)
         inertia = share * self.inertia_deformation(memory.crank_angle)
         operator = share * self.housing.corrected_compliance
         if self.settings.method == "fixed_point":
             outcome = fixed_point_coupling(
                 evaluate, memory.deformation, inertia, operator, self.settings.relaxation,
                 self._coupling.tolerance, 100 * self.settings.max_iterations)
+        elif self.exact:
+            outcome = self._newton_coupling(state, memory, evaluate, inertia, operator)
         else:
             outcome = solve_coupling(evaluate, memory.deformation, inertia, operator,
                                      self.jacobian, self._coupling,
@@ -355,3 +406,30 @@ class ElasticFilm(FilmWrapper):
                 where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
                 residual=outcome.residual)
         return outcome
+
+    def _newton_coupling(self, state, memory, evaluate, inertia, operator) -> CouplingOutcome:
+        """G(u) = 0 at fixed kinematics by :func:`conrod.elastic.newton.newton_balance`."""
+        def with_velocity(u: np.ndarray, _v: np.ndarray):
+            forces, h_min, payload = evaluate(u)
+            return forces, np.zeros(2), h_min, payload
+
+        c = self.base.geometry.radial_clearance
+        outcome = newton_balance(
+            with_velocity, self._responder(memory), memory.deformation, np.zeros(2),
+            np.zeros(2), inertia, operator, c, 1.0, self._coupling.tolerance,
+            self.settings.max_iterations, self.settings.increment_share, with_velocity=False,
+            chord=self.chords["coupling"])
+        return CouplingOutcome(outcome.deformation, outcome.payload, outcome.iterations,
+                               outcome.residual, outcome.increment,
+                               outcome.residual <= self._coupling.tolerance)
+
+
+def _extrapolated(before: ElasticMemory, after: ElasticMemory) -> np.ndarray:
+    """Start of the coupling at a new crank angle: the last deformation moved on at its
+    last rate, u + (u − u_prev) Δt_new/Δt_prev [m] (the squeeze term holds the rate, so a
+    start at the old deformation would begin with no bore rate at all)."""
+    moved = after.reference is before.deformation and after is not before
+    if not moved or before.reference is None or before.reference_dt <= 0.0:
+        return after.deformation
+    ratio = after.reference_dt / before.reference_dt
+    return before.deformation + ratio * (before.deformation - before.reference)

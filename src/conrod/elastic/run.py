@@ -8,17 +8,41 @@ import time
 
 import numpy as np
 
+from conrod import registry
 from conrod.elastic.cycle import elastic_cycle
+from conrod.errors import CaseError
 from conrod.results.ehd import ElasticRunResults
+
+FIXED_STEP_INTEGRATORS = ("auto", "quasi_static", "rk2")
+"""Integrators that run the elastic film: its bore deformation, crank angle and
+deformation rate advance in lock-step with a fixed step (``auto`` picks quasi_static)."""
+
+
+def check_integrator(simulation) -> None:
+    """CaseError naming the field, before anything runs, for an error-controlled
+    integrator (implicit, adaptive) with an elastic housing."""
+    integrator = simulation.integrator()
+    name = integrator if isinstance(integrator, str) else integrator.name
+    if name not in FIXED_STEP_INTEGRATORS:
+        raise CaseError(
+            f"solver.integrator = {name!r} with an elastic [housing]: the bore deformation "
+            "and its rate advance in lock-step with a fixed step, which an error-controlled "
+            "integrator cannot hold (allowed: quasi_static or auto for the massless journal, "
+            "rk2 for the journal with mass)")
 
 
 def elastic_run(simulation, progress=None) -> ElasticRunResults:
     """Elastic answer, diagnostics and (unless skipped) the rigid companion run."""
+    check_integrator(simulation)
     start = time.perf_counter()
     results, thermal = simulation._run(progress)
     problem, orbit = thermal.problem, thermal.orbit
     integrator = simulation.integrator()
-    name = integrator if isinstance(integrator, str) else integrator.name
+    if isinstance(integrator, str):
+        integrator = registry.integrator(integrator)
+    if hasattr(integrator, "choose"):  # the automatic integrator: the one it chose
+        integrator = integrator.choose(problem)
+    name = integrator.name
     diagnostics = elastic_cycle(problem, results.cycle, orbit.last.film_memory,
                                 massless=name == "quasi_static")
     film = problem.film
@@ -32,7 +56,8 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
         "bore_nodes": int(len(film.housing.angles)),
         "coupling_tolerance_m": film._coupling.tolerance,
         "rigid_start_deg": float(np.degrees(film.settings.rigid_start)),
-        "jacobian_builds": film.jacobian.builds + film.balance_jacobian.builds,
+        "jacobian_builds": film.jacobian.builds + film.balance_jacobian.builds + sum(
+            chord.builds for chord in film.chords.values()),
         "elastic_wall_time_s": elastic_seconds,
         "deformation_rate_in_squeeze_term": bool(film.settings.deformation_rate
                                                  and film.base.name == "reynolds"),

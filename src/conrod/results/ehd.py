@@ -112,7 +112,8 @@ class ElasticRunResults:
                 f"({100.0 * (e.p_max - r.p_max) / r.p_max:+.1f} %)")
         iterations = self.columns.get("coupling_iterations")
         if iterations is not None and len(iterations):
-            lines["coupling"] = f"{float(np.mean(iterations)):.1f} iterations per step (mean)"
+            lines["coupling"] = (f"{float(np.mean(iterations)):.1f} film solves per step "
+                                 "(mean, both force balances of the step)")
         return lines
 
 

@@ -1,0 +1,71 @@
+"""The film's exact response to the bore deformation and the journal velocity (one sparse
+LU on the converged active set) against central differences of the Reynolds film."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from conrod.elastic.rate import rated, with_deformation_rate
+from conrod.elastic.response import film_response, nodal_force_weights
+from conrod.elastic.transfer import nodal_forces
+from conrod.film.base import BearingGeometry, FilmState
+from conrod.film.reynolds import ReynoldsFilm
+
+RADIUS, CLEARANCE, STEP = 0.04, 5.0e-5, 1.0e-4  # [m], [m], rate time step [s]
+
+
+def _setup():
+    geometry = BearingGeometry(diameter=2 * RADIUS, width=0.03, radial_clearance=CLEARANCE)
+    film = with_deformation_rate(ReynoldsFilm(geometry, n_theta=36, n_z=8))
+    theta, z = film.grid()
+    rng = np.random.default_rng(1)
+    bore = 3e-6 * np.cos(2 * theta) + 1e-6 * rng.standard_normal(len(theta))
+    reference = bore - 2e-7 * np.sin(theta)
+    state = FilmState(0.7 * CLEARANCE * np.cos(0.3), 0.7 * CLEARANCE * np.sin(0.3),
+                      velocity_x=0.01, velocity_y=-0.02, journal_speed=272.0,
+                      viscosity=0.0095)
+
+    def evaluate(u, velocity):
+        moving = dataclasses.replace(state, velocity_x=velocity[0], velocity_y=velocity[1])
+        field = np.repeat(u[:, None], len(z), axis=1)
+        rate = np.repeat(((u - reference) / STEP)[:, None], len(z), axis=1)
+        deformed = rated(moving, field, rate)
+        result = film.solve(deformed, with_pressure=True)
+        return (deformed, result.pressure, nodal_forces(result.pressure, z, theta, RADIUS),
+                np.array([result.force_x, result.force_y]))
+
+    return film, theta, bore, np.array([0.01, -0.02]), evaluate
+
+
+def test_response_matches_central_differences():
+    film, theta, bore, velocity, evaluate = _setup()
+    deformed, pressure, forces, _ = evaluate(bore, velocity)
+    weights = nodal_force_weights(film, theta, RADIUS)
+    assert np.allclose(np.sum(weights * pressure, axis=1), forces, rtol=1e-13, atol=0.0)
+    response = film_response(film, deformed, pressure, weights, STEP)
+    nodal = np.empty((len(theta), len(theta)))
+    force = np.empty((2, len(theta)))
+    for j in range(len(theta)):
+        step = np.zeros(len(theta))
+        step[j] = 1e-10
+        _, _, f_plus, force_plus = evaluate(bore + step, velocity)
+        _, _, f_minus, force_minus = evaluate(bore - step, velocity)
+        nodal[:, j] = (f_plus - f_minus) / 2e-10
+        force[:, j] = (force_plus - force_minus) / 2e-10
+    assert np.max(np.abs(nodal - response.nodal_by_bore)) <= 1e-6 * np.max(np.abs(nodal))
+    assert np.max(np.abs(force - response.force_by_bore)) <= 1e-6 * np.max(np.abs(force))
+    # the check is not vacuous: a third of the rows carry pressure
+    assert np.count_nonzero(np.max(np.abs(response.nodal_by_bore), axis=0)) >= len(theta) // 3
+    for k in range(2):
+        shift = np.zeros(2)
+        shift[k] = 1e-6
+        _, _, f_plus, force_plus = evaluate(bore, velocity + shift)
+        _, _, f_minus, force_minus = evaluate(bore, velocity - shift)
+        nodal = (f_plus - f_minus) / 2e-6
+        force = (force_plus - force_minus) / 2e-6
+        assert np.max(np.abs(nodal - response.nodal_by_velocity[:, k])) <= 1e-6 * np.max(
+            np.abs(nodal))
+        assert np.max(np.abs(force - response.force_by_velocity[:, k])) <= 1e-6 * np.max(
+            np.abs(force))
