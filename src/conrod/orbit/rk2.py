@@ -208,7 +208,9 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
             memory[k // record_every] = session.snapshot()
         xp, yp, vxp, vyp = x + dt * vx, y + dt * vy, vx + dt * ax, vy + dt * ay
         ax2, ay2, _, _ = acceleration(k + 1, xp, yp, vxp, vyp)
-        session.advance(FilmState(x, y, vx, vy, wj[k], wb[k], problem.viscosity), dt)
+        session.advance(FilmState(eccentricity_x=x, eccentricity_y=y, velocity_x=vx, velocity_y=vy,
+                                  journal_speed=wj[k], shell_speed=wb[k],
+                                  viscosity=problem.viscosity), dt)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius, pc > 0.0)
