@@ -278,3 +278,52 @@ def test_mass_conserving_without_oil_feed_is_refused_before_computing(runner, tm
     assert "needs an oil feed above the cavitation pressure" in result.output
     assert "bearing.supply_pressure" in result.output
     assert not (tmp_path / "o").exists()
+
+
+def test_lengths_in_metres_are_keyword_only():
+    """A positional 15e-6 could be an eccentricity in metres or a ratio; refused clearly."""
+    import dataclasses
+
+    from conrod import BearingGeometry, FilmState
+
+    with pytest.raises(TypeError, match=r"FilmState takes keyword arguments only, got 2 "
+                                        r"positional \(eccentricities are in metres"):
+        FilmState(15e-6, 0.0, journal_speed=300.0, viscosity=0.01)
+    with pytest.raises(TypeError, match=r"BearingGeometry\(diameter=0.05, width=0.025"):
+        BearingGeometry(0.05, 0.025, 25e-6)
+    state = FilmState(eccentricity_x=15e-6, eccentricity_y=0.0, journal_speed=300.0,
+                      viscosity=0.01)
+    assert dataclasses.replace(state, viscosity=0.02).viscosity == 0.02  # copies still work
+    assert BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6).radius == 0.025
+
+
+def _rigid_run_with_peak(p_max: float):
+    """A plausible 8-point cycle whose film pressure peaks at ``p_max`` [Pa] at 90°."""
+    import types
+
+    n = 8
+    peaks = np.full(n, 5e7)
+    peaks[1] = p_max
+    cycle = types.SimpleNamespace(
+        crank_angle=np.radians(np.arange(n) * 90.0), eccentricity_ratio=np.full(n, 0.9),
+        h_min=np.full(n, 2e-6), p_max=peaks, load_x=np.full(n, 6e4), load_y=np.zeros(n),
+        contact_force=np.zeros(n), in_contact=np.zeros(n, dtype=bool))
+    case = types.SimpleNamespace(
+        contact=types.SimpleNamespace(model="hard", roughness=0.4e-6),
+        lubricant=types.SimpleNamespace(max_temperature=200.0))
+    summary = types.SimpleNamespace(effective_temperature=120.0)
+    return types.SimpleNamespace(cycle=cycle, clearance=25e-6, summary=summary), case
+
+
+def test_film_pressure_above_lining_hardness_is_flagged():
+    """ISO 4383 lining hardness: AlSn20Cu 30-40 HBW, CuPb24Sn4 60-90 HBW (<= 0.9 GPa); the
+    bound sits above all of them, so rigid-bore peaks of several hundred MPa pass."""
+    from conrod.results import plausibility
+
+    assert plausibility.FILM_PRESSURE_LIMIT > 90 * 9.80665e6  # 90 HBW in Pa
+    for usual in (6.5e8, 9.9e8):  # the shipped short-film passenger-car peak is ~650 MPa
+        assert plausibility.check_run(*_rigid_run_with_peak(usual)) == []
+    warned = plausibility.check_run(*_rigid_run_with_peak(13.8e9))
+    assert len(warned) == 1
+    assert warned[0].startswith("p_max 1.38e+04 MPa at crank angle 90.0 deg is above 1000 MPa")
+    assert "elastic big end" in warned[0] and "h_min" in warned[0]
