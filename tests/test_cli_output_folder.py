@@ -100,3 +100,11 @@ def test_python_writers_refuse_a_foreign_folder_too(foreign):
     with pytest.raises(CaseError, match="chapter1.tex"), staged_result_folder(foreign):
         pytest.fail("the block must not run")
     assert sorted(p.name for p in foreign.iterdir()) == ["chapter1.tex", "data.csv"]
+
+
+def test_a_folder_holding_only_the_input_file_is_accepted(tmp_path):
+    case = tmp_path / "case.toml"
+    case.write_text("title = 'x'\n", encoding="utf-8")
+    check_output_folder(tmp_path, inputs=(case,))
+    with pytest.raises(CaseError, match=r"\(case.toml\)"):  # without naming it: foreign
+        check_output_folder(tmp_path, option="--out")

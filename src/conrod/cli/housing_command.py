@@ -105,7 +105,7 @@ def register(app: typer.Typer) -> None:
         """Compliance matrix, inertia base fields and figures of the elastic big end."""
         from conrod.io.result_folder import check_output_folder
 
-        check_output_folder(out)  # before any computation
+        check_output_folder(out, inputs=(case_file,))  # before any computation
         from conrod.elastic.housing import Housing
 
         case = Case.from_toml(case_file)

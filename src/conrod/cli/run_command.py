@@ -81,7 +81,7 @@ def register(app: typer.Typer) -> None:
         from conrod.results.output import write_results
         from conrod.simulation import Simulation
 
-        check_output_folder(out)
+        check_output_folder(out, inputs=(case_file,))
         case = Case.from_toml(case_file)
         n_theta, n_z = _grid(grid)
         _check_oil_feed(case, film.value if film else case.solver.film)

@@ -92,7 +92,7 @@ def register(app: typer.Typer) -> None:
         """Von Mises stresses of the rod under the film pressure and a cosine load."""
         from conrod.io.result_folder import check_output_folder
 
-        check_output_folder(out)  # before any computation
+        check_output_folder(out, inputs=(case_file,))  # before any computation
         from conrod.elastic.housing import Housing
         from conrod.elastic.stresses import rigid_run_pressures
 

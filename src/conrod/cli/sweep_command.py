@@ -73,7 +73,7 @@ def register(app: typer.Typer) -> None:
         from conrod.sweep import Sweep
         from conrod.sweep.runner import STUDY_FILE
 
-        check_output_folder(out, marker=STUDY_FILE)  # before any variant is computed
+        check_output_folder(out, marker=STUDY_FILE, inputs=(study_file,))  # before computing
 
         runner = Sweep(study_file, out, scheduler=scheduler, workers=workers, figures=figures)
         variants = runner.variants()

@@ -46,27 +46,32 @@ DERIVED_FILES = frozenset({"report.html", "report.pdf"})
 """Files made from a result folder's content (``conrod report``): stale after a rerun."""
 SHOWN_ENTRIES = 4
 """How many entries of a refused folder the error names."""
+_CHECKED: set[Path] = set()
+"""Folders accepted by :func:`check_output_folder` in this process (with their inputs)."""
 _RENAME_EXCHANGE = 2
 _AT_FDCWD = -100
 
 
 def check_output_folder(out: str | os.PathLike[str], option: str = "--out",
-                        marker: str = MANIFEST) -> Path:
+                        marker: str = MANIFEST,
+                        inputs: tuple[str | os.PathLike[str], ...] = ()) -> Path:
     """Check that results can be written to ``out``; raise :class:`CaseError` if not.
 
     Done before any computation: ``out`` must not exist yet, or be an empty folder, or a
-    folder of conrod's results (it holds ``marker``); no part of its path may be a file,
-    it must not be (or contain) the current folder, and its parent must accept a new
-    entry. Returns ``out`` as an absolute path.
+    folder of conrod's results (it holds ``marker``), or hold nothing but the command's
+    own input files; no part of its path may be a file, it must not be (or contain) the
+    current folder, and its parent must accept a new entry. Returns ``out`` as an
+    absolute path; the result writers of this process then accept it.
 
     marker : str  File that marks a folder as conrod's (``manifest.json``; a sweep
         folder: ``study.json``).
+    inputs : paths  The command's input files (case or study file), kept in place.
     """
     path = Path(out).absolute()
     shown = f"{option} {str(out)!r}"
     if path.exists() and not path.is_dir():
         raise CaseError(f"{shown}: is an existing file (allowed: a folder, new or existing)")
-    _check_owned(path, shown, marker)
+    _check_owned(path, shown, marker, {Path(p).absolute() for p in inputs})
     if Path.cwd() == path or path in Path.cwd().parents:
         raise CaseError(f"{shown}: is the current folder or contains it (allowed: a "
                         "results subfolder, e.g. results/run1)")
@@ -81,22 +86,25 @@ def check_output_folder(out: str | os.PathLike[str], option: str = "--out",
         raise CaseError(f"{shown}: cannot write in {str(existing)!r} "
                         f"({error.strerror or type(error).__name__})") from None
     os.rmdir(probe)
+    _CHECKED.add(path)
     return path
 
 
-def _check_owned(path: Path, shown: str, marker: str) -> None:
+def _check_owned(path: Path, shown: str, marker: str, inputs: set[Path] = frozenset()
+                 ) -> None:
     """Refuse a non-empty folder that holds no conrod result (its files are not ours)."""
     if not path.is_dir() or (path / marker).is_file():
         return
-    entries = sorted(entry.name for entry in path.iterdir() if not entry.name.startswith("."))
+    entries = sorted(entry.name for entry in path.iterdir()
+                     if not entry.name.startswith(".") and entry not in inputs)
     if not entries:
         return
     names = ", ".join(entries[:SHOWN_ENTRIES]) + (
         f", ... ({len(entries)} entries)" if len(entries) > SHOWN_ENTRIES else "")
     raise CaseError(f"{shown}: folder holds files conrod did not write ({names}) and no "
-                    f"{marker} (allowed: a new or empty folder, or a conrod results folder, "
-                    "whose previous results are replaced); choose another folder or empty "
-                    "this one")
+                    f"{marker} (allowed: a new or empty folder, one holding only the input "
+                    "file, or a conrod results folder, whose previous results are replaced); "
+                    "choose another folder or empty this one")
 
 
 @contextlib.contextmanager
@@ -108,7 +116,8 @@ def staged_result_folder(out: str | os.PathLike[str], *, manifest: bool = True
         fixed set of files may leave it out; the set is still swapped in as a whole).
     """
     target = Path(out).absolute()
-    _check_owned(target, repr(str(out)), MANIFEST)  # also for writers called from Python
+    if target not in _CHECKED:  # writers called from Python: the same rule
+        _check_owned(target, repr(str(out)), MANIFEST)
     target.parent.mkdir(parents=True, exist_ok=True)
     _remove_abandoned_stages(target)
     stage = Path(tempfile.mkdtemp(prefix=f".{target.name}{STAGE_TAG}{os.getpid()}-",
