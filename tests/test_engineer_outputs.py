@@ -327,3 +327,39 @@ def test_film_pressure_above_lining_hardness_is_flagged():
     assert len(warned) == 1
     assert warned[0].startswith("p_max 1.38e+04 MPa at crank angle 90.0 deg is above 1000 MPa")
     assert "elastic big end" in warned[0] and "h_min" in warned[0]
+
+
+@pytest.mark.slow
+def test_2000rpm_reynolds_case_is_full_film_as_its_source_says():
+    """[D0] §3.5: at 2000 rpm 'dry friction does not occur'. With the finite-length film,
+    contact as [D4] eq. 4.1.1 defines it (journal on the clearance circle) and the
+    Greenwood-Tripp asperity load of the composite roughness, the film carries the load."""
+    import conrod
+    from conrod.contact.asperity import asperity_force_array, kernel_parameters
+
+    case = conrod.Case.from_toml(EXAMPLES / "passenger_car_diesel_2000rpm_reynolds.toml")
+    results = conrod.run(case)
+    cycle = results.cycle
+    assert float(np.max(cycle.contact_force)) == 0.0 and not np.any(cycle.in_contact)
+    assert results.summary.warnings == () and results.summary.periodic
+    load = np.hypot(cycle.load_x, cycle.load_y)
+    fx, fy = asperity_force_array(cycle.eccentricity_x, cycle.eccentricity_y,
+                                  results.clearance, kernel_parameters(case))
+    assert float(np.max(np.hypot(fx, fy) / load)) < 0.01  # asperities: under 1 % of the load
+    assert 0.0 < results.summary.h_min < case.contact.roughness * 3.0  # thin, yet film
+
+
+def test_rk2_automatic_step_is_checked_against_the_implicit_orbit():
+    """Without a fixed step there is no half step: the reference is the error-controlled
+    implicit orbit (the table film at 2000 rpm: rk2 4.11 µm, implicit 1.15 µm)."""
+    import types
+
+    from conrod.results.summary import step_study_warnings
+
+    coarse, fine = types.SimpleNamespace(h_min=4.11e-6), types.SimpleNamespace(h_min=1.15e-6)
+    (warning,) = step_study_warnings(coarse, fine, None)
+    assert warning.startswith("under-resolved: h_min 4.11 µm with rk2's automatic step but "
+                              "1.15 µm with the error-controlled implicit integrator")
+    assert "solver.step_deg" in warning
+    assert step_study_warnings(coarse, types.SimpleNamespace(h_min=4.12e-6), None) == []
+    assert "at step 0.01 deg but" in step_study_warnings(coarse, fine, 0.01)[0]
