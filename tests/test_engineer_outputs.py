@@ -363,3 +363,16 @@ def test_rk2_automatic_step_is_checked_against_the_implicit_orbit():
     assert "solver.step_deg" in warning
     assert step_study_warnings(coarse, types.SimpleNamespace(h_min=4.12e-6), None) == []
     assert "at step 0.01 deg but" in step_study_warnings(coarse, fine, 0.01)[0]
+
+
+@pytest.mark.slow
+def test_rk2_automatic_step_beyond_the_budget_exits_3_with_the_fix(runner, tmp_path):
+    """The KamAZ case's film asks rk2 for a step far below the step budget: refused with
+    exit 3 and the fix, not a 6-exabyte allocation (exit 1)."""
+    result = runner.invoke(app, ["run", str(EXAMPLES / "kamaz_740_truck_diesel.toml"),
+                                 "--integrator", "rk2", "--grid", "24x8", "--max-cycles", "4",
+                                 "--no-figures", "--no-step-check",
+                                 "--out", str(tmp_path / "o")])
+    assert result.exit_code == 3, result.output
+    assert "rk2 would need a step below" in result.output
+    assert "use integrator = 'implicit'" in result.output

@@ -125,9 +125,16 @@ def stable_step_cycle(problem: OrbitProblem, state: OrbitState,
     the film's radial squeeze damping B_rr along the computed orbit, stays below
     :data:`STABILITY_MARGIN`: a cycle at a trial step tells the stiffness met, and the step
     shrinks until the cycle is stable."""
+    from conrod.cases.solver import MAX_INTEGRATOR_STEPS
+
     divisions = 1
     for _ in range(12):
         step = output_step_deg / divisions
+        if problem.loads.cycle / math.radians(step) > MAX_INTEGRATOR_STEPS:
+            raise ConvergenceError(
+                f"rk2 would need a step below {step:.3g} deg, more than {MAX_INTEGRATOR_STEPS} "
+                "steps per cycle (film too stiff for an explicit scheme); use integrator = "
+                "'implicit'", where="automatic rk2 step")
         try:
             return _fixed_step_cycle(problem, state, step, output_step_deg)
         except ConvergenceError as error:
