@@ -37,7 +37,8 @@ def test_non_periodic_orbit_exits_3_and_accept_warnings_exits_0(runner, tmp_path
 
 
 def _thin_film_case() -> dict:
-    """200 x the Flores load at 100 rpm: the film thins below the roughness (a warning)."""
+    """200 x the Flores load at 100 rpm: the film thins below the roughness and its rigid
+    pressure passes the lining hardness (two warnings)."""
     return mutated(mutated(_periodic_case(), ("load", "scale"), 200), ("load", "speed"), 100)
 
 
@@ -45,7 +46,9 @@ def test_run_with_warnings_exits_4(runner, tmp_path):
     result = runner.invoke(app, ["run", str(write_case(tmp_path, _thin_film_case())),
                                  "--out", str(tmp_path / "o"), "--no-figures"])
     assert result.exit_code == 4, result.output
-    assert "finished with 1 warning(s)" in result.output
+    assert "finished with 2 warning(s)" in result.output
+    assert "below the combined roughness" in result.output
+    assert "the hardness of the hardest big-end lining alloys" in result.output
     assert (tmp_path / "o" / "summary.json").exists()  # written all the same
 
 
