@@ -336,11 +336,13 @@ def test_film_pressure_above_lining_hardness_is_flagged():
 def test_2000rpm_reynolds_case_is_full_film_as_its_source_says():
     """[D0] §3.5: at 2000 rpm 'dry friction does not occur'. With the finite-length film,
     contact as [D4] eq. 4.1.1 defines it (journal on the clearance circle) and the
-    Greenwood-Tripp asperity load of the composite roughness, the film carries the load."""
+    Greenwood-Tripp asperity load of the composite roughness, the film carries the load
+    (72x16 as shipped: asperities <= 0.41 % of the load; 36x8 here: 0.65 %)."""
     import conrod
     from conrod.contact.asperity import asperity_force_array, kernel_parameters
 
-    case = conrod.Case.from_toml(EXAMPLES / "passenger_car_diesel_2000rpm_reynolds.toml")
+    shipped = conrod.Case.from_toml(EXAMPLES / "passenger_car_diesel_2000rpm_reynolds.toml")
+    case = shipped.with_(solver__n_theta=36, solver__n_z=8)  # coarse: 15 s instead of ~1 min
     results = conrod.run(case)
     cycle = results.cycle
     assert float(np.max(cycle.contact_force)) == 0.0 and not np.any(cycle.in_contact)
