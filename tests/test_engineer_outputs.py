@@ -381,3 +381,16 @@ def test_rk2_automatic_step_beyond_the_budget_exits_3_with_the_fix(runner, tmp_p
     assert result.exit_code == 3, result.output
     assert "rk2 would need a step below" in result.output
     assert "use integrator = 'implicit'" in result.output
+
+
+@pytest.mark.slow
+def test_adaptive_step_with_a_non_finite_jacobian_is_a_solver_failure(runner, tmp_path):
+    """R&H with the mobility film under the adaptive integrator: the implicit method's LU
+    met a non-finite Jacobian (was exit 1, an internal error); now the next method is
+    tried and the run ends as a solver failure naming the crank angle (exit 3)."""
+    result = runner.invoke(app, ["run", str(EXAMPLES / "ruston_hornsby_6vebx_mk3.toml"),
+                                 "--film", "mobility", "--integrator", "adaptive", "--grid",
+                                 "24x8", "--max-cycles", "4", "--no-figures", "--no-step-check",
+                                 "--out", str(tmp_path / "o")])
+    assert result.exit_code == 3, result.output
+    assert "at crank angle" in result.output
