@@ -28,7 +28,8 @@ ROOT = Path(__file__).resolve().parents[1]
 OUTPUT = Path(__file__).with_suffix(".md")
 EXAMPLES = ("passenger_car_diesel_2000rpm", "passenger_car_diesel_1000rpm",
             "passenger_car_diesel_2000rpm_5w30_piezoviscous", "kamaz_740_truck_diesel",
-            "ruston_hornsby_6vebx_mk3", "flores2006_table_load")
+            "ruston_hornsby_6vebx_mk3", "flores2006_table_load",
+            "passenger_car_diesel_2000rpm_reynolds")
 FILMS = ("short", "reynolds", "mass_conserving", "mobility", "table")
 INTEGRATORS = ("auto", "adaptive", "implicit", "rk2", "quasi_static")
 EXIT_MEANING = {0: "ok", 2: "refused", 3: "failed / not periodic", 4: "warnings",
