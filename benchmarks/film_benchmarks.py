@@ -62,7 +62,8 @@ def state_at(k: int, history: np.ndarray | None = None) -> FilmState:
     """Journal creeping around at ε ≈ 0.6 (k-th orbit step)."""
     c = GEOMETRY.radial_clearance
     angle = 0.002 * k
-    return FilmState(ECCENTRICITY * c * math.cos(angle), ECCENTRICITY * c * math.sin(angle),
+    return FilmState(eccentricity_x=ECCENTRICITY * c * math.cos(angle),
+                     eccentricity_y=ECCENTRICITY * c * math.sin(angle),
                      journal_speed=SPEED, viscosity=VISCOSITY, history=history)
 
 
@@ -97,8 +98,10 @@ def time_grid_model(factory, n_warm: int = 30, n_cold: int = 5) -> dict[str, flo
 def whirling_state(t: float, history: np.ndarray | None) -> FilmState:
     """Journal whirling and squeezing (ε 0.3–0.7) — a film that ruptures and re-forms."""
     c, w = GEOMETRY.radial_clearance, 2.0 * math.pi / 0.1
-    return FilmState(c * (0.3 + 0.4 * math.sin(w * t)), 0.3 * c * math.cos(w * t),
-                     0.4 * c * w * math.cos(w * t), -0.3 * c * w * math.sin(w * t),
+    return FilmState(eccentricity_x=c * (0.3 + 0.4 * math.sin(w * t)),
+                     eccentricity_y=0.3 * c * math.cos(w * t),
+                     velocity_x=0.4 * c * w * math.cos(w * t),
+                     velocity_y=-0.3 * c * w * math.sin(w * t),
                      journal_speed=SPEED, viscosity=VISCOSITY, history=history)
 
 
@@ -194,7 +197,8 @@ def time_table() -> dict[str, float]:
     """Table build over ReynoldsFilm 144×32 (no cache) and per-call look-up [s]."""
     ReynoldsFilm(GEOMETRY, n_theta=72, n_z=16).solve(state_at(0))
     table = TabulatedFilm(ReynoldsFilm(GEOMETRY, n_theta=144, n_z=32), use_cache=False)
-    state = FilmState(1.2e-5, 0.4e-5, 1e-4, -2e-4, journal_speed=SPEED, viscosity=VISCOSITY)
+    state = FilmState(eccentricity_x=1.2e-5, eccentricity_y=0.4e-5, velocity_x=1e-4,
+                      velocity_y=-2e-4, journal_speed=SPEED, viscosity=VISCOSITY)
     table.force(state)
     start = time.process_time()
     for _ in range(20000):

@@ -52,7 +52,8 @@ def problem(bearing: dict, film: str, settings, mass: float = 1.0):
     from conrod.orbit import OrbitProblem
 
     width = bearing["width_ratio"] * bearing["bore"]
-    geometry = BearingGeometry(bearing["bore"], width, bearing["clearance"],
+    geometry = BearingGeometry(diameter=bearing["bore"], width=width,
+                               radial_clearance=bearing["clearance"],
                                grooves=(Groove(width=0.1 * width),),
                                supply_pressure=bearing["supply"])
     model = {"reynolds": ReynoldsFilm, "mass_conserving": MassConservingFilm}[film]

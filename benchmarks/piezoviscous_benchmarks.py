@@ -40,7 +40,8 @@ LAWS = {"isoviscous": None, "Barus α = 1.5e-8 1/Pa": BARUS, "Roelands z = 0.6":
 
 def state_at(k: int) -> FilmState:
     c, angle = GEOMETRY.radial_clearance, 0.002 * k
-    return FilmState(ECCENTRICITY * c * math.cos(angle), ECCENTRICITY * c * math.sin(angle),
+    return FilmState(eccentricity_x=ECCENTRICITY * c * math.cos(angle),
+                     eccentricity_y=ECCENTRICITY * c * math.sin(angle),
                      journal_speed=SPEED, viscosity=MU0)
 
 

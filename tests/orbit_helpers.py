@@ -18,7 +18,7 @@ SPEED = 2000.0 * 2.0 * math.pi / 60.0
 
 def geometry(width: float = 0.025, diameter: float = 0.05, clearance: float = 25e-6):
     """Automotive-size bearing [m]."""
-    return BearingGeometry(diameter, width, clearance)
+    return BearingGeometry(diameter=diameter, width=width, radial_clearance=clearance)
 
 
 def load_cycle(load_x, load_y, *, cycle=4 * math.pi, journal=SPEED, shell=0.0, n=144):

@@ -50,8 +50,9 @@ def test_axial_groove_input_errors_name_the_field():
 def test_groove_in_the_ruptured_zone_at_ambient_pressure_changes_nothing():
     """Holding p = 0 where the ungrooved Swift–Stieber film is already at p_cav = 0 leaves
     the discrete solution unchanged (the complementarity problem keeps its solution)."""
-    state = FilmState(0.7 * C, 0.0, journal_speed=300.0, viscosity=MU)
-    plain = ReynoldsFilm(BearingGeometry(D, L, C), 72, 16).solve(state, with_pressure=True)
+    state = FilmState(eccentricity_x=0.7 * C, eccentricity_y=0.0, journal_speed=300.0, viscosity=MU)
+    plain = ReynoldsFilm(BearingGeometry(diameter=D, width=L, radial_clearance=C), 72, 16).solve(
+        state, with_pressure=True)
     theta_low = 0.5 * math.pi  # after the minimum film at θ = 0 for ω > 0: cavitated
     grooved_geometry = bearing([{"angle": math.degrees(theta_low), "width": 0.002}], supply=0.0)
     grooved = ReynoldsFilm(grooved_geometry, 72, 16).solve(state, with_pressure=True)
@@ -64,8 +65,9 @@ def test_groove_in_the_ruptured_zone_at_ambient_pressure_changes_nothing():
 def test_grooved_film_converges_to_ungrooved_as_groove_shrinks():
     """A pressurised groove in the loaded film: the force change falls monotonically as
     the groove's axial length shrinks (fine grid, groove ≥ 2 axial intervals)."""
-    state = FilmState(0.6 * C, 0.0, journal_speed=300.0, viscosity=MU)
-    plain = ReynoldsFilm(BearingGeometry(D, L, C, supply_pressure=1e6), 144, 64).solve(state)
+    state = FilmState(eccentricity_x=0.6 * C, eccentricity_y=0.0, journal_speed=300.0, viscosity=MU)
+    plain = ReynoldsFilm(BearingGeometry(diameter=D, width=L, radial_clearance=C,
+                                         supply_pressure=1e6), 144, 64).solve(state)
     changes = []
     for fraction in (1.0, 0.5, 0.25, 0.125, 0.0625):
         geometry = bearing([{"angle": 200.0, "width": 0.002, "length": fraction * L}], 1e6)
@@ -82,7 +84,7 @@ def test_supply_through_grooves_balances_side_flow(model):
     edges (discrete conservation)."""
     geometry = bearing([{"angle": 90.0, "width": 0.003}, {"angle": 270.0, "width": 0.003}],
                        supply=5.0e5)
-    state = FilmState(0.1 * C, 0.0, journal_speed=20.0, viscosity=MU)
+    state = FilmState(eccentricity_x=0.1 * C, eccentricity_y=0.0, journal_speed=20.0, viscosity=MU)
     if model == "reynolds":
         result = ReynoldsFilm(geometry, 96, 24).solve(state)
     else:
@@ -93,7 +95,9 @@ def test_supply_through_grooves_balances_side_flow(model):
 
 
 def test_steady_calculator_sees_the_grooves():
-    plain = solve_for_load(2000.0, 300.0, MU, BearingGeometry(D, L, C, supply_pressure=5e5))
+    plain = solve_for_load(2000.0, 300.0, MU, BearingGeometry(diameter=D, width=L,
+                                                              radial_clearance=C,
+                                                              supply_pressure=5e5))
     grooved = solve_for_load(2000.0, 300.0, MU, bearing(
         [{"angle": 90.0, "width": 0.003}, {"angle": 270.0, "width": 0.003}], supply=5.0e5))
     assert grooved.inlet_flow > plain.inlet_flow

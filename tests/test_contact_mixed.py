@@ -26,7 +26,8 @@ def _mixed(mu: float = 0.1) -> MixedLubricationFilm:
 def test_is_a_film_model_and_equals_the_film_away_from_contact():
     film = _mixed()
     assert isinstance(film, FilmModel)
-    state = FilmState(10e-6, 5e-6, 1e-3, -2e-3, 300.0, 0.0, 0.01)
+    state = FilmState(eccentricity_x=10e-6, eccentricity_y=5e-6, velocity_x=1e-3, velocity_y=-2e-3,
+                      journal_speed=300.0, shell_speed=0.0, viscosity=0.01)
     assert film.force(state) == pytest.approx(film.base.force(state), rel=1e-15)
     assert film.solve(state).extra["asperity_force_N"] == 0.0
 
@@ -34,7 +35,9 @@ def test_is_a_film_model_and_equals_the_film_away_from_contact():
 def test_force_adds_radial_asperity_force_and_opposing_friction():
     angle = 0.7
     e = 25e-6 - 0.5e-6  # gap of one σ
-    state = FilmState(e * math.cos(angle), e * math.sin(angle), 0.0, 0.0, 300.0, 0.0, 0.01)
+    state = FilmState(eccentricity_x=e * math.cos(angle), eccentricity_y=e * math.sin(angle),
+                      velocity_x=0.0, velocity_y=0.0, journal_speed=300.0, shell_speed=0.0,
+                      viscosity=0.01)
     film, frictionless = _mixed(0.1), _mixed(0.0)
     base = np.array(film.base.force(state))
     asperity = np.array(asperity_force(state.eccentricity_x, state.eccentricity_y,
@@ -44,7 +47,9 @@ def test_force_adds_radial_asperity_force_and_opposing_friction():
     friction = np.array(film.force(state)) - base - asperity
     # journal turning forward (+t̂) slides forward: friction −μ|F_a| t̂
     np.testing.assert_allclose(friction, -0.1 * np.linalg.norm(asperity) * tangent, rtol=1e-9)
-    backwards = FilmState(state.eccentricity_x, state.eccentricity_y, 0.0, 0.0, -300.0, 0.0, 0.01)
+    backwards = FilmState(eccentricity_x=state.eccentricity_x, eccentricity_y=state.eccentricity_y,
+                          velocity_x=0.0, velocity_y=0.0, journal_speed=-300.0, shell_speed=0.0,
+                          viscosity=0.01)
     friction_back = np.array(film.force(backwards)) - np.array(film.base.force(backwards)) - (
         asperity)
     np.testing.assert_allclose(friction_back, -friction, rtol=1e-9)

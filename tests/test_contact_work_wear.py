@@ -137,8 +137,10 @@ def test_worn_shell_film_opens_the_gap_of_a_reynolds_film():
     from conrod.film.base import BearingGeometry, FilmState
     from conrod.film.reynolds import ReynoldsFilm
 
-    film = ReynoldsFilm(BearingGeometry(0.05, 0.02, 25e-6), n_theta=36, n_z=8)
-    state = FilmState(20e-6, 0.0, 0.0, 0.0, 300.0, 0.0, 0.01)
+    film = ReynoldsFilm(BearingGeometry(diameter=0.05, width=0.02,
+                                        radial_clearance=25e-6), n_theta=36, n_z=8)
+    state = FilmState(eccentricity_x=20e-6, eccentricity_y=0.0, velocity_x=0.0, velocity_y=0.0,
+                      journal_speed=300.0, shell_speed=0.0, viscosity=0.01)
     unworn = WornShellFilm(film, lambda theta, z: np.zeros((theta.size, z.size)))
     assert unworn.force(state) == pytest.approx(film.force(state), rel=1e-9)
 

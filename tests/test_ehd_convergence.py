@@ -31,8 +31,10 @@ def _coupled(n_theta: int, n_z: int) -> tuple[float, float, float]:
                        housing, crank_speed=rpm_to_rad_s(case.engine.speed))
     c = case.bearing.radial_clearance
     angle = np.radians(170.0)  # the cap side, where the rod is most compliant
-    state = FilmState(0.95 * c * np.cos(angle), 0.95 * c * np.sin(angle), 0.0, 0.0,
-                      rpm_to_rad_s(case.engine.speed), 0.0, case.lubricant.viscosity)
+    state = FilmState(eccentricity_x=0.95 * c * np.cos(angle),
+                      eccentricity_y=0.95 * c * np.sin(angle), velocity_x=0.0, velocity_y=0.0,
+                      journal_speed=rpm_to_rad_s(case.engine.speed), shell_speed=0.0,
+                      viscosity=case.lubricant.viscosity)
     result, memory = film.solve_with_memory(state, film._static_memory())
     assert result.extra["coupling_residual_m"] <= 1e-9 * c
     return result.min_film_thickness, result.max_pressure, float(np.max(np.abs(

@@ -23,9 +23,9 @@ def _setup():
     rng = np.random.default_rng(1)
     bore = 3e-6 * np.cos(2 * theta) + 1e-6 * rng.standard_normal(len(theta))
     reference = bore - 2e-7 * np.sin(theta)
-    state = FilmState(0.7 * CLEARANCE * np.cos(0.3), 0.7 * CLEARANCE * np.sin(0.3),
-                      velocity_x=0.01, velocity_y=-0.02, journal_speed=272.0,
-                      viscosity=0.0095)
+    state = FilmState(eccentricity_x=0.7 * CLEARANCE * np.cos(0.3),
+                      eccentricity_y=0.7 * CLEARANCE * np.sin(0.3), velocity_x=0.01,
+                      velocity_y=-0.02, journal_speed=272.0, viscosity=0.0095)
 
     def evaluate(u, velocity):
         moving = dataclasses.replace(state, velocity_x=velocity[0], velocity_y=velocity[1])

@@ -47,8 +47,10 @@ def _equilibrium(film, loads, viscosity: float) -> tuple[np.ndarray, np.ndarray]
     load = np.array([loads.load_x[0], loads.load_y[0]])
 
     def residual(position):
-        state = FilmState(c * position[0], c * position[1], 0.0, 0.0,
-                          float(loads.journal_speed[0]), 0.0, viscosity)
+        state = FilmState(eccentricity_x=c * position[0], eccentricity_y=c * position[1],
+                          velocity_x=0.0, velocity_y=0.0,
+                          journal_speed=float(loads.journal_speed[0]), shell_speed=0.0,
+                          viscosity=viscosity)
         result = film.solve(state)
         return (np.array([result.force_x, result.force_y]) + load) / np.hypot(*load)
 
@@ -97,8 +99,9 @@ def test_coupling_converges_where_the_fixed_point_is_slow(case):
     film = simulation.film_model()
     loads, mu = simulation.load_cycle(), simulation.problem().viscosity
     c = film.geometry.radial_clearance
-    state = FilmState(-0.75 * c * np.cos(0.3), -0.75 * c * np.sin(0.3), 0.0, 0.0,
-                      float(loads.journal_speed[0]), 0.0, mu)
+    state = FilmState(eccentricity_x=-0.75 * c * np.cos(0.3),
+                      eccentricity_y=-0.75 * c * np.sin(0.3), velocity_x=0.0, velocity_y=0.0,
+                      journal_speed=float(loads.journal_speed[0]), shell_speed=0.0, viscosity=mu)
     fast, memory = film.solve_with_memory(state, film._static_memory())
     slow = ElasticFilm(film.base, film.housing, film.crank_speed, dataclasses.replace(
         film.settings, method="fixed_point", relaxation=0.1, max_iterations=200)).solve(state)

@@ -120,7 +120,8 @@ def test_nodal_forces_carry_the_film_force_to_the_housing(housing):
     geometry = BearingGeometry(diameter=2 * housing.radius, width=0.03,
                                radial_clearance=5.0e-5)
     film = ReynoldsFilm(geometry, n_theta=72, n_z=16)
-    state = FilmState(0.6 * 5e-5 * np.cos(0.4), 0.6 * 5e-5 * np.sin(0.4), journal_speed=300.0,
+    state = FilmState(eccentricity_x=0.6 * 5e-5 * np.cos(0.4),
+                      eccentricity_y=0.6 * 5e-5 * np.sin(0.4), journal_speed=300.0,
                       viscosity=0.01)
     result = film.solve(state, with_pressure=True)
     theta, z = film.grid()

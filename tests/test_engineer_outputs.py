@@ -37,7 +37,8 @@ def test_non_periodic_orbit_exits_3_and_accept_warnings_exits_0(runner, tmp_path
 
 
 def _thin_film_case() -> dict:
-    """200 x the Flores load at 100 rpm: the film thins below the roughness (a warning)."""
+    """200 x the Flores load at 100 rpm: the film thins below the roughness and its rigid
+    pressure passes the lining hardness (two warnings)."""
     return mutated(mutated(_periodic_case(), ("load", "scale"), 200), ("load", "speed"), 100)
 
 
@@ -45,7 +46,9 @@ def test_run_with_warnings_exits_4(runner, tmp_path):
     result = runner.invoke(app, ["run", str(write_case(tmp_path, _thin_film_case())),
                                  "--out", str(tmp_path / "o"), "--no-figures"])
     assert result.exit_code == 4, result.output
-    assert "finished with 1 warning(s)" in result.output
+    assert "finished with 2 warning(s)" in result.output
+    assert "below the combined roughness" in result.output
+    assert "the hardness of the hardest big-end lining alloys" in result.output
     assert (tmp_path / "o" / "summary.json").exists()  # written all the same
 
 
@@ -278,3 +281,116 @@ def test_mass_conserving_without_oil_feed_is_refused_before_computing(runner, tm
     assert "needs an oil feed above the cavitation pressure" in result.output
     assert "bearing.supply_pressure" in result.output
     assert not (tmp_path / "o").exists()
+
+
+def test_lengths_in_metres_are_keyword_only():
+    """A positional 15e-6 could be an eccentricity in metres or a ratio; refused clearly."""
+    import dataclasses
+
+    from conrod import BearingGeometry, FilmState
+
+    with pytest.raises(TypeError, match=r"FilmState takes keyword arguments only, got 2 "
+                                        r"positional \(eccentricities are in metres"):
+        FilmState(15e-6, 0.0, journal_speed=300.0, viscosity=0.01)
+    with pytest.raises(TypeError, match=r"BearingGeometry\(diameter=0.05, width=0.025"):
+        BearingGeometry(0.05, 0.025, 25e-6)
+    state = FilmState(eccentricity_x=15e-6, eccentricity_y=0.0, journal_speed=300.0,
+                      viscosity=0.01)
+    assert dataclasses.replace(state, viscosity=0.02).viscosity == 0.02  # copies still work
+    assert BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6).radius == 0.025
+
+
+def _rigid_run_with_peak(p_max: float):
+    """A plausible 8-point cycle whose film pressure peaks at ``p_max`` [Pa] at 90°."""
+    import types
+
+    n = 8
+    peaks = np.full(n, 5e7)
+    peaks[1] = p_max
+    cycle = types.SimpleNamespace(
+        crank_angle=np.radians(np.arange(n) * 90.0), eccentricity_ratio=np.full(n, 0.9),
+        h_min=np.full(n, 2e-6), p_max=peaks, load_x=np.full(n, 6e4), load_y=np.zeros(n),
+        contact_force=np.zeros(n), in_contact=np.zeros(n, dtype=bool))
+    case = types.SimpleNamespace(
+        contact=types.SimpleNamespace(model="hard", roughness=0.4e-6),
+        lubricant=types.SimpleNamespace(max_temperature=200.0))
+    summary = types.SimpleNamespace(effective_temperature=120.0)
+    return types.SimpleNamespace(cycle=cycle, clearance=25e-6, summary=summary), case
+
+
+def test_film_pressure_above_lining_hardness_is_flagged():
+    """ISO 4383 lining hardness: AlSn20Cu 30-40 HBW, CuPb24Sn4 60-90 HBW (<= 0.9 GPa); the
+    bound sits above all of them, so rigid-bore peaks of several hundred MPa pass."""
+    from conrod.results import plausibility
+
+    assert plausibility.FILM_PRESSURE_LIMIT > 90 * 9.80665e6  # 90 HBW in Pa
+    for usual in (6.5e8, 9.9e8):  # the shipped short-film passenger-car peak is ~650 MPa
+        assert plausibility.check_run(*_rigid_run_with_peak(usual)) == []
+    warned = plausibility.check_run(*_rigid_run_with_peak(13.8e9))
+    assert len(warned) == 1
+    assert warned[0].startswith("p_max 1.38e+04 MPa at crank angle 90.0 deg is above 1000 MPa")
+    assert "elastic big end" in warned[0] and "h_min" in warned[0]
+
+
+@pytest.mark.slow
+def test_2000rpm_reynolds_case_is_full_film_as_its_source_says():
+    """[D0] §3.5: at 2000 rpm 'dry friction does not occur'. With the finite-length film,
+    contact as [D4] eq. 4.1.1 defines it (journal on the clearance circle) and the
+    Greenwood-Tripp asperity load of the composite roughness, the film carries the load
+    (72x16 as shipped: asperities <= 0.41 % of the load; 36x8 here: 0.65 %)."""
+    import conrod
+    from conrod.contact.asperity import asperity_force_array, kernel_parameters
+
+    shipped = conrod.Case.from_toml(EXAMPLES / "passenger_car_diesel_2000rpm_reynolds.toml")
+    case = shipped.with_(solver__n_theta=36, solver__n_z=8)  # coarse: 15 s instead of ~1 min
+    results = conrod.run(case)
+    cycle = results.cycle
+    assert float(np.max(cycle.contact_force)) == 0.0 and not np.any(cycle.in_contact)
+    assert results.summary.warnings == () and results.summary.periodic
+    load = np.hypot(cycle.load_x, cycle.load_y)
+    fx, fy = asperity_force_array(cycle.eccentricity_x, cycle.eccentricity_y,
+                                  results.clearance, kernel_parameters(case))
+    assert float(np.max(np.hypot(fx, fy) / load)) < 0.01  # asperities: under 1 % of the load
+    assert 0.0 < results.summary.h_min < case.contact.roughness * 3.0  # thin, yet film
+
+
+def test_rk2_automatic_step_is_checked_against_the_implicit_orbit():
+    """Without a fixed step there is no half step: the reference is the error-controlled
+    implicit orbit (the table film at 2000 rpm: rk2 4.11 µm, implicit 1.15 µm)."""
+    import types
+
+    from conrod.results.summary import step_study_warnings
+
+    coarse, fine = types.SimpleNamespace(h_min=4.11e-6), types.SimpleNamespace(h_min=1.15e-6)
+    (warning,) = step_study_warnings(coarse, fine, None)
+    assert warning.startswith("under-resolved: h_min 4.11 µm with rk2's automatic step but "
+                              "1.15 µm with the error-controlled implicit integrator")
+    assert "solver.step_deg" in warning
+    assert step_study_warnings(coarse, types.SimpleNamespace(h_min=4.12e-6), None) == []
+    assert "at step 0.01 deg but" in step_study_warnings(coarse, fine, 0.01)[0]
+
+
+@pytest.mark.slow
+def test_rk2_automatic_step_beyond_the_budget_exits_3_with_the_fix(runner, tmp_path):
+    """The KamAZ case's film asks rk2 for a step far below the step budget: refused with
+    exit 3 and the fix, not a 6-exabyte allocation (exit 1)."""
+    result = runner.invoke(app, ["run", str(EXAMPLES / "kamaz_740_truck_diesel.toml"),
+                                 "--integrator", "rk2", "--grid", "24x8", "--max-cycles", "4",
+                                 "--no-figures", "--no-step-check",
+                                 "--out", str(tmp_path / "o")])
+    assert result.exit_code == 3, result.output
+    assert "rk2 would need a step below" in result.output
+    assert "use integrator = 'implicit'" in result.output
+
+
+@pytest.mark.slow
+def test_adaptive_step_with_a_non_finite_jacobian_is_a_solver_failure(runner, tmp_path):
+    """R&H with the mobility film under the adaptive integrator: the implicit method's LU
+    met a non-finite Jacobian (was exit 1, an internal error); now the next method is
+    tried and the run ends as a solver failure naming the crank angle (exit 3)."""
+    result = runner.invoke(app, ["run", str(EXAMPLES / "ruston_hornsby_6vebx_mk3.toml"),
+                                 "--film", "mobility", "--integrator", "adaptive", "--grid",
+                                 "24x8", "--max-cycles", "4", "--no-figures", "--no-step-check",
+                                 "--out", str(tmp_path / "o")])
+    assert result.exit_code == 3, result.output
+    assert "at crank angle" in result.output

@@ -35,11 +35,12 @@ MU = 0.02
 
 
 def plain(clearance: float = C) -> BearingGeometry:
-    return BearingGeometry(0.05, 0.025, clearance)
+    return BearingGeometry(diameter=0.05, width=0.025, radial_clearance=clearance)
 
 
 def grooved(clearance: float = C) -> BearingGeometry:
-    return BearingGeometry(0.05, 0.025, clearance, grooves=(Groove(width=0.004),))
+    return BearingGeometry(diameter=0.05, width=0.025, radial_clearance=clearance,
+                           grooves=(Groove(width=0.004),))
 
 
 MODELS = {
@@ -67,8 +68,10 @@ STATES = [  # (e_x/c, e_y/c, v_x/(c ω), v_y/(c ω), ω_j/ω, ω_b/ω)
 
 def state(row, clearance: float = C, deformation=None) -> FilmState:
     ex, ey, vx, vy, wj, wb = row
-    return FilmState(ex * clearance, ey * clearance, vx * clearance * SPEED,
-                     vy * clearance * SPEED, wj * SPEED, wb * SPEED, MU,
+    return FilmState(eccentricity_x=ex * clearance, eccentricity_y=ey * clearance,
+                     velocity_x=vx * clearance * SPEED,
+                     velocity_y=vy * clearance * SPEED, journal_speed=wj * SPEED,
+                     shell_speed=wb * SPEED, viscosity=MU,
                      deformation=deformation)
 
 
@@ -105,7 +108,7 @@ def test_no_force_at_the_centre_without_motion(model, tmp_path):
     """Concentric, at rest, no rotation: uniform gap and no squeeze, so p = 0 and F = 0."""
     _, make = model
     film = make(C, tmp_path)
-    fx, fy = film.force(FilmState(0.0, 0.0, viscosity=MU))
+    fx, fy = film.force(FilmState(eccentricity_x=0.0, eccentricity_y=0.0, viscosity=MU))
     assert fx == 0.0 and fy == 0.0
 
 

@@ -19,11 +19,12 @@ R = 0.5 * D
 
 
 def geometry(length_to_diameter: float, **kwargs) -> BearingGeometry:
-    return BearingGeometry(D, length_to_diameter * D, C, **kwargs)
+    return BearingGeometry(diameter=D, width=length_to_diameter * D, radial_clearance=C, **kwargs)
 
 
 def state_at(eps_x: float, eps_y: float, vx: float = 0.0, vy: float = 0.0) -> FilmState:
-    return FilmState(eps_x * C, eps_y * C, vx, vy, journal_speed=OMEGA, viscosity=MU)
+    return FilmState(eccentricity_x=eps_x * C, eccentricity_y=eps_y * C, velocity_x=vx,
+                     velocity_y=vy, journal_speed=OMEGA, viscosity=MU)
 
 
 @pytest.mark.parametrize("state", [state_at(0.5, 0.2, 1e-3, -2e-3), state_at(-0.3, 0.6),

@@ -217,7 +217,7 @@ def test_mechanism_warns_on_impacts_above_surface_speed():
 
 # -- corrupt film-table cache ----------------------------------------------------------------
 def _table(cache_dir):
-    geometry = BearingGeometry(0.05, 0.025, 25e-6)
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6)
     return TabulatedFilm(ShortBearingFilm(geometry), n_eps=5, n_direction=8,
                          cache_dir=cache_dir)
 

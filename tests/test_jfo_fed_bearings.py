@@ -38,7 +38,7 @@ bearings = st.fixed_dictionaries({
 def _problem(b) -> OrbitProblem:
     """Four-stroke big-end-like load: firing pulse on a rotating inertia load."""
     width = b["width_ratio"] * b["bore"]
-    geometry = BearingGeometry(b["bore"], width, b["clearance"],
+    geometry = BearingGeometry(diameter=b["bore"], width=width, radial_clearance=b["clearance"],
                                grooves=(Groove(width=0.1 * width),), supply_pressure=b["supply"])
     model = ReynoldsFilm if b["film"] == "reynolds" else MassConservingFilm
     omega = b["rpm"] * math.pi / 30.0
@@ -84,8 +84,8 @@ def test_tabulated_films_refuse_a_supply_pressure_naming_the_film_asked(film, tm
     from conrod.film.mobility import MobilityFilm
     from conrod.film.table import TabulatedFilm
 
-    geometry = BearingGeometry(0.05, 0.02, 25e-6, supply_pressure=3e5,
-                               grooves=(Groove(width=0.002),))
+    geometry = BearingGeometry(diameter=0.05, width=0.02, radial_clearance=25e-6,
+                               supply_pressure=3e5, grooves=(Groove(width=0.002),))
     with pytest.raises(CaseError) as error:
         if film == "mobility":
             MobilityFilm(geometry, cache_dir=tmp_path)

@@ -24,7 +24,8 @@ MU = 0.02  # [Pa s]
 
 def _full_film_geometry() -> BearingGeometry:
     """p_cav = −10 bar: the film never ruptures at these states."""
-    return BearingGeometry(0.05, 0.025, 25e-6, cavitation_pressure=-1.0e6)
+    return BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6,
+                           cavitation_pressure=-1.0e6)
 
 
 def test_content_step_of_a_full_film_is_reynolds():
@@ -32,7 +33,8 @@ def test_content_step_of_a_full_film_is_reynolds():
     with ∂h/∂t of the journal velocity, so the force equals the instantaneous full-film
     solve at the same state (to the solver tolerance)."""
     film = MassConservingFilm(_full_film_geometry(), n_theta=48, n_z=8, tolerance=1e-11)
-    state = FilmState(8e-6, -5e-6, 2e-3, 1e-3, 300.0, 0.0, MU)
+    state = FilmState(eccentricity_x=8e-6, eccentricity_y=-5e-6, velocity_x=2e-3, velocity_y=1e-3,
+                      journal_speed=300.0, shell_speed=0.0, viscosity=MU)
     fx, fy, after = film.content_step(state, film.initial_memory(), 1e-5)
     reference = film.solve(state)
     assert np.all(after.fraction == 1.0)
@@ -45,7 +47,8 @@ def test_content_step_answers_where_the_frozen_fraction_cannot():
     journal at rest): at a frozen fraction the broken cells hold p = p_cav whatever the
     velocity, so no force opposes the motion; over a step Δt the content ϑ^n h^n squeezed
     into h^{n+1} < ϑ^n h^n refills the gap, and the force grows with the squeeze velocity."""
-    film = MassConservingFilm(BearingGeometry(0.05, 0.025, 25e-6), n_theta=48, n_z=8)
+    film = MassConservingFilm(BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6),
+                              n_theta=48, n_z=8)
     theta, _ = film.grid()
     fraction = np.ones((48, 9))
     fraction[np.cos(theta) > 0.0, 1:-1] = 0.5
@@ -53,8 +56,11 @@ def test_content_step_answers_where_the_frozen_fraction_cannot():
     dt = 1e-5  # [s]: displacements 10, 15, 20 µm towards x = 20 µm (h^{n+1} = 5 µm)
     frozen_fx, step_fx = [], []
     for speed in (1.0, 1.5, 2.0):
-        state = FilmState(20e-6, 0.0, speed, 0.0, 0.0, 0.0, MU)
-        frozen = film.solve(FilmState(20e-6, 0.0, speed, 0.0, 0.0, 0.0, MU, history=fraction))
+        state = FilmState(eccentricity_x=20e-6, eccentricity_y=0.0, velocity_x=speed,
+                          velocity_y=0.0, journal_speed=0.0, shell_speed=0.0, viscosity=MU)
+        frozen = film.solve(FilmState(eccentricity_x=20e-6, eccentricity_y=0.0, velocity_x=speed,
+                                      velocity_y=0.0, journal_speed=0.0, shell_speed=0.0,
+                                      viscosity=MU, history=fraction))
         fx, _, after = film.content_step(state, memory, dt)
         frozen_fx.append(frozen.force_x)
         step_fx.append(fx)
@@ -115,8 +121,8 @@ def test_full_groove_bearing_with_the_default_integrator_finishes():
     from conrod.cases.solver import SolverSection
     from conrod.orbit.periodic import periodic_orbit
 
-    film = MassConservingFilm(BearingGeometry(0.05, 0.025, 25e-6, supply_pressure=3e5,
-                                              grooves=(Groove(width=0.003),)),
+    film = MassConservingFilm(BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6,
+                                              supply_pressure=3e5, grooves=(Groove(width=0.003),)),
                               n_theta=24, n_z=4)
     problem = OrbitProblem(film, rotating_load(), MU, 1.0, 1.0)
     settings = SolverSection(output_step_deg=10.0, max_cycles=6, massless_start=False)

@@ -29,12 +29,14 @@ def linear_full_film_force(eps: float, mu: float, omega: float, width: float) ->
 
 def test_full_film_matches_closed_form_with_second_order_convergence():
     width = 0.05
-    geometry = BearingGeometry(2 * RADIUS, width, CLEARANCE, cavitation_pressure=-1.0e6)
+    geometry = BearingGeometry(diameter=2 * RADIUS, width=width, radial_clearance=CLEARANCE,
+                               cavitation_pressure=-1.0e6)
     exact = linear_full_film_force(1e-3, 0.01, 100.0, width)
     errors, sizes = [], []
     for n_theta, n_z in ((36, 8), (72, 16), (144, 32)):
         model = MassConservingFilm(geometry, n_theta=n_theta, n_z=n_z, tolerance=1e-10)
-        result = model.solve(FilmState(1e-3 * CLEARANCE, 0.0, journal_speed=100.0, viscosity=0.01))
+        result = model.solve(FilmState(eccentricity_x=1e-3 * CLEARANCE, eccentricity_y=0.0,
+                                       journal_speed=100.0, viscosity=0.01))
         assert abs(result.force_x) < 1e-6 * exact
         errors.append(abs(result.force_y / exact - 1.0))
         sizes.append(1.0 / n_theta)
@@ -49,8 +51,9 @@ def test_full_history_equals_reynolds_swift_stieber():
     Both are second-order discretisations that differ in the face coefficients and in the
     peak-pressure read-out, so they agree to the O(Δ²) grid error of 72×16 (measured:
     forces 0.1 %, p_max 0.4 %), not to round-off."""
-    geometry = BearingGeometry(2 * RADIUS, 0.05, CLEARANCE)
-    state = FilmState(0.6 * CLEARANCE, 0.2 * CLEARANCE, 0.01, -0.005,
+    geometry = BearingGeometry(diameter=2 * RADIUS, width=0.05, radial_clearance=CLEARANCE)
+    state = FilmState(eccentricity_x=0.6 * CLEARANCE, eccentricity_y=0.2 * CLEARANCE,
+                      velocity_x=0.01, velocity_y=-0.005,
                       journal_speed=150.0, viscosity=0.02)
     jfo = MassConservingFilm(geometry, n_theta=72, n_z=16, tolerance=1e-9).solve(state)
     reynolds = ReynoldsFilm(geometry, n_theta=72, n_z=16, tolerance=1e-9).solve(state)
@@ -63,9 +66,10 @@ def test_steady_jfo_with_inlet_line_matches_raimondi_boyd_and_swift_stieber():
     """L/D = 1, ε = 0.8: published S = 0.0446 (Raimondi & Boyd 1958). With a full-film inlet
     line at the maximum gap the JFO rupture condition equals Swift–Stieber's, so the loads
     agree to solver tolerance (measured: |ΔW|/W < 1e-6); JFO inflow = side flow."""
-    geometry = BearingGeometry(2 * RADIUS, 2 * RADIUS, CLEARANCE)
+    geometry = BearingGeometry(diameter=2 * RADIUS, width=2 * RADIUS, radial_clearance=CLEARANCE)
     model = MassConservingFilm(geometry, n_theta=144, n_z=32)
-    state = FilmState(0.8 * CLEARANCE, 0.0, journal_speed=100.0, viscosity=0.01)
+    state = FilmState(eccentricity_x=0.8 * CLEARANCE, eccentricity_y=0.0, journal_speed=100.0,
+                      viscosity=0.01)
     jfo = model.solve_steady(state)
     stieber = model.solve_steady(state, cavitation="swift_stieber")
     load = math.hypot(jfo.force_x, jfo.force_y)
@@ -81,14 +85,15 @@ def whirling_state(t: float, history: np.ndarray, period: float) -> FilmState:
     w = 2 * math.pi / period
     c = 2.5e-5
     return FilmState(
-        c * (0.3 + 0.4 * math.sin(w * t)), 0.3 * c * math.cos(w * t),
-        0.4 * c * w * math.cos(w * t), -0.3 * c * w * math.sin(w * t),
+        eccentricity_x=c * (0.3 + 0.4 * math.sin(w * t)), eccentricity_y=0.3 * c * math.cos(w * t),
+        velocity_x=0.4 * c * w * math.cos(w * t), velocity_y=-0.3 * c * w * math.sin(w * t),
         journal_speed=200.0, viscosity=0.02, history=history)
 
 
 def conservation_defect(steps: int) -> tuple[float, float, float]:
     """Heun-integrate ϑ over one period; return (Δcontent, ∫(supply − side) dt, min ϑ)."""
-    geometry = BearingGeometry(0.05, 0.025, 2.5e-5, supply_pressure=2e5, grooves=(
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5,
+                               supply_pressure=2e5, grooves=(
         Groove(start_angle=math.radians(170), extent=math.radians(20), width=0.005),))
     model = MassConservingFilm(geometry, n_theta=48, n_z=8)
     period = 0.1
@@ -121,9 +126,10 @@ def test_mass_conservation_over_a_transient_converges_with_step():
 
 
 def test_history_rate_is_zero_in_the_pressurised_film_and_negative_at_rupture():
-    geometry = BearingGeometry(0.05, 0.025, 2.5e-5)
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
     model = MassConservingFilm(geometry, n_theta=48, n_z=8)
-    state = FilmState(1.5e-5, 0.0, journal_speed=200.0, viscosity=0.02,
+    state = FilmState(eccentricity_x=1.5e-5, eccentricity_y=0.0, journal_speed=200.0,
+                      viscosity=0.02,
                       history=model.initial_history())
     result = model.solve(state, with_pressure=True)
     rate = result.history_rate
@@ -136,10 +142,12 @@ def test_steady_feed_hole_jfo_differs_slightly_from_swift_stieber():
     """Oil only from a feed hole at the maximum gap (2 bar): the JFO film re-forms where the
     supplied oil allows, Swift–Stieber wherever its pressure turns positive. Measured load
     difference −1.7 % (−6.2 % at 0.5 bar, starved); JFO supply flow = side flow."""
-    geometry = BearingGeometry(0.05, 0.025, 2.5e-5, supply_pressure=2e5,
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5,
+                               supply_pressure=2e5,
                                feed_holes=(FeedHole(angle=math.pi, diameter=0.005),))
     model = MassConservingFilm(geometry, n_theta=72, n_z=16)
-    state = FilmState(0.7 * 2.5e-5, 0.0, journal_speed=200.0, viscosity=0.02)
+    state = FilmState(eccentricity_x=0.7 * 2.5e-5, eccentricity_y=0.0, journal_speed=200.0,
+                      viscosity=0.02)
     jfo = model.solve_steady(state, inlet_line=False)
     ruptured = float(model.last_film_fraction.min())
     stieber = model.solve_steady(state, inlet_line=False, cavitation="swift_stieber")
@@ -151,17 +159,20 @@ def test_steady_feed_hole_jfo_differs_slightly_from_swift_stieber():
 
 
 def test_steady_without_any_inlet_is_rejected():
-    model = MassConservingFilm(BearingGeometry(0.05, 0.025, 2.5e-5), n_theta=16, n_z=4)
+    model = MassConservingFilm(BearingGeometry(diameter=0.05, width=0.025,
+                                               radial_clearance=2.5e-5), n_theta=16, n_z=4)
     with pytest.raises(CaseError, match="no loaded steady"):
-        model.solve_steady(FilmState(1e-5, 0.0, journal_speed=100.0), inlet_line=False)
+        model.solve_steady(FilmState(eccentricity_x=1e-5, eccentricity_y=0.0,
+                                     journal_speed=100.0), inlet_line=False)
 
 
 def test_sor_and_multigrid_instants_agree_with_a_broken_film():
     """Both full-film solvers give the same instant, rates included, on a ruptured film."""
-    geometry = BearingGeometry(0.05, 0.025, 2.5e-5)
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
     history = np.ones((48, 9))
     history[30:40, 1:-1] = 0.4
-    state = FilmState(1.2e-5, 0.3e-5, 1e-4, 0.0, journal_speed=200.0, viscosity=0.02,
+    state = FilmState(eccentricity_x=1.2e-5, eccentricity_y=0.3e-5, velocity_x=1e-4, velocity_y=0.0,
+                      journal_speed=200.0, viscosity=0.02,
                       history=history)
     results = [MassConservingFilm(geometry, n_theta=48, n_z=8, method=method,
                                   tolerance=1e-10).solve(state) for method in ("sor", "multigrid")]
@@ -172,20 +183,24 @@ def test_sor_and_multigrid_instants_agree_with_a_broken_film():
 
 
 def test_bad_inputs_raise_case_errors():
-    model = MassConservingFilm(BearingGeometry(0.05, 0.025, 2.5e-5), n_theta=16, n_z=4)
+    model = MassConservingFilm(BearingGeometry(diameter=0.05, width=0.025,
+                                               radial_clearance=2.5e-5), n_theta=16, n_z=4)
     with pytest.raises(CaseError, match="touches the shell"):
-        model.solve(FilmState(2.6e-5, 0.0, journal_speed=100.0))
+        model.solve(FilmState(eccentricity_x=2.6e-5, eccentricity_y=0.0, journal_speed=100.0))
     with pytest.raises(CaseError, match="deformation shape"):
-        model.solve(FilmState(1e-5, 0.0, journal_speed=100.0, deformation=np.zeros((16, 4))))
+        model.solve(FilmState(eccentricity_x=1e-5, eccentricity_y=0.0, journal_speed=100.0,
+                              deformation=np.zeros((16, 4))))
     with pytest.raises(CaseError, match="viscosity"):
-        model.solve(FilmState(1e-5, 0.0, journal_speed=100.0, viscosity=0.0))
+        model.solve(FilmState(eccentricity_x=1e-5, eccentricity_y=0.0, journal_speed=100.0,
+                              viscosity=0.0))
 
 
 def test_deformation_field_is_additive():
     """A uniform δ is the same as a larger clearance (h = c − e·n + δ)."""
-    geometry = BearingGeometry(0.05, 0.025, 2.5e-5)
-    wider = BearingGeometry(0.05, 0.025, 3.0e-5)
-    state = FilmState(1.5e-5, 0.0, journal_speed=200.0, viscosity=0.02)
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
+    wider = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=3.0e-5)
+    state = FilmState(eccentricity_x=1.5e-5, eccentricity_y=0.0, journal_speed=200.0,
+                      viscosity=0.02)
     model = MassConservingFilm(geometry, n_theta=32, n_z=8, tolerance=1e-10)
     deformed = model.solve(FilmState(**{**state.__dict__,
                                         "deformation": np.full((32, 9), 0.5e-5)}))

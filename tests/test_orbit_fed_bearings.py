@@ -28,7 +28,7 @@ bearings = st.fixed_dictionaries({
 
 def _problem(b) -> OrbitProblem:
     width = 0.4 * b["bore"]
-    geometry = BearingGeometry(b["bore"], width, b["clearance"],
+    geometry = BearingGeometry(diameter=b["bore"], width=width, radial_clearance=b["clearance"],
                                grooves=(Groove(width=0.1 * width),),
                                supply_pressure=b["supply"])
     film = ReynoldsFilm(geometry, n_theta=24, n_z=8)

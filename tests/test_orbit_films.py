@@ -13,14 +13,16 @@ from conrod.film.short_bearing import ShortBearingFilm
 
 
 def grooved(width: float) -> BearingGeometry:
-    return BearingGeometry(0.1, width, 50e-6, grooves=(Groove(0.0, 2 * math.pi, 0.004, 0.0),))
+    return BearingGeometry(diameter=0.1, width=width, radial_clearance=50e-6,
+                           grooves=(Groove(0.0, 2 * math.pi, 0.004, 0.0),))
 
 
 def test_short_film_with_a_central_groove_becomes_two_lands():
     film = build_film_model(SolverSection(film="short"), grooved(0.04))
     assert isinstance(film, GroovedShortBearingFilm)
     assert film.land.geometry.width == pytest.approx(0.018)
-    plain = build_film_model(SolverSection(film="short"), BearingGeometry(0.1, 0.04, 50e-6))
+    plain = build_film_model(SolverSection(film="short"), BearingGeometry(diameter=0.1, width=0.04,
+                                                                          radial_clearance=50e-6))
     assert isinstance(plain, ShortBearingFilm)
 
 
@@ -28,7 +30,8 @@ def test_two_land_short_bearing_agrees_with_grooved_finite_difference_film():
     """Short lands (L_land/D = 0.18): Ocvirk on each land vs Reynolds with the groove."""
     reynolds = pytest.importorskip("conrod.film.reynolds")
     geometry = grooved(0.04)
-    state = FilmState(30e-6, 10e-6, 0.002, -0.001, 300.0, 0.0, 0.01)
+    state = FilmState(eccentricity_x=30e-6, eccentricity_y=10e-6, velocity_x=0.002,
+                      velocity_y=-0.001, journal_speed=300.0, shell_speed=0.0, viscosity=0.01)
     short = GroovedShortBearingFilm.from_geometry(geometry).solve(state)
     fd = reynolds.ReynoldsFilm(geometry, n_theta=144, n_z=66, tolerance=1e-10).solve(state)
     # measured: forces within 2.1 %, side flow within 0.4 % (144 x 66 grid)

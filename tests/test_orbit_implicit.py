@@ -163,7 +163,8 @@ def test_map_films_refuse_a_supply_pressure_naming_the_film_asked(name):
     from conrod.film.reynolds import ReynoldsFilm
     from conrod.film.table import TabulatedFilm
 
-    fed = BearingGeometry(0.05, 0.025, 25e-6, grooves=(Groove(width=0.004),),
+    fed = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6,
+                          grooves=(Groove(width=0.004),),
                           supply_pressure=3e5)
     with pytest.raises(CaseError, match=f"film '{name}'.*use film 'reynolds'"):
         if name == "mobility":
@@ -192,8 +193,10 @@ def test_constant_load_on_reynolds_film_settles_at_the_steady_point_in_three_cyc
 
     def balance(polar):
         eps, angle = polar
-        fx, fy = film.force(FilmState(eps * c * math.cos(angle), eps * c * math.sin(angle),
-                                      0.0, 0.0, SPEED, 0.0, 0.01))
+        fx, fy = film.force(FilmState(eccentricity_x=eps * c * math.cos(angle),
+                                      eccentricity_y=eps * c * math.sin(angle),
+                                      velocity_x=0.0, velocity_y=0.0, journal_speed=SPEED,
+                                      shell_speed=0.0, viscosity=0.01))
         return [(fx + load) / load, fy / load]
 
     eps_ref, angle_ref = fsolve(balance, [0.5, 1.0], xtol=1e-12)

@@ -30,7 +30,8 @@ OMEGA = 200.0  # crank = journal speed [rad/s]
 
 def fed_bearing() -> BearingGeometry:
     """D = 50 mm, L = 25 mm, c = 25 µm, 3 mm central groove at 0.3 MPa."""
-    return BearingGeometry(0.05, 0.025, 25e-6, supply_pressure=3.0e5,
+    return BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6,
+                           supply_pressure=3.0e5,
                            grooves=(Groove(0.0, 2 * math.pi, 0.003, 0.0),))
 
 

@@ -31,7 +31,9 @@ def coarse_film(**kwargs) -> ReynoldsFilm:
 
 
 def force(film, x, y, vx, vy, wj=0.0, wb=0.0):
-    return np.array(film.force(FilmState(x, y, vx, vy, wj, wb, MU)))
+    return np.array(film.force(FilmState(eccentricity_x=x, eccentricity_y=y, velocity_x=vx,
+                                         velocity_y=vy, journal_speed=wj, shell_speed=wb,
+                                         viscosity=MU)))
 
 
 def test_squeeze_force_is_homogeneous_of_degree_one():
@@ -71,7 +73,7 @@ def test_squeeze_velocity_equals_newton_and_balances_the_load(variant):
     geo = geometry()
     if variant == "groove":  # an ambient partial groove off the mid-plane: no z-symmetry
         groove = Groove(start_angle=1.0, extent=2.0, width=0.004, axial_position=0.005)
-        geo = BearingGeometry(0.05, 0.025, 25e-6, grooves=(groove,))
+        geo = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6, grooves=(groove,))
     film = coarse_film(geometry=geo)
     if variant == "n_z=6":  # half grid with an odd interval count: full-grid solve
         film = ReynoldsFilm(geo, n_theta=48, n_z=6)
@@ -89,9 +91,11 @@ def test_squeeze_velocity_equals_newton_and_balances_the_load(variant):
 
 def test_reduction_not_used_where_it_is_not_exact():
     loads = load_cycle(np.cos, np.sin)
-    fed = BearingGeometry(0.05, 0.025, 25e-6, grooves=(Groove(width=0.003),),
+    fed = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6,
+                          grooves=(Groove(width=0.003),),
                           supply_pressure=3e5)
-    cavitating = BearingGeometry(0.05, 0.025, 25e-6, cavitation_pressure=-1e4)
+    cavitating = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6,
+                                 cavitation_pressure=-1e4)
     for geo in (fed, cavitating):
         assert short_problem(loads, film=coarse_film(geometry=geo)).kernel is None
     assert short_problem(loads, film=coarse_film(method="sor")).kernel is None
@@ -129,7 +133,9 @@ def test_compiled_table_orbit_balances_the_table_force_and_follows_reynolds(tmp_
     run = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
     load_x, load_y = loads.load(run.crank_angle)
     for k in np.flatnonzero(run.contact_force == 0.0)[::7]:
-        f = table.force(FilmState(run.x[k], run.y[k], run.vx[k], run.vy[k], SPEED, 0.0, MU))
+        f = table.force(FilmState(eccentricity_x=run.x[k], eccentricity_y=run.y[k],
+                                  velocity_x=run.vx[k], velocity_y=run.vy[k], journal_speed=SPEED,
+                                  shell_speed=0.0, viscosity=MU))
         assert math.hypot(f[0] + load_x[k], f[1] + load_y[k]) < 1e-8 * math.hypot(
             load_x[k], load_y[k])
     direct = qs.quasi_static_cycle(short_problem(loads, film=base, viscosity=MU),

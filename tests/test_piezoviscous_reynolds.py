@@ -28,12 +28,14 @@ BARUS = PressureViscosity("barus", coefficient=2.0e-8)
 
 def full_film_geometry(supply: float = 0.0) -> BearingGeometry:
     grooves = (Groove(width=0.002),) if supply else ()
-    return BearingGeometry(D, L, C, grooves=grooves, supply_pressure=supply,
+    return BearingGeometry(diameter=D, width=L, radial_clearance=C, grooves=grooves,
+                           supply_pressure=supply,
                            cavitation_pressure=FULL_FILM)
 
 
 def loaded_state(eps: float = 0.6, omega: float = 400.0) -> FilmState:
-    return FilmState(eps * C * math.cos(0.4), eps * C * math.sin(0.4), velocity_x=2e-4,
+    return FilmState(eccentricity_x=eps * C * math.cos(0.4), eccentricity_y=eps * C * math.sin(0.4),
+                     velocity_x=2e-4,
                      journal_speed=omega, viscosity=MU0)
 
 
@@ -119,7 +121,7 @@ def test_barus_full_film_matches_picard_reference(supply):
 
 
 def test_vanishing_coefficient_reproduces_isoviscous_film_to_round_off():
-    geometry = BearingGeometry(D, L, C)
+    geometry = BearingGeometry(diameter=D, width=L, radial_clearance=C)
     state = loaded_state(0.8)
     iso = ReynoldsFilm(geometry, n_theta=72, n_z=16).solve(state, with_pressure=True)
     tiny = PressureViscosity("barus", coefficient=1.0e-30)
@@ -159,7 +161,8 @@ def test_roelands_and_barus_agree_at_low_pressure():
     roelands = PressureViscosity("roelands", roelands_index=0.6)
     barus = PressureViscosity("barus", coefficient=roelands.initial_coefficient(MU0))
     assert barus.coefficient == pytest.approx((math.log(MU0) + 9.67) * 0.6 / 1.96e8, rel=1e-12)
-    geometry, state = BearingGeometry(D, L, C), loaded_state(0.5, omega=150.0)
+    geometry, state = BearingGeometry(diameter=D, width=L,
+                                      radial_clearance=C), loaded_state(0.5, omega=150.0)
     forces = {}
     for name, law in (("iso", None), ("barus", barus), ("roelands", roelands)):
         result = ReynoldsFilm(geometry, 72, 16, pressure_viscosity=law).solve(state)
@@ -172,7 +175,8 @@ def test_roelands_and_barus_agree_at_low_pressure():
 
 def test_mass_conserving_full_film_equals_reynolds_film():
     """Without a broken film the JFO film is the Swift–Stieber one, also in q."""
-    geometry = BearingGeometry(D, L, C, grooves=(Groove(width=0.002),), supply_pressure=3e5)
+    geometry = BearingGeometry(diameter=D, width=L, radial_clearance=C,
+                               grooves=(Groove(width=0.002),), supply_pressure=3e5)
     state = loaded_state(0.7)
     reynolds = ReynoldsFilm(geometry, 72, 16, pressure_viscosity=BARUS).solve(state)
     jfo = MassConservingFilm(geometry, 72, 16, tolerance=1e-11,
@@ -187,7 +191,8 @@ def test_flows_balance_and_shear_uses_pressure_viscosity():
     """Fed, steady, full film: supply flow = side flow (the flux depends on q only); the
     Couette shear grows with μ(p)."""
     geometry = full_film_geometry(1.0e6)
-    state = FilmState(0.5 * C, 0.0, journal_speed=300.0, viscosity=MU0)
+    state = FilmState(eccentricity_x=0.5 * C, eccentricity_y=0.0, journal_speed=300.0,
+                      viscosity=MU0)
     iso = ReynoldsFilm(geometry, 96, 24).solve(state)
     piezo = ReynoldsFilm(geometry, 96, 24, pressure_viscosity=BARUS).solve(state)
     assert piezo.supply_flow == pytest.approx(piezo.side_flow, rel=1e-9)
@@ -199,7 +204,8 @@ def test_pressure_beyond_the_asymptote_stays_finite_and_is_reported():
     diagnostics in ``extra``, no NaN."""
     law = PressureViscosity("barus", coefficient=2.5e-8, limit_pressure=1.0e9)
     state = loaded_state(0.95, omega=600.0)
-    result = ReynoldsFilm(BearingGeometry(D, L, C), 72, 16, pressure_viscosity=law).solve(
+    geometry = BearingGeometry(diameter=D, width=L, radial_clearance=C)
+    result = ReynoldsFilm(geometry, 72, 16, pressure_viscosity=law).solve(
         state, with_pressure=True)
     assert np.all(np.isfinite(result.pressure))
     assert result.extra["piezoviscous_reduced_to_limit_max"] > 1.0
@@ -211,15 +217,18 @@ def test_piezoviscous_jfo_transient_conserves_mass():
     """Whirling journal over one period with a ruptured and re-formed film: the change of
     the film content equals ∫(supply − side flow) dt within 1 % (flows are exact in q)."""
     law = PressureViscosity("barus", coefficient=1.0e-7)  # strong: max αp ≈ 0.4
-    geometry = BearingGeometry(0.05, 0.025, 2.5e-5, supply_pressure=2e5, grooves=(
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5,
+                               supply_pressure=2e5, grooves=(
         Groove(start_angle=math.radians(170), extent=math.radians(20), width=0.005),))
     model = MassConservingFilm(geometry, n_theta=48, n_z=8, pressure_viscosity=law)
     period, steps = 0.1, 400
     dt, w, c = period / steps, 2 * math.pi / period, 2.5e-5
 
     def state(t, history):
-        return FilmState(c * (0.3 + 0.4 * math.sin(w * t)), 0.3 * c * math.cos(w * t),
-                         0.4 * c * w * math.cos(w * t), -0.3 * c * w * math.sin(w * t),
+        return FilmState(eccentricity_x=c * (0.3 + 0.4 * math.sin(w * t)),
+                         eccentricity_y=0.3 * c * math.cos(w * t),
+                         velocity_x=0.4 * c * w * math.cos(w * t),
+                         velocity_y=-0.3 * c * w * math.sin(w * t),
                          journal_speed=200.0, viscosity=0.02, history=history)
 
     history = model.initial_history()

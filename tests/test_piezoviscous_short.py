@@ -19,7 +19,8 @@ from conrod.film.short_bearing import ShortBearingFilm
 MU0, D, L, C = 0.0065, 0.05, 0.02, 2.5e-5
 R = 0.5 * D
 BARUS = PressureViscosity("barus", coefficient=1.5e-8)
-STATE = FilmState(0.8 * C * math.cos(1.0), 0.8 * C * math.sin(1.0), velocity_x=0.004,
+STATE = FilmState(eccentricity_x=0.8 * C * math.cos(1.0), eccentricity_y=0.8 * C * math.sin(1.0),
+                  velocity_x=0.004,
                   velocity_y=-0.002, journal_speed=210.0, viscosity=MU0)
 
 
@@ -48,7 +49,7 @@ def quadrature_force(state: FilmState, law: PressureViscosity) -> np.ndarray:
 
 def test_zero_coefficient_reproduces_closed_form_to_round_off():
     law = PressureViscosity("barus", coefficient=0.0)
-    geometry = BearingGeometry(D, L, C)
+    geometry = BearingGeometry(diameter=D, width=L, radial_clearance=C)
     closed = ShortBearingFilm(geometry).solve(STATE)
     mapped = ShortBearingFilm(geometry, pressure_viscosity=law).solve(STATE)
     assert mapped.force_x == pytest.approx(closed.force_x, rel=1e-11)
@@ -59,10 +60,11 @@ def test_zero_coefficient_reproduces_closed_form_to_round_off():
 
 @pytest.mark.parametrize("law", [BARUS, PressureViscosity("roelands", roelands_index=0.6)])
 def test_piezoviscous_force_matches_adaptive_quadrature(law):
-    film = ShortBearingFilm(BearingGeometry(D, L, C), pressure_viscosity=law)
+    film = ShortBearingFilm(BearingGeometry(diameter=D, width=L,
+                                            radial_clearance=C), pressure_viscosity=law)
     result = film.solve(STATE)
     reference = quadrature_force(STATE, law)
-    iso = ShortBearingFilm(BearingGeometry(D, L, C)).solve(STATE)
+    iso = ShortBearingFilm(BearingGeometry(diameter=D, width=L, radial_clearance=C)).solve(STATE)
     assert np.hypot(result.force_x - reference[0], result.force_y - reference[1]) <= (
         1e-6 * np.hypot(*reference))
     assert np.hypot(*reference) > 1.2 * math.hypot(iso.force_x, iso.force_y)
@@ -73,15 +75,18 @@ def test_piezoviscous_force_matches_adaptive_quadrature(law):
 
 def test_factory_passes_law_and_maps_refuse_it():
     solver = validate_section(SolverSection, {"film": "short"}, "solver")
-    film = build_film_model(solver, BearingGeometry(D, L, C), pressure_viscosity=BARUS)
+    film = build_film_model(solver, BearingGeometry(diameter=D, width=L,
+                                                    radial_clearance=C), pressure_viscosity=BARUS)
     assert film.pressure_viscosity is BARUS
-    grooved = BearingGeometry(D, L, C, grooves=(Groove(width=0.003),))
+    grooved = BearingGeometry(diameter=D, width=L, radial_clearance=C,
+                              grooves=(Groove(width=0.003),))
     two_lands = build_film_model(solver, grooved, pressure_viscosity=BARUS)
     assert isinstance(two_lands, GroovedShortBearingFilm)
     assert two_lands.land.pressure_viscosity is BARUS
     for name in ("table", "mobility"):
         with pytest.raises(CaseError, match="pressure_viscosity"):
-            build_film_model(solver, BearingGeometry(D, L, C), name=name,
+            build_film_model(solver, BearingGeometry(diameter=D, width=L,
+                                                     radial_clearance=C), name=name,
                              pressure_viscosity=BARUS)
 
 
@@ -106,6 +111,7 @@ def test_table_over_a_piezoviscous_base_is_refused():
     from conrod.film.reynolds import ReynoldsFilm
     from conrod.film.table import TabulatedFilm
 
-    base = ReynoldsFilm(BearingGeometry(D, L, C), 36, 8, pressure_viscosity=BARUS)
+    base = ReynoldsFilm(BearingGeometry(diameter=D, width=L,
+                                        radial_clearance=C), 36, 8, pressure_viscosity=BARUS)
     with pytest.raises(CaseError, match="force ∝ μω"):
         TabulatedFilm(base, use_cache=False)

@@ -25,8 +25,8 @@ def _state(step: int) -> FilmState:
     """Journal at ε ≈ 0.6, squeezing and creeping by 0.002 rad per step."""
     angle = 0.002 * step
     c = GEOMETRY.radial_clearance
-    return FilmState(0.6 * c * np.cos(angle), 0.6 * c * np.sin(angle), 2e-4, -1e-4,
-                     journal_speed=200.0, viscosity=0.02)
+    return FilmState(eccentricity_x=0.6 * c * np.cos(angle), eccentricity_y=0.6 * c * np.sin(angle),
+                     velocity_x=2e-4, velocity_y=-1e-4, journal_speed=200.0, viscosity=0.02)
 
 
 def _direct_pressure(film: ReynoldsFilm, state: FilmState, active: np.ndarray) -> np.ndarray:

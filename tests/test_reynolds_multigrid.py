@@ -19,7 +19,8 @@ def test_converged_pressure_is_the_complementarity_solution(grid):
     (the W-cycle path runs at 288×64: four coarse levels)."""
     n_theta, n_z = grid
     film = ReynoldsFilm(GEOMETRY, n_theta=n_theta, n_z=n_z, tolerance=1e-13)
-    state = FilmState(15e-6, 5e-6, 1e-3, 0.0, journal_speed=200.0, viscosity=0.02)
+    state = FilmState(eccentricity_x=15e-6, eccentricity_y=5e-6, velocity_x=1e-3, velocity_y=0.0,
+                      journal_speed=200.0, viscosity=0.02)
     pressure = film.solve(state, with_pressure=True).pressure
     problem = film._problem(state)
     g = film.film_grid

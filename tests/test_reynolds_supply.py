@@ -24,9 +24,12 @@ def test_central_groove_splits_bearing_into_two_lands():
     """A full central groove at ambient pressure: force = 2 × bearing of one land width."""
     step = D / 34
     groove = Groove(width=2.0 * step)  # covers the 3 central axial nodes
-    grooved = ReynoldsFilm(BearingGeometry(D, D, C, grooves=(groove,)), n_theta=72, n_z=34)
-    land = ReynoldsFilm(BearingGeometry(D, 16 * step, C), n_theta=72, n_z=16)
-    state = FilmState(0.6 * C, 0.2 * C, velocity_x=1e-3, journal_speed=OMEGA, viscosity=MU)
+    grooved = ReynoldsFilm(BearingGeometry(diameter=D, width=D, radial_clearance=C,
+                                           grooves=(groove,)), n_theta=72, n_z=34)
+    land = ReynoldsFilm(BearingGeometry(diameter=D, width=16 * step,
+                                        radial_clearance=C), n_theta=72, n_z=16)
+    state = FilmState(eccentricity_x=0.6 * C, eccentricity_y=0.2 * C, velocity_x=1e-3,
+                      journal_speed=OMEGA, viscosity=MU)
     whole, half = grooved.solve(state), land.solve(state)
     assert whole.force_x == pytest.approx(2 * half.force_x, rel=1e-5)
     assert whole.force_y == pytest.approx(2 * half.force_y, rel=1e-5)
@@ -38,9 +41,10 @@ def test_pressurised_groove_without_motion_has_closed_form_flow():
     supply = 3.0e5
     step = D / 32
     groove = Groove(width=2.0 * step)
-    film = ReynoldsFilm(BearingGeometry(D, D, C, grooves=(groove,), supply_pressure=supply),
+    film = ReynoldsFilm(BearingGeometry(diameter=D, width=D, radial_clearance=C, grooves=(groove,),
+                                        supply_pressure=supply),
                         n_theta=36, n_z=32)
-    result = film.solve(FilmState(0.0, 0.0, viscosity=MU))
+    result = film.solve(FilmState(eccentricity_x=0.0, eccentricity_y=0.0, viscosity=MU))
     land = 15 * step
     exact = 2 * 2 * math.pi * R * C**3 * supply / (12 * MU * land)
     assert result.supply_flow == pytest.approx(exact, rel=1e-6)
@@ -49,9 +53,11 @@ def test_pressurised_groove_without_motion_has_closed_form_flow():
 
 
 def test_supply_flow_equals_side_flow_without_cavitation():
-    g = BearingGeometry(D, 0.8 * D, C, grooves=(Groove(width=0.01),), supply_pressure=5.0e6)
+    g = BearingGeometry(diameter=D, width=0.8 * D, radial_clearance=C,
+                        grooves=(Groove(width=0.01),), supply_pressure=5.0e6)
     result = ReynoldsFilm(g, n_theta=72, n_z=16, tolerance=1e-12).solve(
-        FilmState(0.3 * C, 0.0, journal_speed=0.1 * OMEGA, viscosity=MU))
+        FilmState(eccentricity_x=0.3 * C, eccentricity_y=0.0, journal_speed=0.1 * OMEGA,
+                  viscosity=MU))
     assert result.cavitated_fraction == 0.0
     assert result.supply_flow > 0.0
     assert result.supply_flow == pytest.approx(result.side_flow, rel=1e-9)
@@ -60,9 +66,11 @@ def test_supply_flow_equals_side_flow_without_cavitation():
 def test_flow_balance_with_cavitation_and_squeeze():
     """Σ boundary flows = ∫∂h/∂t dA: supply − side + cavitation term − squeeze = 0."""
     hole = FeedHole(angle=2.0, diameter=0.008)
-    g = BearingGeometry(D, 0.6 * D, C, feed_holes=(hole,), supply_pressure=2.0e5)
+    g = BearingGeometry(diameter=D, width=0.6 * D, radial_clearance=C, feed_holes=(hole,),
+                        supply_pressure=2.0e5)
     film = ReynoldsFilm(g, n_theta=72, n_z=16, tolerance=1e-12)
-    result = film.solve(FilmState(0.7 * C, 0.1 * C, velocity_x=2e-3, velocity_y=-1e-3,
+    result = film.solve(FilmState(eccentricity_x=0.7 * C, eccentricity_y=0.1 * C, velocity_x=2e-3,
+                                  velocity_y=-1e-3,
                                   journal_speed=OMEGA, viscosity=MU))
     assert result.cavitated_fraction > 0.1
     balance = (result.supply_flow - result.side_flow
@@ -80,7 +88,8 @@ def test_supply_masks_rasterise_features():
         np.arange(90.0, 180.1, 5.0).tolist())
     tiny = hole_mask(FeedHole(angle=1.0, diameter=1e-6), grid)
     assert tiny.sum() == 1
-    both = supply_mask(BearingGeometry(D, D, C, grooves=(partial,)), grid)
+    both = supply_mask(BearingGeometry(diameter=D, width=D, radial_clearance=C,
+                                       grooves=(partial,)), grid)
     assert not both[:, [0, -1]].any()
 
 

@@ -61,8 +61,9 @@ def test_pure_squeeze_closed_form():
 
 
 def test_counter_rotation_gives_no_wedge_force():
-    model = ShortBearingFilm(BearingGeometry(2 * R, L, C))
-    state = FilmState(12e-6, -4e-6, 0.0, 0.0, journal_speed=250.0, shell_speed=-250.0, viscosity=MU)
+    model = ShortBearingFilm(BearingGeometry(diameter=2 * R, width=L, radial_clearance=C))
+    state = FilmState(eccentricity_x=12e-6, eccentricity_y=-4e-6, velocity_x=0.0, velocity_y=0.0,
+                      journal_speed=250.0, shell_speed=-250.0, viscosity=MU)
     assert model.force(state) == (0.0, 0.0)
 
 
@@ -74,8 +75,9 @@ def test_half_speed_whirl_has_no_capacity():
 
 
 def test_solve_reports_consistent_characteristics():
-    model = ShortBearingFilm(BearingGeometry(2 * R, L, C))
-    state = FilmState(15e-6, 0.0, 0.0, 0.0, journal_speed=300.0, viscosity=MU)
+    model = ShortBearingFilm(BearingGeometry(diameter=2 * R, width=L, radial_clearance=C))
+    state = FilmState(eccentricity_x=15e-6, eccentricity_y=0.0, velocity_x=0.0, velocity_y=0.0,
+                      journal_speed=300.0, viscosity=MU)
     result = model.solve(state, with_pressure=True)
     assert result.min_film_thickness == pytest.approx(C - 15e-6)
     assert result.min_film_angle == pytest.approx(0.0, abs=1e-12)

@@ -68,9 +68,11 @@ def test_friction_power_is_torque_times_relative_speed(table_run):
 def test_friction_torque_matches_raimondi_boyd_friction_variable():
     """Steady short bearing: (R/c) f = 2π² S/√(1−ε²) + ε sin φ/2 (Raimondi & Boyd)."""
     radius, width, c, mu, omega = 0.025, 0.02, 30e-6, 0.01, 300.0
-    film = ShortBearingFilm(BearingGeometry(2 * radius, width, c))
+    film = ShortBearingFilm(BearingGeometry(diameter=2 * radius, width=width, radial_clearance=c))
     eps, psi = 0.6, 0.3
-    state = FilmState(eps * c * math.cos(psi), eps * c * math.sin(psi), 0, 0, omega, 0, mu)
+    state = FilmState(eccentricity_x=eps * c * math.cos(psi),
+                      eccentricity_y=eps * c * math.sin(psi), velocity_x=0, velocity_y=0,
+                      journal_speed=omega, shell_speed=0, viscosity=mu)
     r = film.solve(state)
     load = math.hypot(r.force_x, r.force_y)
     radial = r.force_x * math.cos(psi) + r.force_y * math.sin(psi)  # on the line of centres
@@ -85,9 +87,10 @@ def test_friction_torque_matches_raimondi_boyd_friction_variable():
 
 def test_side_flow_equals_edge_flux_of_the_pressure_field():
     """Flow balance: the reported side flow is the Poiseuille flux through both edges."""
-    geometry = BearingGeometry(0.05, 0.02, 30e-6)
+    geometry = BearingGeometry(diameter=0.05, width=0.02, radial_clearance=30e-6)
     film = ShortBearingFilm(geometry, n_theta=2000, n_z=201)
-    state = FilmState(12e-6, -9e-6, 4e-3, 2e-3, 300.0, 0.0, 0.01)
+    state = FilmState(eccentricity_x=12e-6, eccentricity_y=-9e-6, velocity_x=4e-3, velocity_y=2e-3,
+                      journal_speed=300.0, shell_speed=0.0, viscosity=0.01)
     result = film.solve(state, with_pressure=True)
     theta, z = film.grid()
     h = 30e-6 - 12e-6 * np.cos(theta) + 9e-6 * np.sin(theta)

@@ -51,7 +51,7 @@ def test_default_grid_within_half_percent_at_high_eccentricity():
 def test_dimensional_mode_inverts_the_dimensionless_point():
     """W from S at ε = 0.7 (L/D = 1) must give back ε = 0.7 and the same attitude."""
     point = raimondi_boyd_point(1.0, 0.7)
-    geometry = BearingGeometry(0.05, 0.05, 4.0e-5)
+    geometry = BearingGeometry(diameter=0.05, width=0.05, radial_clearance=4.0e-5)
     radius, clearance = geometry.radius, geometry.radial_clearance
     speed = 2.0 * math.pi * 50.0
     viscosity = 0.015
@@ -68,7 +68,7 @@ def test_dimensional_mode_inverts_the_dimensionless_point():
 
 
 def test_dimensional_mode_rejects_load_beyond_capacity():
-    geometry = BearingGeometry(0.05, 0.05, 4.0e-5)
+    geometry = BearingGeometry(diameter=0.05, width=0.05, radial_clearance=4.0e-5)
     with pytest.raises(CaseError, match="film capacity"):
         solve_for_load(1e12, 300.0, 0.01, geometry)
 

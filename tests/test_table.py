@@ -40,10 +40,12 @@ def test_booker_reduction_rotation_is_equivalent_to_squeeze():
     ω̄ = (ω_j + ω_b)/2 at fixed ε carries nothing (half-speed whirl)."""
     short = ShortBearingFilm(GEOMETRY)
     ex, ey, omega = 1.0e-5, 0.5e-5, 300.0
-    whirl = FilmState(ex, ey, -0.5 * omega * ey, 0.5 * omega * ex,
+    whirl = FilmState(eccentricity_x=ex, eccentricity_y=ey, velocity_x=-0.5 * omega * ey,
+                      velocity_y=0.5 * omega * ex,
                       journal_speed=omega, viscosity=0.02)
     fx, fy = short.force(whirl)
-    static = short.force(FilmState(ex, ey, journal_speed=omega, viscosity=0.02))
+    static = short.force(FilmState(eccentricity_x=ex, eccentricity_y=ey, journal_speed=omega,
+                                   viscosity=0.02))
     assert math.hypot(fx, fy) < 1e-9 * math.hypot(*static)
 
 
@@ -56,7 +58,8 @@ def test_cache_hit_is_bit_identical_and_keys_differ(tmp_path):
     for _ in range(20):
         ex, ey = rng.uniform(-1.5e-5, 1.5e-5, size=2)
         vx, vy = rng.uniform(-1e-3, 1e-3, size=2)
-        state = FilmState(ex, ey, vx, vy, journal_speed=200.0, viscosity=0.02)
+        state = FilmState(eccentricity_x=ex, eccentricity_y=ey, velocity_x=vx, velocity_y=vy,
+                          journal_speed=200.0, viscosity=0.02)
         assert first.force(state) == second.force(state)
     wider = BearingGeometry(diameter=0.05, width=0.03, radial_clearance=2.5e-5)
     other = TabulatedFilm(ShortBearingFilm(wider), n_eps=8, n_direction=16, cache_dir=tmp_path)
@@ -67,7 +70,8 @@ def test_cache_hit_is_bit_identical_and_keys_differ(tmp_path):
 
 
 def test_feed_hole_is_rejected_with_case_error():
-    holed = BearingGeometry(0.05, 0.025, 2.5e-5, feed_holes=(FeedHole(angle=0.0, diameter=4e-3),))
+    holed = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5,
+                            feed_holes=(FeedHole(angle=0.0, diameter=4e-3),))
     with pytest.raises(CaseError, match="feed holes"):
         TabulatedFilm(ShortBearingFilm(holed), use_cache=False)
 
@@ -76,7 +80,8 @@ def test_solve_friction_matches_short_bearing_full_film_convention(tmp_path):
     """Table friction uses the exact rigid-bearing full-film moments, as ShortBearingFilm."""
     short = ShortBearingFilm(GEOMETRY)
     table = TabulatedFilm(short, cache_dir=tmp_path)
-    state = FilmState(1.2e-5, -0.8e-5, 2e-4, 1e-4, journal_speed=250.0, viscosity=0.02)
+    state = FilmState(eccentricity_x=1.2e-5, eccentricity_y=-0.8e-5, velocity_x=2e-4,
+                      velocity_y=1e-4, journal_speed=250.0, viscosity=0.02)
     expected, got = short.solve(state), table.solve(state)
     assert got.friction_torque_journal == pytest.approx(expected.friction_torque_journal, rel=5e-3)
     assert got.side_flow == pytest.approx(expected.side_flow, rel=2e-2)

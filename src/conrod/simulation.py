@@ -355,9 +355,11 @@ def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list 
     mass-conserving film); (None, None) for a film without a pressure field."""
     i = int(cycle.p_max.argmax())
     state = FilmState(
-        float(cycle.eccentricity_x[i]), float(cycle.eccentricity_y[i]),
-        float(cycle.velocity_x[i]), float(cycle.velocity_y[i]),
-        float(cycle.journal_speed[i]), float(cycle.shell_speed[i]), problem.viscosity,
+        eccentricity_x=float(cycle.eccentricity_x[i]),
+        eccentricity_y=float(cycle.eccentricity_y[i]),
+        velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
+        journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
+        viscosity=problem.viscosity,
     )
     session = problem.session(film_memory[i] if film_memory else None)
     field = session.solve(state, with_pressure=True).pressure

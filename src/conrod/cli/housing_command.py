@@ -69,6 +69,7 @@ def write_housing_outputs(housing, case: Case, out: Path) -> list[Path]:
     """Build the figures first, then write every file atomically."""
     from conrod.elastic.compliance_io import write_compliance
     from conrod.io.atomic import atomic_path, write_json
+    from conrod.io.result_folder import staged_result_folder
     from conrod.plotting import housing_plots
     from conrod.plotting.save import save_figure
 
@@ -78,12 +79,16 @@ def write_housing_outputs(housing, case: Case, out: Path) -> list[Path]:
         figures["housing_mesh.png"] = housing_plots.housing_mesh_figure(housing.structure)
     if housing.kinematics is not None:
         figures["inertia_deformation.png"] = housing_plots.inertia_deformation_figure(housing)
-    written = [write_compliance(out / "compliance.npz", housing.angles, housing.compliance)]
-    with atomic_path(out / "inertia.npz") as tmp:
-        np.savez(tmp, angle_deg=np.degrees(housing.angles), inertia_base_m=housing.inertia_base)
-    written += [out / "inertia.npz", write_json(out / "housing_summary.json", summary)]
-    written += [save_figure(figure, out / name) for name, figure in figures.items()]
-    return written
+    with staged_result_folder(out) as stage:  # the whole set swapped in at once
+        write_compliance(stage / "compliance.npz", housing.angles, housing.compliance)
+        with atomic_path(stage / "inertia.npz") as tmp:
+            np.savez(tmp, angle_deg=np.degrees(housing.angles),
+                     inertia_base_m=housing.inertia_base)
+        write_json(stage / "housing_summary.json", summary)
+        for name, figure in figures.items():
+            save_figure(figure, stage / name)
+    names = ["compliance.npz", "inertia.npz", "housing_summary.json", *figures]
+    return [Path(out) / name for name in names]
 
 
 def register(app: typer.Typer) -> None:
@@ -100,7 +105,7 @@ def register(app: typer.Typer) -> None:
         """Compliance matrix, inertia base fields and figures of the elastic big end."""
         from conrod.io.result_folder import check_output_folder
 
-        check_output_folder(out)  # before any computation
+        check_output_folder(out, inputs=(case_file,))  # before any computation
         from conrod.elastic.housing import Housing
 
         case = Case.from_toml(case_file)

@@ -33,7 +33,7 @@ def register(app: typer.Typer) -> None:
         ] = 1.0,
     ) -> None:
         """Engine loads on the big-end bearing: table, summary, polar and wear diagrams."""
-        check_output_folder(out)
+        check_output_folder(out, inputs=(case_file,))
         case = Case.from_toml(case_file)
         if case.engine is None and case.load is not None:
             _table_loads(case, out)

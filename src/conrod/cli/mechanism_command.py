@@ -67,7 +67,7 @@ def register(app: typer.Typer) -> None:
             "--accept-warnings", help=ACCEPT_WARNINGS_HELP)] = False,
     ) -> None:
         """Slider-crank with clearances in both rod bearings: gaps, forces, impacts ([D3])."""
-        check_output_folder(out)
+        check_output_folder(out, inputs=(case_file,))
         case = Case.from_toml(case_file)
         base = mechanism_case(case)
         if sweep:

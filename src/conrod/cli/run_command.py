@@ -81,7 +81,7 @@ def register(app: typer.Typer) -> None:
         from conrod.results.output import write_results
         from conrod.simulation import Simulation
 
-        check_output_folder(out)
+        check_output_folder(out, inputs=(case_file,))
         case = Case.from_toml(case_file)
         n_theta, n_z = _grid(grid)
         _check_oil_feed(case, film.value if film else case.solver.film)
@@ -126,13 +126,18 @@ def _with_step_study(results, simulation, case, film, integrator, max_cycles, n_
     """``results`` with a warning when the rk2 orbit at half the step differs (h_min)."""
     import dataclasses
 
+    from conrod.errors import CaseError, ConvergenceError
     from conrod.results.summary import step_study_warnings
     from conrod.simulation import Simulation
 
-    step = simulation.solver.step_deg
-    fine = Simulation(case, film=film and film.value, integrator=integrator and integrator.value,
-                      max_cycles=max_cycles, step_deg=step / 2.0, n_theta=n_theta,
-                      n_z=n_z).run()
+    step = simulation.solver.step_deg  # None: rk2's automatic step, checked against implicit
+    finer = ({"step_deg": step / 2.0, "integrator": integrator and integrator.value}
+             if step is not None else {"integrator": "implicit"})
+    try:
+        fine = Simulation(case, film=film and film.value, max_cycles=max_cycles,
+                          n_theta=n_theta, n_z=n_z, **finer).run()
+    except (CaseError, ConvergenceError):  # no reference for this film: nothing to compare
+        return results
     extra = tuple(step_study_warnings(results.summary, fine.summary, step))
     if not extra:
         return results

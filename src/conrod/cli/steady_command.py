@@ -124,7 +124,8 @@ def register(app: typer.Typer) -> None:
             raise CaseError(f"radial_clearance = {radial_clearance!r}: out of range (allowed: "
                             f"<= {MAX_RELATIVE_CLEARANCE:g} x diameter/2 = "
                             f"{MAX_RELATIVE_CLEARANCE * 0.5 * diameter:g} m)")
-        geometry = BearingGeometry(diameter, width, radial_clearance)
+        geometry = BearingGeometry(diameter=diameter, width=width,
+                                   radial_clearance=radial_clearance)
         answer = solve_for_load(load, speed_rpm * math.pi / 30.0, viscosity, geometry,
                                 model.value, cells, friction.value)
         _print(answer.as_dict(), as_json)

@@ -52,6 +52,7 @@ def _scheme_row(angle: float, scheme: str, field) -> dict[str, Any]:
 def write_stress_outputs(results: dict[float, dict], structure, out: Path) -> None:
     """Figures first, then the table and the summary, all atomically."""
     from conrod.io.atomic import write_csv, write_json
+    from conrod.io.result_folder import staged_result_folder
     from conrod.plotting.housing_plots import von_mises_figure
     from conrod.plotting.save import save_figure
 
@@ -69,10 +70,11 @@ def write_stress_outputs(results: dict[float, dict], structure, out: Path) -> No
             "displacement_ratio_pressure_to_cosine": comparison["displacement_ratio"],
             "zones": {scheme: comparison[scheme].zones() for scheme in SCHEMES}}
     columns = {key: np.array([row[key] for row in rows]) for key in rows[0]}
-    write_csv(out / "stress_maxima.csv", columns)
-    write_json(out / "stress_summary.json", summary)
-    for name, figure in figures.items():
-        save_figure(figure, out / name)
+    with staged_result_folder(out) as stage:  # the whole set swapped in at once
+        write_csv(stage / "stress_maxima.csv", columns)
+        write_json(stage / "stress_summary.json", summary)
+        for name, figure in figures.items():
+            save_figure(figure, stage / name)
 
 
 def register(app: typer.Typer) -> None:
@@ -90,7 +92,7 @@ def register(app: typer.Typer) -> None:
         """Von Mises stresses of the rod under the film pressure and a cosine load."""
         from conrod.io.result_folder import check_output_folder
 
-        check_output_folder(out)  # before any computation
+        check_output_folder(out, inputs=(case_file,))  # before any computation
         from conrod.elastic.housing import Housing
         from conrod.elastic.stresses import rigid_run_pressures
 

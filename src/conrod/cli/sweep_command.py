@@ -71,8 +71,9 @@ def register(app: typer.Typer) -> None:
         """Run every variant of a study on Dask; one row per variant in DIR/sweep.parquet."""
         from conrod.io.result_folder import check_output_folder
         from conrod.sweep import Sweep
+        from conrod.sweep.runner import STUDY_FILE
 
-        check_output_folder(out)  # before any variant is validated or computed
+        check_output_folder(out, marker=STUDY_FILE, inputs=(study_file,))  # before computing
 
         runner = Sweep(study_file, out, scheduler=scheduler, workers=workers, figures=figures)
         variants = runner.variants()

@@ -49,10 +49,13 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
     peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
     peak_pressure = None
     for i, memory in enumerate(film_memory):
-        state = FilmState(float(cycle.eccentricity_x[i]), float(cycle.eccentricity_y[i]),
-                          float(cycle.velocity_x[i]), float(cycle.velocity_y[i]),
-                          float(cycle.journal_speed[i]), float(cycle.shell_speed[i]),
-                          problem.viscosity)
+        state = FilmState(eccentricity_x=float(cycle.eccentricity_x[i]),
+                          eccentricity_y=float(cycle.eccentricity_y[i]),
+                          velocity_x=float(cycle.velocity_x[i]),
+                          velocity_y=float(cycle.velocity_y[i]),
+                          journal_speed=float(cycle.journal_speed[i]),
+                          shell_speed=float(cycle.shell_speed[i]),
+                          viscosity=problem.viscosity)
         result, after = film.solve_with_memory(state, memory, with_pressure=i == peak)
         if i == peak:
             peak_pressure = result.pressure

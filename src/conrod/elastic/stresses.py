@@ -146,8 +146,11 @@ def rigid_run_pressures(case, crank_angles_deg: list[float]):
     fields = []
     for angle in crank_angles_deg:
         k = int(np.argmin(np.abs(np.mod(cycle.crank_angle_deg - angle + 360.0, 720.0) - 360.0)))
-        state = FilmState(float(cycle.eccentricity_x[k]), float(cycle.eccentricity_y[k]),
-                          float(cycle.velocity_x[k]), float(cycle.velocity_y[k]),
-                          float(cycle.journal_speed[k]), float(cycle.shell_speed[k]), viscosity)
+        state = FilmState(eccentricity_x=float(cycle.eccentricity_x[k]),
+                          eccentricity_y=float(cycle.eccentricity_y[k]),
+                          velocity_x=float(cycle.velocity_x[k]),
+                          velocity_y=float(cycle.velocity_y[k]),
+                          journal_speed=float(cycle.journal_speed[k]),
+                          shell_speed=float(cycle.shell_speed[k]), viscosity=viscosity)
         fields.append(film.solve(state, with_pressure=True).pressure)
     return np.asarray(theta), np.asarray(z), fields

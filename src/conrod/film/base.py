@@ -67,9 +67,20 @@ class FeedHole:
     axial_position: float = 0.0
 
 
-@dataclass(frozen=True)
+def _refuse_positional(cls: type, args: tuple, why: str, example: str) -> None:
+    """TypeError naming the keywords when a constructor of lengths gets positional values."""
+    if args:
+        raise TypeError(f"{cls.__name__} takes keyword arguments only, got {len(args)} "
+                        f"positional ({why}): e.g. {cls.__name__}({example})")
+
+
+@dataclass(frozen=True, kw_only=True)
 class BearingGeometry:
     """Journal-bearing geometry and oil supply, SI units.
+
+    Keyword arguments only: diameter, width and clearance are all lengths in metres, and a
+    positional call would hide which is which (``BearingGeometry(diameter=0.05,
+    width=0.025, radial_clearance=25e-6)``).
 
     diameter : float  Journal diameter D [m].
     width : float  Axial length L of the film (shell width) [m].
@@ -88,6 +99,11 @@ class BearingGeometry:
     supply_pressure: float = 0.0
     cavitation_pressure: float = 0.0
 
+    def __new__(cls, *args: object, **kwargs: object) -> BearingGeometry:
+        _refuse_positional(cls, args, "diameter, width and clearance are all in metres",
+                           "diameter=0.05, width=0.025, radial_clearance=25e-6")
+        return super().__new__(cls)
+
     @property
     def radius(self) -> float:
         """Journal radius R = D/2 [m]."""
@@ -99,9 +115,13 @@ class BearingGeometry:
         return self.width / self.diameter
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FilmState:
     """Kinematic state handed to a film model (see the module docstring for the frame).
+
+    Keyword arguments only: eccentricities are lengths in metres, not ratios to the
+    clearance, and a positional call would hide that (``FilmState(eccentricity_x=15e-6,
+    eccentricity_y=0.0, journal_speed=300.0, viscosity=0.01)``).
 
     eccentricity_x, eccentricity_y : float  Journal centre relative to shell centre [m].
     velocity_x, velocity_y : float  Rate of the above [m/s].
@@ -122,6 +142,12 @@ class FilmState:
     viscosity: float = 0.01
     deformation: np.ndarray | None = None
     history: np.ndarray | None = None
+
+    def __new__(cls, *args: object, **kwargs: object) -> FilmState:
+        _refuse_positional(cls, args, "eccentricities are in metres, not ratios to the "
+                           "clearance", "eccentricity_x=15e-6, eccentricity_y=0.0, "
+                           "velocity_x=0.0, velocity_y=0.0, journal_speed=300.0, viscosity=0.01")
+        return super().__new__(cls)
 
 
 @dataclass

@@ -100,7 +100,8 @@ def _unit_geometry(length_to_diameter: float) -> BearingGeometry:
 def _inlet_groove_geometry(geometry: BearingGeometry) -> BearingGeometry:
     """Geometry with the ambient inlet line at θ = π as a full-width axial groove."""
     line = Groove(start_angle=math.pi, extent=1e-9, width=geometry.width)
-    return BearingGeometry(geometry.diameter, geometry.width, geometry.radial_clearance,
+    return BearingGeometry(diameter=geometry.diameter, width=geometry.width,
+                           radial_clearance=geometry.radial_clearance,
                            grooves=(line,))
 
 
@@ -184,7 +185,7 @@ def raimondi_boyd_point(
     geometry = _unit_geometry(length_to_diameter)
     film = make_film(model, geometry, grid or default_grid(eccentricity), friction)
     speed_rev = 1.0
-    state = FilmState(eccentricity * geometry.radial_clearance, 0.0,
+    state = FilmState(eccentricity_x=eccentricity * geometry.radial_clearance, eccentricity_y=0.0,
                       journal_speed=2.0 * math.pi * speed_rev, viscosity=1.0)
     if model == "mass_conserving":
         state = FilmState(**{**state.__dict__, "history": film.initial_history()})
@@ -288,7 +289,8 @@ def solve_for_load(
     c = geometry.radial_clearance
 
     def state_at(eps: float) -> FilmState:
-        return FilmState(eps * c, 0.0, journal_speed=journal_speed, viscosity=viscosity)
+        return FilmState(eccentricity_x=eps * c, eccentricity_y=0.0, journal_speed=journal_speed,
+                         viscosity=viscosity)
 
     def excess(eps: float) -> float:
         return math.hypot(*film.force(state_at(eps))) - load

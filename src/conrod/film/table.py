@@ -337,7 +337,8 @@ def random_state(rng: np.random.Generator, clearance: float, eps_max: float) -> 
     mean = 0.5 * (omega_j + omega_b)
     vx = speed * math.cos(psi + beta) - mean * ey
     vy = speed * math.sin(psi + beta) + mean * ex
-    return FilmState(ex, ey, vx, vy, journal_speed=omega_j, shell_speed=omega_b, viscosity=0.02)
+    return FilmState(eccentricity_x=ex, eccentricity_y=ey, velocity_x=vx, velocity_y=vy,
+                     journal_speed=omega_j, shell_speed=omega_b, viscosity=0.02)
 
 
 def build_squeeze_tables(
@@ -359,7 +360,8 @@ def build_squeeze_tables(
     for j, eps in enumerate(eccentricities):
         for k in range(n_direction // 2, n_direction + 1):
             beta = math.pi if k == n_direction else float(directions[k])
-            state = FilmState(eps * c, 0.0, speed * math.cos(beta), speed * math.sin(beta),
+            state = FilmState(eccentricity_x=eps * c, eccentricity_y=0.0,
+                              velocity_x=speed * math.cos(beta), velocity_y=speed * math.sin(beta),
                               viscosity=REFERENCE_VISCOSITY)
             if isinstance(base, HasMemory):
                 result, memory = base.solve_with_memory(state, memory)

@@ -7,11 +7,17 @@ complete new one, never a mix, never a half-written or temporary file.
     with staged_result_folder(out) as stage:
         write_csv(stage / "cycle.csv", ...)   # every file of the result goes into ``stage``
 
+An output folder is either new, empty (hidden entries such as ``.gitkeep`` aside) or
+owned by conrod: it holds the marker of the command's results (``manifest.json``; a
+sweep folder: ``study.json``). Any other folder is refused before computing, naming what
+is in it, so a rerun never mixes files of another origin into a result.
+
 ``stage`` is a hidden sibling folder of ``out`` (same file system). When the block ends
 without an exception, a ``manifest.json`` (name, size and SHA-256 of every result file) is
-added (unless the command writes a fixed set of files), files of ``out`` that belong to no
-earlier result (no manifest lists them, the new result does not replace them) are carried
-over by hard link, and the stage is swapped in: one atomic exchange of the two
+added (unless the command writes a fixed set of files). The previous result of ``out``
+(every file its manifest lists, and the report made from it) is dropped; hidden entries
+and files added by hand to a conrod folder are carried over by hard link; then the stage
+is swapped in: one atomic exchange of the two
 folders (Linux ``renameat2(RENAME_EXCHANGE)``), or two renames elsewhere. On an exception
 (or a kill) ``out`` is untouched; a stage left behind by a killed process is removed by the
 next run that writes next to it.
@@ -36,21 +42,36 @@ MANIFEST = "manifest.json"
 """Name of the file listing the result files of a folder."""
 STAGE_TAG = ".conrod-stage-"
 """Part of the name of a staging folder: ``.<out name>.conrod-stage-<pid>-<random>``."""
+DERIVED_FILES = frozenset({"report.html", "report.pdf"})
+"""Files made from a result folder's content (``conrod report``): stale after a rerun."""
+SHOWN_ENTRIES = 4
+"""How many entries of a refused folder the error names."""
+_CHECKED: set[Path] = set()
+"""Folders accepted by :func:`check_output_folder` in this process (with their inputs)."""
 _RENAME_EXCHANGE = 2
 _AT_FDCWD = -100
 
 
-def check_output_folder(out: str | os.PathLike[str], option: str = "--out") -> Path:
+def check_output_folder(out: str | os.PathLike[str], option: str = "--out",
+                        marker: str = MANIFEST,
+                        inputs: tuple[str | os.PathLike[str], ...] = ()) -> Path:
     """Check that results can be written to ``out``; raise :class:`CaseError` if not.
 
-    Done before any computation: ``out`` must be a folder or not exist yet, no part of
-    its path may be a file, it must not be (or contain) the current folder, and its
-    parent must accept a new entry. Returns ``out`` as an absolute path.
+    Done before any computation: ``out`` must not exist yet, or be an empty folder, or a
+    folder of conrod's results (it holds ``marker``), or hold nothing but the command's
+    own input files; no part of its path may be a file, it must not be (or contain) the
+    current folder, and its parent must accept a new entry. Returns ``out`` as an
+    absolute path; the result writers of this process then accept it.
+
+    marker : str  File that marks a folder as conrod's (``manifest.json``; a sweep
+        folder: ``study.json``).
+    inputs : paths  The command's input files (case or study file), kept in place.
     """
     path = Path(out).absolute()
     shown = f"{option} {str(out)!r}"
     if path.exists() and not path.is_dir():
         raise CaseError(f"{shown}: is an existing file (allowed: a folder, new or existing)")
+    _check_owned(path, shown, marker, {Path(p).absolute() for p in inputs})
     if Path.cwd() == path or path in Path.cwd().parents:
         raise CaseError(f"{shown}: is the current folder or contains it (allowed: a "
                         "results subfolder, e.g. results/run1)")
@@ -65,7 +86,25 @@ def check_output_folder(out: str | os.PathLike[str], option: str = "--out") -> P
         raise CaseError(f"{shown}: cannot write in {str(existing)!r} "
                         f"({error.strerror or type(error).__name__})") from None
     os.rmdir(probe)
+    _CHECKED.add(path)
     return path
+
+
+def _check_owned(path: Path, shown: str, marker: str, inputs: set[Path] = frozenset()
+                 ) -> None:
+    """Refuse a non-empty folder that holds no conrod result (its files are not ours)."""
+    if not path.is_dir() or (path / marker).is_file():
+        return
+    entries = sorted(entry.name for entry in path.iterdir()
+                     if not entry.name.startswith(".") and entry not in inputs)
+    if not entries:
+        return
+    names = ", ".join(entries[:SHOWN_ENTRIES]) + (
+        f", ... ({len(entries)} entries)" if len(entries) > SHOWN_ENTRIES else "")
+    raise CaseError(f"{shown}: folder holds files conrod did not write ({names}) and no "
+                    f"{marker} (allowed: a new or empty folder, one holding only the input "
+                    "file, or a conrod results folder, whose previous results are replaced); "
+                    "choose another folder or empty this one")
 
 
 @contextlib.contextmanager
@@ -77,6 +116,8 @@ def staged_result_folder(out: str | os.PathLike[str], *, manifest: bool = True
         fixed set of files may leave it out; the set is still swapped in as a whole).
     """
     target = Path(out).absolute()
+    if target not in _CHECKED:  # writers called from Python: the same rule
+        _check_owned(target, repr(str(out)), MANIFEST)
     target.parent.mkdir(parents=True, exist_ok=True)
     _remove_abandoned_stages(target)
     stage = Path(tempfile.mkdtemp(prefix=f".{target.name}{STAGE_TAG}{os.getpid()}-",
@@ -122,11 +163,12 @@ def _listed_files(folder: Path) -> set[str]:
         files = json.loads((folder / MANIFEST).read_text(encoding="utf-8")).get("files", {})
     except (OSError, ValueError, AttributeError):
         return set()
-    return {str(name).split("/")[0] for name in files} | {MANIFEST}
+    return {str(name).split("/")[0] for name in files} | {MANIFEST} | DERIVED_FILES
 
 
 def _carry_over_foreign_files(target: Path, stage: Path) -> None:
-    """Hard-link (or copy) into ``stage`` what ``target`` holds besides its last result."""
+    """Hard-link (or copy) into ``stage`` what ``target`` holds besides its last result
+    (hidden entries, files added by hand to a conrod folder)."""
     listed = _listed_files(target)
     for entry in target.iterdir():
         if entry.name in listed or (stage / entry.name).exists():

@@ -202,15 +202,23 @@ def _solve_segment(rhs, phi, end, current, event, settings, session):
         m for m in FALLBACK_METHODS if m != settings.adaptive_method
     ]
     start = session.snapshot()
+    sol = None
     for method in methods:
         session.restore(start)
-        sol = solve_ivp(
-            _budgeted(rhs, settings), (phi, end), current, method=method, events=event,
-            dense_output=True, max_step=math.radians(settings.max_step_deg),
-            rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
-        )
+        try:
+            sol = solve_ivp(
+                _budgeted(rhs, settings), (phi, end), current, method=method, events=event,
+                dense_output=True, max_step=math.radians(settings.max_step_deg),
+                rtol=settings.relative_tolerance, atol=settings.absolute_tolerance,
+            )
+        except ValueError as error:  # a non-finite Jacobian or state: this method failed
+            failure = error
+            continue
         if sol.status >= 0:
             return sol
+    if sol is None:
+        raise ConvergenceError(f"adaptive orbit step failed ({failure}); use integrator = "
+                               "'implicit'", where=f"crank angle {math.degrees(phi):.2f} deg")
     return sol
 
 

@@ -42,8 +42,9 @@ def attitude_angle(
 def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[FilmState]:
     """Film states at the output angles."""
     return [
-        FilmState(float(traj.x[i]), float(traj.y[i]), float(traj.vx[i]), float(traj.vy[i]),
-                  float(wj[i]), float(wb[i]), problem.viscosity)
+        FilmState(eccentricity_x=float(traj.x[i]), eccentricity_y=float(traj.y[i]),
+                  velocity_x=float(traj.vx[i]), velocity_y=float(traj.vy[i]),
+                  journal_speed=float(wj[i]), shell_speed=float(wb[i]), viscosity=problem.viscosity)
         for i in range(traj.crank_angle.size)
     ]
 

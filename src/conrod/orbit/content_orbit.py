@@ -113,7 +113,9 @@ class _Balance:
     def residual(self, start: _Start, v, load, speeds, dt, warm):
         """(residual W + F − m dv/dt [N], memory at the end of the step) at end velocity v."""
         x1, y1 = start.position(v, dt)
-        state = FilmState(x1, y1, v[0], v[1], speeds[0], speeds[1], self.problem.viscosity)
+        state = FilmState(eccentricity_x=x1, eccentricity_y=y1, velocity_x=v[0], velocity_y=v[1],
+                          journal_speed=speeds[0], shell_speed=speeds[1],
+                          viscosity=self.problem.viscosity)
         previous = start.before.memory if start.before is not None else None
         fx, fy, after = self.film.content_step(state, start.memory, dt, warm, previous)
         if self.problem.asperity is not None:
@@ -309,7 +311,9 @@ def _start_contact_force(problem: OrbitProblem, state: OrbitState, memory) -> fl
     wj, wb = (float(a[0]) for a in problem.loads.speeds(np.array([0.0])))
     try:
         result, _ = problem.film.solve_with_memory(
-            FilmState(state.x, state.y, state.vx, state.vy, wj, wb, problem.viscosity), memory)
+            FilmState(eccentricity_x=state.x, eccentricity_y=state.y, velocity_x=state.vx,
+                      velocity_y=state.vy, journal_speed=wj, shell_speed=wb,
+                      viscosity=problem.viscosity), memory)
     except (CaseError, ConvergenceError):
         return 0.0
     e = math.hypot(state.x, state.y)

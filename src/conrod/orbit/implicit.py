@@ -158,8 +158,9 @@ def _film_jacobian(problem: OrbitProblem, phases: _Phases, rhs, phi, u, f0, para
     (:class:`~conrod.film.capabilities.HasForceJacobian`)."""
     c, w = problem.clearance, problem.crank_speed
     _, _, wj, wb = periodic_sample(phi, phases.angles, phases.table, problem.loads.cycle)
-    state = FilmState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, wj, wb,
-                      problem.viscosity)
+    state = FilmState(eccentricity_x=u[0] * c, eccentricity_y=u[1] * c, velocity_x=u[2] * c * w,
+                      velocity_y=u[3] * c * w, journal_speed=wj, shell_speed=wb,
+                      viscosity=problem.viscosity)
     _, film, _ = problem.film.force_jacobian(state, phases.session.memory)
     out = np.zeros((4, 4))
     out[0, 2] = out[1, 3] = 1.0

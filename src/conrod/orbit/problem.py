@@ -138,7 +138,9 @@ class OrbitProblem:
         held = session if session is not None else self.session()
 
         def generic(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
-            fx, fy = held.force(FilmState(x, y, vx, vy, wj, wb, mu))
+            fx, fy = held.force(FilmState(eccentricity_x=x, eccentricity_y=y, velocity_x=vx,
+                                          velocity_y=vy, journal_speed=wj, shell_speed=wb,
+                                          viscosity=mu))
             return float(fx), float(fy)
 
         return generic

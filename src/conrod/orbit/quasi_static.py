@@ -41,7 +41,8 @@ def _velocity_solver(problem: OrbitProblem, session: FilmSession):
     film = problem.film
     if hasattr(film, "balance_velocity"):  # film solving its own force balance with memory
         def balanced(x, y, wx, wy, wj, wb, guess, angle=0.0):
-            state = FilmState(x, y, guess[0], guess[1], wj, wb, mu)
+            state = FilmState(eccentricity_x=x, eccentricity_y=y, velocity_x=guess[0],
+                              velocity_y=guess[1], journal_speed=wj, shell_speed=wb, viscosity=mu)
             vx, vy, residual, session.memory = film.balance_velocity(
                 state, (wx, wy), session.memory, angle)
             return vx, vy, residual
@@ -146,7 +147,9 @@ def quasi_static_cycle(
         guess = (vx2, vy2)
         if max(r1, r2) > worst:
             worst, worst_k = max(r1, r2), k
-        session.advance(FilmState(xp, yp, vx, vy, wj[k], wb[k], problem.viscosity), dt)
+        session.advance(FilmState(eccentricity_x=xp, eccentricity_y=yp, velocity_x=vx,
+                                  velocity_y=vy, journal_speed=wj[k], shell_speed=wb[k],
+                                  viscosity=problem.viscosity), dt)
     if worst > 1e-4 or not np.all(np.isfinite(table)):
         raise ConvergenceError(
             "quasi-static velocity solve failed (relative force residual; try a smaller "

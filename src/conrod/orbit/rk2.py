@@ -125,9 +125,16 @@ def stable_step_cycle(problem: OrbitProblem, state: OrbitState,
     the film's radial squeeze damping B_rr along the computed orbit, stays below
     :data:`STABILITY_MARGIN`: a cycle at a trial step tells the stiffness met, and the step
     shrinks until the cycle is stable."""
+    from conrod.cases.solver import MAX_INTEGRATOR_STEPS
+
     divisions = 1
     for _ in range(12):
         step = output_step_deg / divisions
+        if problem.loads.cycle / math.radians(step) > MAX_INTEGRATOR_STEPS:
+            raise ConvergenceError(
+                f"rk2 would need a step below {step:.3g} deg, more than {MAX_INTEGRATOR_STEPS} "
+                "steps per cycle (film too stiff for an explicit scheme); use integrator = "
+                "'implicit'", where="automatic rk2 step")
         try:
             return _fixed_step_cycle(problem, state, step, output_step_deg)
         except ConvergenceError as error:
@@ -208,7 +215,9 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
             memory[k // record_every] = session.snapshot()
         xp, yp, vxp, vyp = x + dt * vx, y + dt * vy, vx + dt * ax, vy + dt * ay
         ax2, ay2, _, _ = acceleration(k + 1, xp, yp, vxp, vyp)
-        session.advance(FilmState(x, y, vx, vy, wj[k], wb[k], problem.viscosity), dt)
+        session.advance(FilmState(eccentricity_x=x, eccentricity_y=y, velocity_x=vx, velocity_y=vy,
+                                  journal_speed=wj[k], shell_speed=wb[k],
+                                  viscosity=problem.viscosity), dt)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius, pc > 0.0)

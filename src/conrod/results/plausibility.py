@@ -16,7 +16,9 @@ Orbit (``conrod run``):
   :data:`PENETRATION_SHARE` of it → warning;
 * minimum film thickness below the combined roughness σ while hard contact is not active
   (the asperities would touch: mixed lubrication not modelled) → warning;
-* heat-balance temperature above ``lubricant.max_temperature`` → warning.
+* heat-balance temperature above ``lubricant.max_temperature`` → warning;
+* peak film pressure above :data:`FILM_PRESSURE_LIMIT` → warning (a rigid bore under a
+  load its film cannot carry: the lining would yield, the real bore deforms).
 
 Mechanism (``conrod mechanism``):
 
@@ -48,6 +50,13 @@ CONTACT_FORCE_WARNING_FACTOR = 3.0
 """Contact force / peak bearing load above which a run is flagged [-]."""
 CONTACT_FORCE_ERROR_FACTOR = 100.0
 """Contact force / peak bearing load above which a run is meaningless [-]."""
+FILM_PRESSURE_LIMIT = 1.0e9
+"""Peak film pressure above which a rigid-bore result is flagged [Pa]. It is above the
+hardness of every connecting-rod lining alloy of ISO 4383:2012 (Annex A: AlSn20Cu
+30–40 HBW ≈ 0.3–0.4 GPa, CuPb24Sn4 60–90 HBW ≈ 0.6–0.9 GPa), so a film pressure beyond
+it would flatten the lining and bend the big end, which a rigid bore ignores; it is also
+the default ``pressure_viscosity_limit``, beyond which the pressure–viscosity law is not
+used. Rigid-bore peaks of several hundred MPa are usual for big ends."""
 MECHANISM_FORCE_LIMIT = 1.0e6
 """Joint contact force above which a mechanism run is flagged [N]."""
 MECHANISM_FORCE_FACTOR = 10.0
@@ -86,6 +95,7 @@ def check_run(results: Any, case: Any) -> list[str]:
         warnings.append(f"journal centre {excursion:.2g} c beyond the clearance circle at "
                         f"{_angle(angle, i)} (allowed: <= {PENETRATION_SHARE:g} c)")
     warnings += _roughness_warnings(cycle, case)
+    warnings += _film_pressure_warnings(cycle)
     temperature = results.summary.effective_temperature
     limit = case.lubricant.max_temperature if case.lubricant is not None else math.inf
     if temperature is not None and temperature > limit:
@@ -119,6 +129,18 @@ def _contact_force_warnings(cycle: Any) -> list[str]:
     if force > CONTACT_FORCE_ERROR_FACTOR * load:
         raise ConvergenceError(f"implausible result: {text} (film model past its range?)")
     return [text + f" (plausible: <= {CONTACT_FORCE_WARNING_FACTOR:g} x)"]
+
+
+def _film_pressure_warnings(cycle: Any) -> list[str]:
+    peak = float(np.max(cycle.p_max))
+    if peak <= FILM_PRESSURE_LIMIT:
+        return []
+    i = int(np.argmax(cycle.p_max))
+    return [f"p_max {peak / 1e6:.4g} MPa at {_angle(cycle.crank_angle, i)} is above "
+            f"{FILM_PRESSURE_LIMIT / 1e6:.0f} MPa, the hardness of the hardest big-end lining "
+            "alloys (ISO 4383): not a physical film pressure — the rigid bore carries a load "
+            "its film cannot; read h_min, or add the elastic big end ([housing], "
+            "docs/ehd.md)"]
 
 
 def _roughness_warnings(cycle: Any, case: Any) -> list[str]:

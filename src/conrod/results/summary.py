@@ -140,12 +140,19 @@ STEP_STUDY_TOLERANCE = 0.02
 fixed-step orbit is flagged as under-resolved [-]."""
 
 
-def step_study_warnings(coarse: RunSummary, fine: RunSummary, step_deg: float) -> list[str]:
+def step_study_warnings(coarse: RunSummary, fine: RunSummary, step_deg: float | None
+                        ) -> list[str]:
     """A warning when halving the fixed step moves the smallest h_min by more than
-    :data:`STEP_STUDY_TOLERANCE` (the answer still depends on the step)."""
+    :data:`STEP_STUDY_TOLERANCE` (the answer still depends on the step). With rk2's automatic
+    step (``step_deg`` None) ``fine`` is the error-controlled implicit orbit instead."""
     change = abs(coarse.h_min - fine.h_min) / max(fine.h_min, 1e-300)
     if change <= STEP_STUDY_TOLERANCE:
         return []
+    if step_deg is None:
+        return [f"under-resolved: h_min {coarse.h_min * 1e6:.3g} µm with rk2's automatic step "
+                f"but {fine.h_min * 1e6:.3g} µm with the error-controlled implicit integrator "
+                f"({change:.1%} > {STEP_STUDY_TOLERANCE:.0%}); set solver.step_deg "
+                "(--step-deg) or use integrator = 'implicit'"]
     return [f"under-resolved: h_min {coarse.h_min * 1e6:.3g} µm at step {step_deg:g} deg but "
             f"{fine.h_min * 1e6:.3g} µm at {step_deg / 2:g} deg ({change:.1%} > "
             f"{STEP_STUDY_TOLERANCE:.0%}); reduce solver.step_deg (--step-deg)"]
