@@ -154,13 +154,13 @@ class _FreeFlight:
         self.flight = None
         self.session = phases.session
         self.refresh_rate = 0.0 if self.compiled else PYTHON_REFRESH_RATE
-        self.cheap = self.compiled  # a closed-form or tabulated force, not a grid solve
         if self.compiled:
             self.rhs, self.params = _kernel_rhs(kernel.force), kernel.params
         elif problem.asperity is None and isinstance(problem.film, HasFlightKernel):
             self.flight = problem.film.flight_kernel(
                 phases.session.memory,
                 NEWTON_FILM_TOLERANCE * float(settings.relative_tolerance))
+        self.evaluate = self.flight is None  # stage derivatives: see tr_bdf2._stage
         if self.flight is not None:  # grid film compiled, expensive Jacobian: keep it
             self.compiled = True
             self.rhs, self.params = _kernel_rhs(self.flight.force), self.flight.params
@@ -187,7 +187,7 @@ class _FreeFlight:
             np.asarray(u, dtype=float), min(self.h, FIRST_STEP * 10), self.max_step,
             self.rtol, self.atol, self.circle, phi_out, out_u, next_out, max_steps,
             compiled=self.compiled, jacobian=self.jacobian, refresh_rate=self.refresh_rate,
-            evaluate=self.cheap)
+            evaluate=self.evaluate)
         self.h = h
         if self.flight is not None:  # the warm start goes on in the session
             self.session.restore(self.flight.memory())

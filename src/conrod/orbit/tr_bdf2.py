@@ -71,9 +71,10 @@ def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol, eta, ev
     Returns (z, f(z), converged, rate, η); f(z) is evaluated when ``evaluate``, else taken
     from the stage equation, f(z) = (z − base)/(d h): one film solve less per stage for
     an expensive f, and for a stiff f the Newton error is not amplified by the stiffness
-    (Shampine). Cheap films evaluate it: their tests fix the step through tolerances so
-    loose that Newton stops after one iteration, where only the evaluated f keeps the
-    method second order."""
+    (Shampine). Used for the compiled grid film; the others evaluate it (with tolerances
+    so loose that Newton stops after one iteration only the evaluated f keeps the method
+    second order, and the Python films with finite-difference Jacobians were validated
+    that way)."""
     z = guess.copy()
     previous = 0.0
     rate = 0.0
