@@ -31,6 +31,7 @@ from conrod.orbit.adaptive import (
     _switch,
 )
 from conrod.orbit.problem import OrbitProblem, OrbitState, periodic_sample
+from conrod.orbit.progress import REPORT_EVERY_DEG, report_angle
 from conrod.orbit.tr_bdf2 import STATUS_END, STATUS_HIT, STATUS_NEWTON, segment
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -180,14 +181,29 @@ class _FreeFlight:
         self.h = FIRST_STEP
 
     def run(self, phi, end, u, phi_out, out_u, next_out):
-        """(status, φ, u, steps, next output row) of one segment from φ."""
+        """(status, φ, u, steps, next output row) of one segment from φ, integrated in
+        chunks ending on multiples of :data:`~conrod.orbit.progress.REPORT_EVERY_DEG`
+        (each reported to the progress display)."""
+        chunk = math.radians(REPORT_EVERY_DEG)
+        h, total = min(self.h, FIRST_STEP * 10), 0
+        while True:
+            stop = min(end, (math.floor(phi / chunk + 1e-9) + 1) * chunk)
+            if end - stop < 1e-9 * chunk:
+                stop = end
+            status, phi, u, h, steps, next_out = self._chunk(phi, stop, u, h, phi_out,
+                                                             out_u, next_out)
+            total += steps
+            report_angle(phi)
+            if status != STATUS_END or stop >= end:
+                return status, phi, u, total, next_out
+
+    def _chunk(self, phi, end, u, h, phi_out, out_u, next_out):
         max_steps = int(STEPS_PER_DEGREE * max(math.degrees(end - phi), 1.0))
         status, phi_new, u_new, h, steps, next_out, self.evaluations = segment(
-            self.rhs, self.params, self.data, float(phi), end,
-            np.asarray(u, dtype=float), min(self.h, FIRST_STEP * 10), self.max_step,
-            self.rtol, self.atol, self.circle, phi_out, out_u, next_out, max_steps,
-            compiled=self.compiled, jacobian=self.jacobian, refresh_rate=self.refresh_rate,
-            evaluate=self.evaluate)
+            self.rhs, self.params, self.data, float(phi), float(end),
+            np.asarray(u, dtype=float), h, self.max_step, self.rtol, self.atol,
+            self.circle, phi_out, out_u, next_out, max_steps, compiled=self.compiled,
+            jacobian=self.jacobian, refresh_rate=self.refresh_rate, evaluate=self.evaluate)
         self.h = h
         if self.flight is not None:  # the warm start goes on in the session
             self.session.restore(self.flight.memory())
@@ -199,7 +215,7 @@ class _FreeFlight:
                 f"{math.hypot(u_new[0], u_new[1]):.4f}); loosen [solver] "
                 "relative_tolerance/absolute_tolerance or use integrator = 'adaptive'",
                 where=f"crank angle {math.degrees(phi_new):.2f} deg")
-        return status, phi_new, u_new, steps, next_out
+        return status, phi_new, u_new, h, steps, next_out
 
 
 def _film_jacobian(problem: OrbitProblem, phases: _Phases, rhs, phi, u, f0, params, data):

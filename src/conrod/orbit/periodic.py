@@ -26,6 +26,7 @@ returning silently.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
@@ -36,6 +37,7 @@ from conrod import registry
 from conrod.orbit.acceleration import AndersonMixing
 from conrod.orbit.integrators import Integrator
 from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
+from conrod.orbit.progress import reporting
 from conrod.orbit.trajectory import CycleTrajectory
 
 MIXING_LIMIT = 0.999
@@ -97,8 +99,11 @@ def periodic_orbit(
     integrator: str | Integrator | None = None,
     start: OrbitState | None = None,
     on_cycle: Callable[[int, float], None] | None = None,
+    on_angle: Callable[[int, float], None] | None = None,
 ) -> PeriodicOrbit:
-    """Integrate cycles from ``start`` (concentric) until periodic or ``max_cycles``."""
+    """Integrate cycles from ``start`` (concentric) until periodic or ``max_cycles``;
+    ``on_cycle(cycle, periodicity error)`` after each cycle, ``on_angle(cycle, crank angle
+    reached in it [rad])`` whenever the integrator reports (:mod:`conrod.orbit.progress`)."""
     chosen = _integrator(integrator or settings.integrator)
     if start is None and getattr(settings, "massless_start", False) and _implicit(chosen,
                                                                                  problem):
@@ -110,7 +115,8 @@ def periodic_orbit(
     error = float("inf")
     extrapolated = False
     for cycle in range(1, settings.max_cycles + 1):
-        current = integrate_cycle(problem, state, settings, chosen)
+        with reporting(None if on_angle is None else functools.partial(on_angle, cycle)):
+            current = integrate_cycle(problem, state, settings, chosen)
         if extrapolated:
             error = cycle_closure(state, current.end_state, problem, mixing.with_mass)
         elif previous is not None:
