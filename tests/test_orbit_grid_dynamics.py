@@ -193,14 +193,16 @@ def test_accelerated_orbit_equals_the_repeated_cycles_in_fewer_cycles(film):
 
 
 def test_in_cycle_reports_do_not_change_the_orbit():
-    """The implicit integrator reports increasing crank angles up to the cycle's end, and
-    the orbit is bit for bit the same with and without a listener."""
-    problem = short_problem(load_cycle(*engine_like_load()), mass=1.0)
+    """On a grid film the implicit integrator reports increasing crank angles every 30°
+    up to the cycle's end, and the orbit is bit for bit the same with and without a
+    listener."""
+    problem = short_problem(load_cycle(*engine_like_load(peak=6e3)), film=_reynolds(),
+                            mass=2.0)
     start = OrbitState(5e-6, 2e-6, 0.0, 0.0)
     angles: list[float] = []
     with reporting(angles.append):
         heard = integrate_cycle(problem, start, solver(), "implicit")
     silent = integrate_cycle(problem, start, solver(), "implicit")
     assert np.all(np.diff(angles) > 0.0) and angles[-1] == pytest.approx(4 * math.pi)
-    assert len(angles) >= 24
+    assert len(angles) == 24
     assert np.array_equal(heard.x, silent.x) and np.array_equal(heard.vy, silent.vy)
