@@ -11,8 +11,9 @@ With ``[solver] accelerate_cycles`` (default) a cycle does not start where the l
 ended but at the Anderson extrapolation of the cycle-to-cycle map
 (:mod:`conrod.orbit.acceleration`) on the state at φ = 0 (position and velocity scaled by
 c and c ω; the position alone for the massless orbit, whose velocity follows from it).
-Not for a film whose memory is a film content (it would have to be extrapolated too),
-nor across a contact at φ = 0.
+Only while the plainly repeated cycles converge slowly (the periodicity error falling by
+less than 20× per cycle); not for a film whose memory is a film content (it would have to
+be extrapolated too), nor across a contact at φ = 0.
 
 Periodicity error of cycle k: max over the output angles of |e_k(φ) − e_{k−1}(φ)|/c [-]
 (for a cycle repeated from where the last one ended: it is then the last cycle's
@@ -42,6 +43,9 @@ from conrod.orbit.trajectory import CycleTrajectory
 
 MIXING_LIMIT = 0.999
 """Extrapolated starts stay inside this fraction of the contact circle [-]."""
+FAST_CONTRACTION = 0.05
+"""No extrapolation while the periodicity error falls by more than 20× per cycle (the
+shipped engine cases: periodic after 2–3 cycles either way) [-]."""
 
 
 @dataclass
@@ -127,7 +131,8 @@ def periodic_orbit(
         if cycle >= settings.min_cycles and error <= settings.periodicity_tolerance:
             return PeriodicOrbit(current, previous, cycle, error, True, history)
         previous = current
-        state, extrapolated = _next_start(mixing, state, current.end_state, problem)
+        state, extrapolated = _next_start(mixing, state, current.end_state, problem,
+                                          _slow(history))
     return PeriodicOrbit(current, previous, settings.max_cycles, error, False, history)
 
 
@@ -141,6 +146,7 @@ def _mixing(problem: OrbitProblem, chosen: Integrator, settings) -> _Mixing | No
         chosen = chosen.choose(problem)
     limit = MIXING_LIMIT * problem.contact_radius / problem.clearance
     return _Mixing(AndersonMixing(limit), not isinstance(chosen, QuasiStaticIntegrator))
+    # an integrator object of unknown kind is treated as one with mass
 
 
 @dataclass
@@ -149,9 +155,17 @@ class _Mixing:
     with_mass: bool
 
 
+def _slow(history: list[float]) -> bool:
+    """The periodicity error of plainly repeated cycles falls by less than
+    :data:`FAST_CONTRACTION` per cycle (extrapolation pays only then)."""
+    finite = [e for e in history if np.isfinite(e)]
+    return len(finite) >= 2 and finite[-1] > FAST_CONTRACTION * finite[-2]
+
+
 def _next_start(mixing: _Mixing | None, start: OrbitState, end: OrbitState,
-                problem: OrbitProblem) -> tuple[OrbitState, bool]:
-    """Start of the next cycle and whether it is extrapolated (else ``end`` itself)."""
+                problem: OrbitProblem, slow: bool) -> tuple[OrbitState, bool]:
+    """Start of the next cycle and whether it is extrapolated (else ``end`` itself); the
+    mixing records every cycle but extrapolates only when convergence is ``slow``."""
     if mixing is None:
         return end, False
     if start.in_contact or end.in_contact:
@@ -163,7 +177,7 @@ def _next_start(mixing: _Mixing | None, start: OrbitState, end: OrbitState,
     proposal = mixing.anderson.propose(
         np.array([start.x, start.y, start.vx, start.vy])[:size] / scale,
         np.array([end.x, end.y, end.vx, end.vy])[:size] / scale)
-    if proposal is None:
+    if proposal is None or not slow:
         return end, False
     values = np.array([end.x, end.y, end.vx, end.vy])
     values[:size] = proposal * scale
