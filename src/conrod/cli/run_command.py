@@ -82,8 +82,8 @@ class _Progress:
     def _time_left(self, fraction: float) -> float | None:
         """Rest of this cycle plus the cycles the error's decay still needs [s]."""
         elapsed = time.perf_counter() - self.cycle_start
-        if self.durations:
-            per_cycle = sum(self.durations) / len(self.durations)
+        if self.durations:  # the last cycle: the first one includes numba compilation
+            per_cycle = self.durations[-1]
         elif fraction > 0.05:
             per_cycle = elapsed / fraction
         else:
