@@ -16,6 +16,7 @@ film model (``[solver] film``) → periodic orbit from the concentric start → 
 from __future__ import annotations
 
 import dataclasses
+import math
 import time
 from collections.abc import Callable
 from typing import Any
@@ -273,8 +274,15 @@ class Simulation:
             if progress is not None:
                 progress(stage, cycle, error)
 
+        in_cycle = getattr(progress, "in_cycle", None)  # optional: crank angle in a cycle
+        cycle_deg = math.degrees(problem.loads.cycle)
+
+        def on_angle(cycle: int, phi: float) -> None:
+            in_cycle(stage, cycle, math.degrees(phi), cycle_deg)
+
         return periodic_orbit(problem, self.solver, integrator=self.integrator(),
-                              start=state, on_cycle=on_cycle)
+                              start=state, on_cycle=on_cycle,
+                              on_angle=on_angle if in_cycle is not None else None)
 
 
 @dataclasses.dataclass(frozen=True)

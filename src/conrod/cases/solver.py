@@ -69,6 +69,11 @@ class SolverSection(Section):
         description="Start the implicit orbit with mass from the periodic massless orbit "
         "(fewer cycles); false: from the concentric position [-]",
 )
+    accelerate_cycles: bool = Field(
+        default=True,
+        description="Start each cycle at the Anderson extrapolation of the cycle-to-cycle "
+        "map instead of where the last cycle ended (fewer cycles to a periodic orbit) [-]",
+)
     max_cycles: int = Field(default=8, ge=1, le=200, description="Most cycles to integrate [-]")
     min_cycles: int = Field(default=2, ge=1, le=200, description="Fewest cycles to integrate [-]")
     periodicity_tolerance: float = Field(

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import enum
+import math
 import time
 from pathlib import Path
 from typing import Annotated, Any
@@ -19,30 +20,84 @@ IntegratorChoice = enum.Enum("IntegratorChoice", {n: n for n in INTEGRATOR_NAMES
 """The registered integrator names, validated by the command line."""
 
 PROGRESS_AFTER_S = 1.0
-"""A progress bar appears on runs longer than this [s]."""
+"""Without a terminal, the first log line comes once the run has taken this long [s]."""
 
 
 class _Progress:
-    """rich progress on stderr, shown once the run has taken more than a second."""
+    """Orbit progress on stderr. On a terminal: a rich bar from the start, moved by the
+    integrator's in-cycle reports (crank angle in the cycle, cycle, periodicity error,
+    estimated time left). Otherwise: one log line per cycle once the run has taken more
+    than :data:`PROGRESS_AFTER_S`."""
 
-    def __init__(self, max_cycles: int):
-        self.max_cycles = max_cycles
-        self.start = time.perf_counter()
+    def __init__(self, max_cycles: int, tolerance: float):
+        from rich.console import Console
+
+        self.max_cycles, self.tolerance = max_cycles, tolerance
+        self.console = Console(stderr=True)
+        self.start = self.cycle_start = time.perf_counter()
+        self.durations: list[float] = []
+        self.errors: list[float] = []
         self.bar: Any = None
         self.task: Any = None
+        if self.console.is_terminal:
+            from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+            self.bar = Progress(TextColumn("{task.description}"), BarColumn(),
+                                TimeElapsedColumn(), console=self.console, transient=True)
+            self.bar.start()
+            self.task = self.bar.add_task("orbit: starting", total=max_cycles)
 
     def __call__(self, stage: str, cycle: int, error: float) -> None:
+        """End of ``cycle`` with its periodicity error [-]."""
         raise_if_interrupted()
-        if self.bar is None and time.perf_counter() - self.start > PROGRESS_AFTER_S:
-            from rich.console import Console
-            from rich.progress import Progress
-
-            self.bar = Progress(console=Console(stderr=True), transient=True)
-            self.bar.start()
-            self.task = self.bar.add_task("orbit", total=self.max_cycles)
+        now = time.perf_counter()
+        self.durations.append(now - self.cycle_start)
+        self.cycle_start = now
+        self.errors.append(error)
         if self.bar is not None:
             self.bar.update(self.task, completed=min(cycle, self.max_cycles),
-                            description=f"{stage}: cycle {cycle}, Δe/c = {error:.2g}")
+                            description=self._text(stage, cycle, None, None, 1.0))
+        elif now - self.start > PROGRESS_AFTER_S:
+            self.console.print(
+                f"{stage}: cycle {cycle} in {self.durations[-1]:.1f} s, periodicity error "
+                f"{error:.2g} (tolerance {self.tolerance:g}), {now - self.start:.1f} s "
+                "elapsed", highlight=False, soft_wrap=True)
+
+    def in_cycle(self, stage: str, cycle: int, angle_deg: float, cycle_deg: float) -> None:
+        """The integrator has reached ``angle_deg`` of ``cycle_deg`` in ``cycle`` [deg]."""
+        raise_if_interrupted()
+        if self.bar is None:
+            return
+        fraction = min(max(angle_deg / cycle_deg, 0.0), 1.0)
+        self.bar.update(self.task, completed=min(cycle - 1 + fraction, self.max_cycles),
+                        description=self._text(stage, cycle, angle_deg, cycle_deg, fraction))
+
+    def _text(self, stage, cycle, angle_deg, cycle_deg, fraction) -> str:
+        where = (f", {angle_deg:.0f}/{cycle_deg:.0f}°" if angle_deg is not None else " done")
+        error = f", Δe/c {self.errors[-1]:.2g}" if self.errors else ""
+        left = self._time_left(fraction)
+        return (f"{stage}: cycle {cycle}{where}{error}"
+                + (f", ~{left:.0f} s left" if left is not None else ""))
+
+    def _time_left(self, fraction: float) -> float | None:
+        """Rest of this cycle plus the cycles the error's decay still needs [s]."""
+        elapsed = time.perf_counter() - self.cycle_start
+        if self.durations:  # the last cycle: the first one includes numba compilation
+            per_cycle = self.durations[-1]
+        elif fraction > 0.05:
+            per_cycle = elapsed / fraction
+        else:
+            return None
+        errors = [e for e in self.errors if math.isfinite(e)]
+        more = 1
+        if len(errors) >= 2 and 0.0 < errors[-1] < errors[-2]:
+            rate = errors[-1] / errors[-2]
+            more = max(0, math.ceil(math.log(self.tolerance / errors[-1]) / math.log(rate)))
+        elif errors and errors[-1] <= self.tolerance:
+            more = 0
+        more = min(more, max(self.max_cycles - len(self.durations) - 1, 0))
+        current = max(per_cycle - elapsed, 0.0) if fraction < 1.0 else 0.0
+        return current + more * per_cycle
 
     def close(self) -> None:
         if self.bar is not None:
@@ -89,7 +144,8 @@ def register(app: typer.Typer) -> None:
                                 integrator=integrator and integrator.value, max_cycles=max_cycles,
                                 step_deg=step_deg, n_theta=n_theta, n_z=n_z,
                                 rigid_companion=rigid)
-        progress = _Progress(simulation.solver.max_cycles)
+        progress = _Progress(simulation.solver.max_cycles,
+                             simulation.solver.periodicity_tolerance)
         try:
             results = simulation.run(progress=progress)
         finally:

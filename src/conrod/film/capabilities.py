@@ -14,6 +14,8 @@ declares what its inner model declares by delegating the methods.
   content (mass-conserving film), the orbit's step for films with content;
 * :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
   integrator's Newton matrix);
+* :class:`HasFlightKernel` — a compiled force and Jacobian with a warm start that the
+  implicit orbit integrator runs inside its compiled free flight;
 * :class:`HasMemory` — the answer depends on an explicit memory value (warm-start field,
   film content) that the *integrator* owns: it initialises it, threads it through every
   solve, advances it over a step, snapshots it and restores it on a rejected step.
@@ -155,6 +157,18 @@ class HasForceJacobian(Protocol):
                                                                         Any]:
         """(F (2,) [N], J (2, 4), memory after the solve) at ``state`` from ``memory``
         (None for a memoryless film)."""
+        ...
+
+
+@runtime_checkable
+class HasFlightKernel(Protocol):
+    """A film whose force, warm-started, can run inside the compiled implicit free flight
+    (:class:`~conrod.film.reynolds_flight.FlightKernel`: compiled force and Jacobian with
+    the warm-start field in their parameters)."""
+
+    def flight_kernel(self, memory: Any, newton_tolerance: float) -> Any:
+        """The kernel warm-started from ``memory``, force evaluations solved to
+        ``newton_tolerance`` [-]; None when this configuration has none."""
         ...
 
 

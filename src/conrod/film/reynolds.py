@@ -213,6 +213,14 @@ class ReynoldsFilm:
         lin = linearise_reynolds(self, state, memory=memory)
         return lin.force, np.hstack([-lin.stiffness, -lin.damping]), memory
 
+    def flight_kernel(self, memory: ReynoldsMemory | None, newton_tolerance: float):
+        """Compiled force and Jacobian warm-started from ``memory`` for the implicit orbit
+        with mass (:func:`conrod.film.reynolds_flight.flight_kernel`; None when not exact
+        for this configuration)."""
+        from conrod.film.reynolds_flight import flight_kernel
+
+        return flight_kernel(self, memory, newton_tolerance)
+
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """All film characteristics for one state (cold solve)."""
         return self.solve_with_memory(state, self.initial_memory(),

@@ -19,7 +19,7 @@ import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmState
-from conrod.film.capabilities import HasForceJacobian
+from conrod.film.capabilities import HasFlightKernel, HasForceJacobian
 from conrod.orbit.adaptive import (
     MAX_PHASE_CHANGES,
     _free_rhs,
@@ -31,6 +31,7 @@ from conrod.orbit.adaptive import (
     _switch,
 )
 from conrod.orbit.problem import OrbitProblem, OrbitState, periodic_sample
+from conrod.orbit.progress import REPORT_EVERY_DEG, report_angle
 from conrod.orbit.tr_bdf2 import STATUS_END, STATUS_HIT, STATUS_NEWTON, segment
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -39,6 +40,15 @@ FIRST_STEP = 1.0e-4
 PYTHON_REFRESH_RATE = 0.1
 """Newton contraction rate above which a film solved in Python gets a new Jacobian (a
 compiled film gets one after every step that needed more than one iteration) [-]."""
+NEWTON_FILM_TOLERANCE = 0.5
+"""Multigrid tolerance of a compiled grid film inside Newton, as a fraction of the
+integrator's ``relative_tolerance`` [-]: a relative force error δ moves a stage by about δ
+times the state, below the Newton stop (5 % of the tolerance) for δ ≤ 0.05 rtol; the
+multigrid's force error is ~0.03 × its tolerance (last relative change per cycle;
+measured on the passenger-car case at 72×16), so 0.5 rtol leaves a factor ~3 (and the
+absolute tolerance, 1e-4 by default, a far larger one). Passenger car 72×16: 21 800
+multigrid cycles per cycle at 0.1, 19 600 at 0.5, 18 400 at 1.0; the orbits of all three
+within 3.3e-5 c of one at 5e-3."""
 STEPS_PER_DEGREE = 2000
 """Most accepted steps per degree of crank angle in a segment before giving up [-]."""
 
@@ -55,6 +65,36 @@ def _kernel_rhs(force):
                          mass_x, mass_y)
 
     return rhs
+
+
+@functools.cache
+def _kernel_jacobian(film_jacobian):
+    """Compiled ∂(du/dφ)/∂u [-] from a flight kernel's ∂F/∂(e, ė)
+    (:class:`~conrod.film.reynolds_flight.FlightKernel`); same data as :func:`_kernel_rhs`."""
+
+    @nb.njit
+    def jacobian(rhs, phi, u, f0, params, data):
+        angles, table, cycle, mu, c, omega, mass_x, mass_y = data
+        row = periodic_sample(phi, angles, table, cycle)
+        c_omega = c * omega
+        _, film = film_jacobian(u[0] * c, u[1] * c, u[2] * c_omega, u[3] * c_omega,
+                                row[2] + row[3], mu, params)
+        return _scaled_jacobian(film, c, omega, mass_x, mass_y)
+
+    return jacobian
+
+
+@nb.njit(cache=True)
+def _scaled_jacobian(film, c, omega, mass_x, mass_y):
+    """∂(du/dφ)/∂u [-] from the film's ∂F/∂(e, ė) (2 × 4) [N/m, N s/m]."""
+    out = np.zeros((4, 4))
+    out[0, 2] = out[1, 3] = 1.0
+    for row in range(2):
+        scale = (mass_x if row == 0 else mass_y) * c * omega * omega
+        for col in range(2):
+            out[2 + row, col] = film[row, col] * c / scale
+            out[2 + row, 2 + col] = film[row, 2 + col] * c * omega / scale
+    return out
 
 
 def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleTrajectory:
@@ -114,15 +154,26 @@ class _FreeFlight:
     def __init__(self, problem: OrbitProblem, phases: _Phases, settings):
         kernel = problem.compiled_force
         self.compiled = kernel is not None
+        self.chunked = kernel is None  # a closed-form or tabulated force: one chunk
+        self.jacobian = None
+        self.flight = None
+        self.session = phases.session
+        self.refresh_rate = 0.0 if self.compiled else PYTHON_REFRESH_RATE
         if self.compiled:
             self.rhs, self.params = _kernel_rhs(kernel.force), kernel.params
-        else:
+        elif problem.asperity is None and isinstance(problem.film, HasFlightKernel):
+            self.flight = problem.film.flight_kernel(
+                phases.session.memory,
+                NEWTON_FILM_TOLERANCE * float(settings.relative_tolerance))
+        self.evaluate = self.flight is None  # stage derivatives: see tr_bdf2._stage
+        if self.flight is not None:  # grid film compiled, expensive Jacobian: keep it
+            self.compiled = True
+            self.rhs, self.params = _kernel_rhs(self.flight.force), self.flight.params
+            self.jacobian = _kernel_jacobian(self.flight.jacobian)
+        elif not self.compiled:
             self.rhs, self.params = (lambda phi, u, params, data: phases.free_rhs(phi, u)), ()
-        self.jacobian = None
-        self.refresh_rate = 0.0 if self.compiled else PYTHON_REFRESH_RATE
-        if (not self.compiled and problem.asperity is None
-                and isinstance(problem.film, HasForceJacobian)):
-            self.jacobian = functools.partial(_film_jacobian, problem, phases)
+            if problem.asperity is None and isinstance(problem.film, HasForceJacobian):
+                self.jacobian = functools.partial(_film_jacobian, problem, phases)
         self.data = (phases.angles, phases.table, float(problem.loads.cycle),
                      float(problem.viscosity), float(problem.clearance),
                      float(problem.crank_speed), float(problem.mass_x),
@@ -134,14 +185,34 @@ class _FreeFlight:
         self.h = FIRST_STEP
 
     def run(self, phi, end, u, phi_out, out_u, next_out):
-        """(status, φ, u, steps, next output row) of one segment from φ."""
+        """(status, φ, u, steps, next output row) of one segment from φ; for a film
+        solved on a grid integrated in chunks ending on multiples of
+        :data:`~conrod.orbit.progress.REPORT_EVERY_DEG` (each reported to the progress
+        display; ~0.5 ms of call overhead each, which a compiled closed-form film would
+        feel)."""
+        chunk = math.radians(REPORT_EVERY_DEG) if self.chunked else end
+        h, total = min(self.h, FIRST_STEP * 10), 0
+        while True:
+            stop = min(end, (math.floor(phi / chunk + 1e-9) + 1) * chunk)
+            if end - stop < 1e-9 * chunk:
+                stop = end
+            status, phi, u, h, steps, next_out = self._chunk(phi, stop, u, h, phi_out,
+                                                             out_u, next_out)
+            total += steps
+            report_angle(phi)
+            if status != STATUS_END or stop >= end:
+                return status, phi, u, total, next_out
+
+    def _chunk(self, phi, end, u, h, phi_out, out_u, next_out):
         max_steps = int(STEPS_PER_DEGREE * max(math.degrees(end - phi), 1.0))
-        status, phi_new, u_new, h, steps, next_out, _ = segment(
-            self.rhs, self.params, self.data, float(phi), end,
-            np.asarray(u, dtype=float), min(self.h, FIRST_STEP * 10), self.max_step,
-            self.rtol, self.atol, self.circle, phi_out, out_u, next_out, max_steps,
-            compiled=self.compiled, jacobian=self.jacobian, refresh_rate=self.refresh_rate)
+        status, phi_new, u_new, h, steps, next_out, self.evaluations = segment(
+            self.rhs, self.params, self.data, float(phi), float(end),
+            np.asarray(u, dtype=float), h, self.max_step, self.rtol, self.atol,
+            self.circle, phi_out, out_u, next_out, max_steps, compiled=self.compiled,
+            jacobian=self.jacobian, refresh_rate=self.refresh_rate, evaluate=self.evaluate)
         self.h = h
+        if self.flight is not None:  # the warm start goes on in the session
+            self.session.restore(self.flight.memory())
         if status not in (STATUS_END, STATUS_HIT):
             what = ("Newton iteration failed at the smallest step"
                     if status == STATUS_NEWTON else "step size collapsed")
@@ -150,7 +221,7 @@ class _FreeFlight:
                 f"{math.hypot(u_new[0], u_new[1]):.4f}); loosen [solver] "
                 "relative_tolerance/absolute_tolerance or use integrator = 'adaptive'",
                 where=f"crank angle {math.degrees(phi_new):.2f} deg")
-        return status, phi_new, u_new, steps, next_out
+        return status, phi_new, u_new, h, steps, next_out
 
 
 def _film_jacobian(problem: OrbitProblem, phases: _Phases, rhs, phi, u, f0, params, data):

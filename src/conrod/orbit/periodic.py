@@ -7,7 +7,19 @@ periodic within two cycles (passenger car: 3 → 2 cycles; constant load on a Re
 film: 5 → 2), and the massless cycles cost a fraction of one with mass. Cycles and
 periodicity error are those of the orbit with mass.
 
-Periodicity error of cycle k: max over the output angles of |e_k(φ) − e_{k−1}(φ)|/c [-].
+With ``[solver] accelerate_cycles`` (default) a cycle does not start where the last one
+ended but at the Anderson extrapolation of the cycle-to-cycle map
+(:mod:`conrod.orbit.acceleration`) on the state at φ = 0 (position and velocity scaled by
+c and c ω; the position alone for the massless orbit, whose velocity follows from it).
+Only while the plainly repeated cycles converge slowly (the periodicity error falling by
+less than 20× per cycle); not for a film whose memory is a film content (it would have to
+be extrapolated too), nor across a contact at φ = 0.
+
+Periodicity error of cycle k: max over the output angles of |e_k(φ) − e_{k−1}(φ)|/c [-]
+(for a cycle repeated from where the last one ended: it is then the last cycle's
+closure seen along the whole cycle). A cycle from an extrapolated start is measured by its
+own closure, max(|e_k(end) − e_k(0)|/c, |ė_k(end) − ė_k(0)|/(c ω)) (position only for
+the massless orbit): the previous cycle started elsewhere and says nothing about it.
 The orbit is periodic when it is at most ``[solver] periodicity_tolerance``; if it is not
 after ``max_cycles``, the result says so (``periodic = False`` plus a warning) instead of
 returning silently.
@@ -15,15 +27,25 @@ returning silently.
 
 from __future__ import annotations
 
+import functools
+import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from conrod import registry
+from conrod.orbit.acceleration import AndersonMixing
 from conrod.orbit.integrators import Integrator
 from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
+from conrod.orbit.progress import reporting
 from conrod.orbit.trajectory import CycleTrajectory
+
+MIXING_LIMIT = 0.999
+"""Extrapolated starts stay inside this fraction of the contact circle [-]."""
+FAST_CONTRACTION = 0.05
+"""No extrapolation while the periodicity error falls by more than 20× per cycle (the
+shipped engine cases: periodic after 2–3 cycles either way) [-]."""
 
 
 @dataclass
@@ -63,6 +85,17 @@ def cycle_difference(a: CycleTrajectory, b: CycleTrajectory, clearance: float) -
     return float(np.max(np.hypot(a.x - b.x, a.y - b.y)) / clearance)
 
 
+def cycle_closure(start: OrbitState, end: OrbitState, problem: OrbitProblem,
+                  with_mass: bool) -> float:
+    """How far one cycle is from closing on itself: max(|e_end − e_0|/c, and with mass
+    |ė_end − ė_0|/(c ω)) [-]."""
+    c, w = problem.clearance, problem.crank_speed
+    closure = math.hypot(end.x - start.x, end.y - start.y) / c
+    if with_mass:
+        closure = max(closure, math.hypot(end.vx - start.vx, end.vy - start.vy) / (c * w))
+    return closure
+
+
 def periodic_orbit(
     problem: OrbitProblem,
     settings,
@@ -70,28 +103,86 @@ def periodic_orbit(
     integrator: str | Integrator | None = None,
     start: OrbitState | None = None,
     on_cycle: Callable[[int, float], None] | None = None,
+    on_angle: Callable[[int, float], None] | None = None,
 ) -> PeriodicOrbit:
-    """Integrate cycles from ``start`` (concentric) until periodic or ``max_cycles``."""
+    """Integrate cycles from ``start`` (concentric) until periodic or ``max_cycles``;
+    ``on_cycle(cycle, periodicity error)`` after each cycle, ``on_angle(cycle, crank angle
+    reached in it [rad])`` whenever the integrator reports (:mod:`conrod.orbit.progress`)."""
     chosen = _integrator(integrator or settings.integrator)
     if start is None and getattr(settings, "massless_start", False) and _implicit(chosen,
                                                                                  problem):
         start = _massless_start(problem, settings)
     state = start or initial_state()
-    integrator = chosen
+    mixing = _mixing(problem, chosen, settings)
     previous: CycleTrajectory | None = None
     history: list[float] = []
     error = float("inf")
+    extrapolated = False
     for cycle in range(1, settings.max_cycles + 1):
-        current = integrate_cycle(problem, state, settings, integrator)
-        if previous is not None:
+        with reporting(None if on_angle is None else functools.partial(on_angle, cycle)):
+            current = integrate_cycle(problem, state, settings, chosen)
+        if extrapolated:
+            error = cycle_closure(state, current.end_state, problem, mixing.with_mass)
+        elif previous is not None:
             error = cycle_difference(current, previous, problem.clearance)
         history.append(error)
         if on_cycle is not None:
             on_cycle(cycle, error)
         if cycle >= settings.min_cycles and error <= settings.periodicity_tolerance:
             return PeriodicOrbit(current, previous, cycle, error, True, history)
-        previous, state = current, current.end_state
+        previous = current
+        state, extrapolated = _next_start(mixing, state, current.end_state, problem,
+                                          _slow(history))
     return PeriodicOrbit(current, previous, settings.max_cycles, error, False, history)
+
+
+def _mixing(problem: OrbitProblem, chosen: Integrator, settings) -> _Mixing | None:
+    """The Anderson mixing of this run, None when it is off or cannot apply."""
+    if not getattr(settings, "accelerate_cycles", False) or problem.has_film_content:
+        return None
+    from conrod.orbit.integrators import AutomaticIntegrator, QuasiStaticIntegrator
+
+    if isinstance(chosen, AutomaticIntegrator):
+        chosen = chosen.choose(problem)
+    limit = MIXING_LIMIT * problem.contact_radius / problem.clearance
+    return _Mixing(AndersonMixing(limit), not isinstance(chosen, QuasiStaticIntegrator))
+    # an integrator object of unknown kind is treated as one with mass
+
+
+@dataclass
+class _Mixing:
+    anderson: AndersonMixing
+    with_mass: bool
+
+
+def _slow(history: list[float]) -> bool:
+    """The periodicity error of plainly repeated cycles falls by less than
+    :data:`FAST_CONTRACTION` per cycle (extrapolation pays only then)."""
+    finite = [e for e in history if np.isfinite(e)]
+    return len(finite) >= 2 and finite[-1] > FAST_CONTRACTION * finite[-2]
+
+
+def _next_start(mixing: _Mixing | None, start: OrbitState, end: OrbitState,
+                problem: OrbitProblem, slow: bool) -> tuple[OrbitState, bool]:
+    """Start of the next cycle and whether it is extrapolated (else ``end`` itself); the
+    mixing records every cycle but extrapolates only when convergence is ``slow``."""
+    if mixing is None:
+        return end, False
+    if start.in_contact or end.in_contact:
+        mixing.anderson.reset()
+        return end, False
+    c, w = problem.clearance, problem.crank_speed
+    size = 4 if mixing.with_mass else 2
+    scale = np.array([c, c, c * w, c * w])[:size]
+    proposal = mixing.anderson.propose(
+        np.array([start.x, start.y, start.vx, start.vy])[:size] / scale,
+        np.array([end.x, end.y, end.vx, end.vy])[:size] / scale)
+    if proposal is None or not slow:
+        return end, False
+    values = np.array([end.x, end.y, end.vx, end.vy])
+    values[:size] = proposal * scale
+    return replace(end, x=float(values[0]), y=float(values[1]), vx=float(values[2]),
+                   vy=float(values[3])), True
 
 
 def _implicit(chosen: Integrator, problem: OrbitProblem) -> bool:

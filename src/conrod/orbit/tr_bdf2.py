@@ -63,15 +63,23 @@ def _norm(v, scale):
     return math.sqrt(total / v.size)
 
 
-def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol, eta):
+def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol, eta, evaluate):
     """Solve z = base + d h f(φ, z) by simplified Newton with ``inverse`` = (I − d h J)⁻¹,
     stopping when the estimated iteration error η‖Δz‖ (η = ρ/(1 − ρ), ρ the contraction
     rate; ``eta`` from the previous stage before a rate is known) is below
     :data:`NEWTON_KAPPA` of the tolerance (Hairer & Wanner, Solving ODEs II, IV.8).
-    Returns (z, f(z) = (z − base)/(d h), converged, rate, η)."""
+    Returns (z, f(z), converged, rate, η); f(z) is evaluated when ``evaluate``, else taken
+    from the stage equation, f(z) = (z − base)/(d h): one film solve less per stage for
+    an expensive f, and for a stiff f the Newton error is not amplified by the stiffness
+    (Shampine). Used for the compiled grid film; the others evaluate it (with tolerances
+    so loose that Newton stops after one iteration only the evaluated f keeps the method
+    second order, and the Python films with finite-difference Jacobians were validated
+    that way)."""
     z = guess.copy()
     previous = 0.0
     rate = 0.0
+    converged = False
+    f = np.zeros(z.size)
     for it in range(NEWTON_ITERATIONS):
         f = rhs(phi, z, params, data)
         delta = _apply(inverse, base + dh * f - z)
@@ -80,12 +88,16 @@ def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol, eta):
         if it > 0:
             rate = size / previous if previous > 0.0 else 0.0
             if rate >= 0.9:  # no contraction: converged only if already at noise level
-                return z, rhs(phi, z, params, data), size < NEWTON_KAPPA, rate, eta
+                converged = size < NEWTON_KAPPA
+                break
             eta = rate / (1.0 - rate)
         if eta * size < NEWTON_KAPPA:
-            return z, rhs(phi, z, params, data), True, rate, eta
+            converged = True
+            break
         previous = size
-    return z, f, False, rate, eta
+    if converged:
+        f = rhs(phi, z, params, data) if evaluate else (z - base) / dh
+    return z, f, converged, rate, eta
 
 
 @nb.njit(cache=True)
@@ -126,14 +138,15 @@ def _hit_fraction(h, u0, f0, u1, f1, circle):
 
 
 def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol, atol, circle,
-             out_phi, out_u, next_out, max_steps, refresh_rate):
+             out_phi, out_u, next_out, max_steps, refresh_rate, evaluate):
     """Integrate du/dφ = rhs(φ, u, params, data) from φ to ``end`` (free flight).
 
     u : scaled state (x/c, y/c, v_x/(c ω), v_y/(c ω)) [-]; h, max_step [rad];
     circle : contact radius / c [-] (the segment stops where the centre reaches it);
     out_phi : output angles [rad]; rows of ``out_u`` from ``next_out`` on are filled as
     the steps pass them; J is refreshed after a step whose Newton contraction rate
-    exceeded ``refresh_rate`` [-]. Returns (status, φ, u, h, steps, next_out, jacobian evaluations).
+    exceeded ``refresh_rate`` [-]; ``evaluate``: stage derivatives by evaluating f
+    (:func:`_stage`). Returns (status, φ, u, h, steps, next_out, jacobian evaluations).
     """
     f = rhs(phi, u, params, data)
     jac = jacobian(rhs, phi, u, f, params, data)
@@ -160,13 +173,13 @@ def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol,
             guess = u + 2.0 * dh * f
         eta = max(eta, 1.0e-3) ** 0.8
         z, fz, ok, rate1, eta = stage(rhs, phi + 2.0 * dh, u + dh * f, guess, dh, inverse,
-                                      params, data, atol, rtol, eta)
+                                      params, data, atol, rtol, eta, evaluate)
         rate2 = 0.0
         if ok:
             base = u + h * WEIGHT * (f + fz)
             guess = _hermite(0.5 / GAMMA_HALF, 2.0 * dh, u, f, z, fz)
             u1, f1, ok, rate2, eta = stage(rhs, phi + h, base, guess, dh, inverse, params,
-                                           data, atol, rtol, eta)
+                                           data, atol, rtol, eta, evaluate)
         if not ok:
             if not fresh:
                 jac = jacobian(rhs, phi, u, f, params, data)
@@ -219,13 +232,15 @@ segment_compiled = nb.njit(_segment)
 
 
 def segment(rhs, params, data, phi, end, u, h, max_step, rtol, atol, circle, out_phi,
-            out_u, next_out, max_steps, *, compiled, jacobian=None, refresh_rate=0.1):
+            out_u, next_out, max_steps, *, compiled, jacobian=None, refresh_rate=0.1,
+            evaluate=True):
     """:func:`_segment` compiled (``rhs`` a numba function) or in Python; ``jacobian``
-    (rhs, φ, u, f, params, data) → ∂f/∂u, default forward differences."""
+    (rhs, φ, u, f, params, data) → ∂f/∂u, default forward differences; ``evaluate``:
+    stage derivatives evaluated (cheap f) or from the stage equations (:func:`_stage`)."""
     if compiled:
         return segment_compiled(rhs, jacobian or fd_jacobian_compiled, stage_compiled,
                                 params, data, phi, end, u, h, max_step, rtol, atol, circle,
-                                out_phi, out_u, next_out, max_steps, refresh_rate)
+                                out_phi, out_u, next_out, max_steps, refresh_rate, evaluate)
     return _segment(rhs, jacobian or _fd_jacobian, _stage, params, data, phi, end, u, h,
                     max_step, rtol, atol, circle, out_phi, out_u, next_out, max_steps,
-                    refresh_rate)
+                    refresh_rate, evaluate)

@@ -1,0 +1,238 @@
+"""Compiled Reynolds film force and force Jacobian with a warm start, for the orbit with mass.
+
+The implicit orbit integrator (:mod:`conrod.orbit.tr_bdf2`) runs its whole free flight
+compiled when the film force is a numba function. For the rigid, isoviscous
+:class:`~conrod.film.reynolds.ReynoldsFilm` solved by multigrid this module gives it one:
+the discrete source of the Reynolds equation is linear in the squeeze velocity of the
+mean frame,
+
+.. math:: b = 12μ\\,w_z R Δθ\\,(v_{s,x}\\cos θ + v_{s,y}\\sin θ), \\qquad
+          \\mathbf v_s = \\dot{\\mathbf e} − κ\\bar ω(−e_y, e_x),\\; κ = \\sin Δθ/Δθ,
+
+exactly the central-difference wedge plus squeeze term of
+:func:`conrod.film.reynolds_kernel.assemble_coefficients` (Booker [1];
+:mod:`conrod.film.reynolds_squeeze`), so a force evaluation is one call of the compiled
+projected multigrid (:func:`conrod.film.reynolds_multigrid.multigrid_solve`) on the same
+grid, masks, supply pressure, cavitation pressure and mid-plane symmetry as the film,
+warm-started from the last solved field that the kernel carries in its parameters.
+
+Tolerances: the Newton iterations of the integrator solve the film to a relative change of
+``newton_tolerance`` (the integrator's state needs ~1e-8, the film's 1e-12 default is
+wasted there); the Jacobian ∂F/∂(e, ė) (forward differences from a converged field, one
+warm-started solve per state component) uses the same tolerance, at most 1e-7. Each field
+difference of the Jacobian is kept as a tangent ∂p/∂q, q = (e, v_s), and every solve
+starts from the last field moved along the tangents to its own q (clipped at the
+cavitation pressure): a predictor that leaves the multigrid a smaller correction.
+
+[1] J.F. Booker, "Dynamically loaded journal bearings: mobility method of solution",
+    J. Basic Eng. 87 (1965) 537–546.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numba as nb
+import numpy as np
+
+from conrod.film.reynolds_multigrid import multigrid_solve
+
+JACOBIAN_STEP = 1.0e-5
+"""Forward-difference step of the Jacobian: position in units of c, velocity in units of
+c |ω_j + ω_b| + |v_s| [-]."""
+JACOBIAN_TOLERANCE = 1.0e-7
+"""Loosest multigrid tolerance of the Jacobian's solves [-]: the force then carries a
+relative error ~3e-9 (measured: ~0.03 × the tolerance), 3e-4 of the difference quotient,
+ample for a simplified Newton iteration."""
+
+STATS = ("film solves", "multigrid cycles", "failed solves")
+"""Counters in ``params[-1]`` [-]."""
+
+
+@dataclass
+class FlightKernel:
+    """A compiled film force with its warm start, for the compiled implicit free flight.
+
+    force : numba function ``(x, y, v_x, v_y, ω_j + ω_b, μ, params) -> (F_x, F_y)`` [N]
+        (NaN when the solve failed or the journal leaves the clearance).
+    jacobian : numba function ``(x, y, v_x, v_y, ω_j + ω_b, μ, params) -> (F (2,), J (2, 4))``
+        with J = ∂F/∂(e_x, e_y, ė_x, ė_y) [N, N/m, N s/m].
+    params : tuple  Grid arrays, the warm-start field (changed in place by every call),
+        the tangents ∂p/∂q of the last Jacobian and the state q of the last solve, and the
+        counters :data:`STATS`.
+    """
+
+    force: Any
+    jacobian: Any
+    params: tuple
+    film: Any
+
+    @property
+    def stats(self) -> dict[str, float]:
+        """Film solves, multigrid cycles and failed solves so far [-]."""
+        return dict(zip(STATS, (float(v) for v in self.params[-1]), strict=True))
+
+    def memory(self):
+        """The film's memory (:class:`~conrod.film.reynolds.ReynoldsMemory`) holding the
+        last solved field on the full grid."""
+        from conrod.film.reynolds import ReynoldsMemory
+
+        field = self.params[0]
+        n_z = self.film.n_z
+        if field.shape[1] == n_z + 1:
+            return ReynoldsMemory(field.copy())
+        mid = n_z // 2
+        full = np.empty((field.shape[0], n_z + 1))
+        full[:, : mid + 1] = field[:, : mid + 1]
+        full[:, mid + 1:] = field[:, mid - 1:: -1]
+        return ReynoldsMemory(full)
+
+
+def flight_kernel(film, memory, newton_tolerance: float) -> FlightKernel | None:
+    """The compiled force of a :class:`~conrod.film.reynolds.ReynoldsFilm` when it is
+    exact for this film (rigid, isoviscous, multigrid, no inlet line at the largest gap),
+    warm-started from ``memory`` (a ``ReynoldsMemory``); None otherwise.
+
+    newton_tolerance : float  Multigrid tolerance of the force evaluations [-] (never
+        below the film's own ``tolerance``, which the Jacobian uses).
+    """
+    from conrod.film.reynolds_squeeze import SqueezeGrid
+
+    if (film.method != "multigrid" or film.ambient_line_at_max_gap
+            or film.pressure_viscosity is not None):
+        return None
+    grid = SqueezeGrid(film, 1.0)  # sources per unit viscosity
+    g = film.geometry
+    field = np.zeros(grid.fixed.shape)
+    supply = _supply_nodes(film, grid)
+    if memory is not None and getattr(memory, "pressure", None) is not None:
+        field = _fold(np.asarray(memory.pressure, dtype=float), grid.symmetric, film.n_z)
+    field[supply] = g.supply_pressure
+    radius, d_theta, d_z, clearance = grid.geometry
+    tolerances = np.array([max(float(newton_tolerance), film.tolerance),
+                           min(JACOBIAN_TOLERANCE, max(float(newton_tolerance),
+                                                       film.tolerance))])
+    params = (np.ascontiguousarray(field), grid.fixed, grid.source_x, grid.source_y,
+              grid.weight_x, grid.weight_y, grid.cos_t, grid.sin_t, radius, d_theta, d_z,
+              clearance, grid.n_coarse, grid.symmetric, float(g.cavitation_pressure),
+              math.sin(d_theta) / d_theta, tolerances, int(film.max_iterations),
+              np.zeros((4,) + field.shape), np.zeros(5), np.zeros(3))
+    return FlightKernel(reynolds_force, reynolds_jacobian, params, film)
+
+
+def _supply_nodes(film, grid) -> np.ndarray:
+    """Supply (groove, hole) nodes on the kernel's grid (half grid when symmetric)."""
+    from conrod.film.supply import supply_mask
+
+    mask = supply_mask(film.geometry, film.film_grid)
+    return _fold(mask, grid.symmetric, film.n_z, padding=False)
+
+
+def _fold(field: np.ndarray, symmetric: bool, n_z: int, padding=0.0) -> np.ndarray:
+    """Full-grid field → the kernel's grid (z ≤ 0 plus a padding row when symmetric)."""
+    if not symmetric:
+        return field.copy()
+    mid = n_z // 2
+    half = np.empty((field.shape[0], mid + 2), dtype=field.dtype)
+    half[:, : mid + 1] = field[:, : mid + 1]
+    half[:, -1] = padding
+    return half
+
+
+@nb.njit(cache=True)
+def _squeeze_state(x, y, vx, vy, omega_sum, params):
+    """q = (e_x, e_y, v_s,x, v_s,y) [m, m/s]: the pressure depends on the state only
+    through q (module docstring)."""
+    mean = 0.5 * params[15] * omega_sum
+    return np.array([x, y, vx + mean * y, vy - mean * x])
+
+
+@nb.njit(cache=True)
+def _predict(q, params):
+    """Move the warm-start field along the tangents ∂p/∂q of the last Jacobian from the
+    state of the last solve to ``q`` (clipped at the cavitation pressure)."""
+    pressure, fixed, cavitation, tangents, anchor = (params[0], params[1], params[14],
+                                                     params[18], params[19])
+    if anchor[4] == 0.0:
+        return
+    n, m = pressure.shape
+    for i in range(n):
+        for j in range(m):
+            if fixed[i, j]:
+                continue
+            value = pressure[i, j]
+            for k in range(4):
+                value += tangents[k, i, j] * (q[k] - anchor[k])
+            pressure[i, j] = value if value > cavitation else cavitation
+
+
+@nb.njit(cache=True)
+def _solve(q, viscosity, params, tolerance):
+    """Film force [N] at q = (e, v_s), solved in place on the warm-start field."""
+    (pressure, fixed, src_x, src_y, w_x, w_y, cos_t, sin_t, radius, d_theta, d_z,
+     clearance, n_coarse, symmetric, cavitation, _, _, max_cycles, _, anchor,
+     stats) = params
+    h = clearance - q[0] * cos_t - q[1] * sin_t
+    if not np.min(h) > 0.0:
+        return np.nan, np.nan
+    source = viscosity * (q[2] * src_x + q[3] * src_y)
+    cycles, change = multigrid_solve(pressure, h, source, fixed, radius, d_theta, d_z,
+                                     cavitation, tolerance, max_cycles, n_coarse, symmetric)
+    stats[0] += 1.0
+    stats[1] += cycles
+    if not change <= tolerance:
+        stats[2] += 1.0
+        return np.nan, np.nan
+    anchor[:4] = q
+    return -np.sum(pressure * w_x), -np.sum(pressure * w_y)
+
+
+@nb.njit(cache=True)
+def reynolds_force(x, y, vx, vy, omega_sum, viscosity, params):
+    """Film force (F_x, F_y) [N] at the Newton tolerance, warm-started from the last field
+    moved along the last Jacobian's tangents (module docstring)."""
+    q = _squeeze_state(x, y, vx, vy, omega_sum, params)
+    _predict(q, params)
+    return _solve(q, viscosity, params, params[16][0])
+
+
+@nb.njit(cache=True)
+def reynolds_jacobian(x, y, vx, vy, omega_sum, viscosity, params):
+    """(F (2,) [N], ∂F/∂(e_x, e_y, ė_x, ė_y) (2, 4) [N/m, N s/m]) by forward differences
+    in q = (e, v_s) from the converged field at the state (each solve at the Jacobian
+    tolerance); the differences of the fields are kept as the tangents ∂p/∂q."""
+    pressure, clearance, tolerance = params[0], params[11], params[16][1]
+    tangents, anchor = params[18], params[19]
+    q = _squeeze_state(x, y, vx, vy, omega_sum, params)
+    _predict(q, params)
+    force = np.empty(2)
+    by_q = np.full((2, 4), np.nan)
+    force[0], force[1] = _solve(q, viscosity, params, tolerance)
+    if np.isnan(force[0]):
+        return force, by_q
+    base = pressure.copy()
+    speed = clearance * abs(omega_sum) + math.hypot(q[2], q[3])
+    for k in range(4):
+        step = JACOBIAN_STEP * (clearance if k < 2 else max(speed, 1e-9 * clearance))
+        shifted = q.copy()
+        shifted[k] += step
+        fx, fy = _solve(shifted, viscosity, params, tolerance)
+        by_q[0, k] = (fx - force[0]) / step
+        by_q[1, k] = (fy - force[1]) / step
+        tangents[k] = (pressure - base) / step
+        pressure[:] = base
+    anchor[:4] = q
+    anchor[4] = 1.0
+    return force, _in_velocity(by_q, 0.5 * params[15] * omega_sum)
+
+
+@nb.njit(cache=True)
+def _in_velocity(by_q, mean):
+    """∂F/∂(e, ė) from ∂F/∂(e, v_s), v_s = ė − κω̄(−e_y, e_x) with ``mean`` = κω̄."""
+    out = by_q.copy()
+    for row in range(2):
+        out[row, 0] = by_q[row, 0] - mean * by_q[row, 3]
+        out[row, 1] = by_q[row, 1] + mean * by_q[row, 2]
+    return out
