@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from conrod.errors import CaseError
+from conrod.errors import CaseError, FilmThicknessError
 from conrod.film.base import BearingGeometry, FeedHole, FilmState, Groove
 from conrod.film.mass_conserving import MassConservingFilm
 from conrod.film.reynolds import ReynoldsFilm
@@ -185,7 +185,7 @@ def test_sor_and_multigrid_instants_agree_with_a_broken_film():
 def test_bad_inputs_raise_case_errors():
     model = MassConservingFilm(BearingGeometry(diameter=0.05, width=0.025,
                                                radial_clearance=2.5e-5), n_theta=16, n_z=4)
-    with pytest.raises(CaseError, match="touches the shell"):
+    with pytest.raises(FilmThicknessError, match="touches the shell"):
         model.solve(FilmState(eccentricity_x=2.6e-5, eccentricity_y=0.0, journal_speed=100.0))
     with pytest.raises(CaseError, match="deformation shape"):
         model.solve(FilmState(eccentricity_x=1e-5, eccentricity_y=0.0, journal_speed=100.0,

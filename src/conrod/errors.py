@@ -42,6 +42,16 @@ class ConvergenceError(ConrodError, RuntimeError):
         super().__init__(detail)
 
 
+class FilmThicknessError(ConvergenceError):
+    """The journal reached the shell: the film thickness is zero or negative somewhere.
+
+    Inside an orbit this is a state the solver stepped into (a step too long for the
+    contact model, or a film that cannot carry the load), not bad input: the CLI exits
+    with code 3. Inputs that are themselves out of range (an eccentricity ratio ≥ 1 given
+    to the steady calculator) are refused earlier as :class:`CaseError`.
+    """
+
+
 class NonFiniteResultError(ConvergenceError, ValueError):
     """A result holds NaN or infinity where only finite numbers may be written.
 

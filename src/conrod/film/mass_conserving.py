@@ -37,7 +37,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from conrod.errors import CaseError, ConvergenceError
+from conrod.errors import CaseError, ConvergenceError, FilmThicknessError
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.characteristics import FilmGrid
 from conrod.film.mass_conserving_kernel import (
@@ -228,8 +228,10 @@ class MassConservingFilm:
             deformation, dx, dz, mu, g.radius * (state.journal_speed + state.shell_speed),
 )
         if not float(h.min()) > 0.0:
-            raise CaseError(f"film thickness min = {float(h.min()):.3g} m: out of range "
-                            "(allowed: > 0 m); the journal touches the shell")
+            raise FilmThicknessError(
+                f"film thickness min = {float(h.min()):.3g} m (must stay > 0 m): the journal "
+                "touches the shell; the load is beyond what the film and the contact model "
+                "carry at this step (try a contact model, a finer step or a larger clearance)")
         return FilmFields(
             h=h, a_east=a_east, a_north=a_north, couette_east=couette, squeeze=squeeze,
             edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed_values(state),

@@ -24,7 +24,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from conrod.errors import CaseError, ConvergenceError
+from conrod.errors import CaseError, ConvergenceError, FilmThicknessError
 from conrod.film import characteristics as chars
 from conrod.film import reynolds_kernel as kernel
 from conrod.film import reynolds_multigrid as multigrid
@@ -278,10 +278,10 @@ class ReynoldsFilm:
             h = h + state.deformation
         smallest = float(h.min())
         if not smallest > 0.0:
-            raise CaseError(
-                f"film thickness min = {smallest:.3g}: out of range (allowed: > 0 m); "
-                "the journal touches the shell"
-)
+            raise FilmThicknessError(
+                f"film thickness min = {smallest:.3g} m (must stay > 0 m): the journal "
+                "touches the shell; the load is beyond what the film and the contact model "
+                "carry at this step (try a contact model, a finer step or a larger clearance)")
         h_rate = -state.velocity_x * self._cos - state.velocity_y * self._sin
         h_rate = np.repeat(h_rate, self.n_z + 1, axis=1)
         fixed = self._edges | self._supply
