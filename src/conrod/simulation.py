@@ -204,13 +204,16 @@ class Simulation:
 
         return elastic_run(self, progress)
 
-    def rigid_companion(self) -> Simulation | None:
-        """The same simulation on a rigid bore (None when not asked for)."""
+    def rigid_companion(self, integrator: str | None = None) -> Simulation | None:
+        """The same simulation on a rigid bore (None when not asked for); ``integrator``:
+        the one the elastic run used (so that ``auto`` cannot choose a journal with mass
+        for the rigid run and a massless one for the elastic run)."""
         if not self._rigid_companion:
             return None
         film = self._film if self._film is not None else self._names["film"]
-        integrator = (self._integrator if self._integrator is not None
-                      else self._names["integrator"])
+        if integrator is None:
+            integrator = (self._integrator if self._integrator is not None
+                          else self._names["integrator"])
         return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
                           housing="rigid", **self._overrides)
 

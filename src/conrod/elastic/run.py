@@ -47,7 +47,7 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
                                 massless=name == "quasi_static")
     film = problem.film
     elastic_seconds = time.perf_counter() - start
-    companion = simulation.rigid_companion()
+    companion = simulation.rigid_companion(integrator=name)  # same journal model as above
     rigid = None
     if companion is not None:
         rigid = companion._run(_staged(progress, "rigid "))[0]
