@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from conrod.errors import CaseError, ConvergenceError
+from conrod.errors import CaseError, ConvergenceError, FilmThicknessError
 from conrod.film.base import BearingGeometry, FeedHole, FilmModel, FilmState
 from conrod.film.long_bearing import (
     gumbel_long_force,
@@ -212,7 +212,7 @@ def test_bad_inputs_raise_readable_errors():
     with pytest.raises(CaseError, match="n_theta"):
         ReynoldsFilm(geometry(1.0), n_theta=35)
     film = ReynoldsFilm(geometry(1.0), n_theta=36, n_z=8)
-    with pytest.raises(CaseError, match="film thickness"):
+    with pytest.raises(FilmThicknessError, match="film thickness"):  # a state, not input
         film.force(FilmState(eccentricity_x=1.01 * C, eccentricity_y=0.0, journal_speed=OMEGA,
                              viscosity=MU))
     with pytest.raises(CaseError, match="deformation shape"):

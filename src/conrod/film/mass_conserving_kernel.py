@@ -85,53 +85,9 @@ def elrod_adams_steady(
     couette_east : C_e = 6μ U h_e Δz [m³/s · Pa s];  squeeze : 12μ Δx Δz ∂h/∂t [same].
     Returns (sweeps, last relative max change of p̃ and ϑ [-]).
     """
-    n, m = pressure.shape
-    relative = 1.0
-    forward = couette_east[0, m // 2] >= 0.0
-    for sweep in range(max_iterations):
-        change_p = 0.0
-        change_f = 0.0
-        scale = 0.0
-        for i in range(n):
-            iw = i - 1 if i > 0 else n - 1
-            ie = i + 1 if i < n - 1 else 0
-            for j in range(1, m - 1):
-                if not free[i, j]:
-                    continue
-                aw = a_east[iw, j]
-                ae = a_east[i, j]
-                a_s = a_north[i, j - 1]
-                an = a_north[i, j]
-                neighbours = (
-                    aw * pressure[iw, j] + ae * pressure[ie, j]
-                    + a_s * pressure[i, j - 1] + an * pressure[i, j + 1]
-)
-                if forward:
-                    own = couette_east[i, j] + squeeze[i, j]
-                    rest = -couette_east[iw, j] * fraction[iw, j]
-                else:
-                    own = -couette_east[iw, j] + squeeze[i, j]
-                    rest = couette_east[i, j] * fraction[ie, j]
-                old_p = pressure[i, j]
-                old_f = fraction[i, j]
-                new_p = 0.0
-                new_f = 1.0
-                if old_f >= 1.0:
-                    target = (neighbours - rest - own) / (aw + ae + a_s + an)
-                    new_p = old_p + omega * (target - old_p)
-                if new_p <= 0.0:
-                    new_p = 0.0
-                    new_f = (neighbours - rest) / own if own > 0.0 else 1.0
-                    new_f = min(max(new_f, 0.0), 1.0)
-                pressure[i, j] = new_p
-                fraction[i, j] = new_f
-                change_p = max(change_p, abs(new_p - old_p))
-                change_f = max(change_f, abs(new_f - old_f))
-                scale = max(scale, new_p)
-        relative = max(change_p / scale if scale > 0.0 else change_p, change_f)
-        if relative <= tolerance:
-            return sweep + 1, relative
-    return max_iterations, relative
+    # the step's sweep with the squeeze term in place of the capacity and no stored content
+    return elrod_adams_step(pressure, fraction, free, a_east, a_north, couette_east, squeeze,
+                            np.zeros_like(squeeze), omega, tolerance, max_iterations)
 
 
 @nb.njit(cache=True)
@@ -188,7 +144,8 @@ def elrod_adams_step(
                     new_p = old_p + omega * (target - old_p)
                 if new_p <= 0.0:
                     new_p = 0.0
-                    new_f = min(max((neighbours - rest) / own, 0.0), 1.0)
+                    new_f = (neighbours - rest) / own if own > 0.0 else 1.0
+                    new_f = min(max(new_f, 0.0), 1.0)
                 pressure[i, j] = new_p
                 fraction[i, j] = new_f
                 change_p = max(change_p, abs(new_p - old_p))

@@ -112,6 +112,20 @@ def sor_solve(
     return max_iterations, change
 
 
+@nb.njit(cache=True, inline="always")
+def _net_outflow(pressure, a_east, a_north, source, i, ip, im, j):
+    """Oil leaving node (i, j) through its four faces minus its source [Pa m^4]: the
+    imbalance of the discrete balance at one node (0 where it is solved)."""
+    m = pressure.shape[1]
+    p = pressure[i, j]
+    value = a_east[i, j] * (p - pressure[ip, j]) + a_east[im, j] * (p - pressure[im, j])
+    if j < m - 1:
+        value += a_north[i, j] * (p - pressure[i, j + 1])
+    if j > 0:
+        value += a_north[i, j - 1] * (p - pressure[i, j - 1])
+    return value - source[i, j]
+
+
 @nb.njit(cache=True)
 def flow_balance(pressure, a_east, a_north, source, fixed, cavitation_pressure,
                  axial_weights):
@@ -128,13 +142,7 @@ def flow_balance(pressure, a_east, a_north, source, fixed, cavitation_pressure,
         ip = i + 1 if i + 1 < n else 0
         im = i - 1 if i > 0 else n - 1
         for j in range(m):
-            p = pressure[i, j]
-            value = a_east[i, j] * (p - pressure[ip, j]) + a_east[im, j] * (p - pressure[im, j])
-            if j < m - 1:
-                value += a_north[i, j] * (p - pressure[i, j + 1])
-            if j > 0:
-                value += a_north[i, j - 1] * (p - pressure[i, j - 1])
-            value -= source[i, j]
+            value = _net_outflow(pressure, a_east, a_north, source, i, ip, im, j)
             if j == 0 or j == m - 1:
                 inner = 1 if j == 0 else m - 2
                 if not fixed[i, inner] and pressure[i, inner] <= cavitation_pressure:
@@ -143,7 +151,7 @@ def flow_balance(pressure, a_east, a_north, source, fixed, cavitation_pressure,
                     leaking += value
             elif fixed[i, j]:
                 supply += value
-            elif p <= cavitation_pressure:
+            elif pressure[i, j] <= cavitation_pressure:
                 lost += value
                 cavitated_width += axial_weights[j]
     return lost, leaking, supply, cavitated_width
@@ -165,13 +173,7 @@ def node_imbalance(
         ip = (i + 1) % n_theta
         im = (i - 1) % n_theta
         for j in range(n_nodes):
-            p = pressure[i, j]
-            value = a_east[i, j] * (p - pressure[ip, j]) + a_east[im, j] * (p - pressure[im, j])
-            if j < n_nodes - 1:
-                value += a_north[i, j] * (p - pressure[i, j + 1])
-            if j > 0:
-                value += a_north[i, j - 1] * (p - pressure[i, j - 1])
-            imbalance[i, j] = value - source[i, j]
+            imbalance[i, j] = _net_outflow(pressure, a_east, a_north, source, i, ip, im, j)
     return imbalance
 
 
