@@ -35,16 +35,18 @@ def test_compiled_force_and_jacobian_equal_the_film_and_its_adjoint(feed):
               "groove": {"grooves": (Groove(2.0, 2.1, 0.004),), "supply_pressure": 3e5},
               "hole off the mid-plane": {"feed_holes": (FeedHole(2.5, 0.004, 0.004),),
                                          "supply_pressure": 3e5}}[feed]
-    g = BearingGeometry(0.05, 0.025, 25e-6, **supply)
+    g = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6, **supply)
     film = ReynoldsFilm(g, n_theta=48, n_z=16)
     kernel = flight_kernel(film, None, 1e-12)
     c = g.radial_clearance
     rng = np.random.default_rng(3)
     for _ in range(4):
         eps, angle = rng.uniform(0.2, 0.85), rng.uniform(0, 2 * math.pi)
-        state = FilmState(eps * c * math.cos(angle), eps * c * math.sin(angle),
-                          rng.normal() * c * SPEED * 0.3, rng.normal() * c * SPEED * 0.3,
-                          SPEED, 0.0, 0.01)
+        state = FilmState(eccentricity_x=eps * c * math.cos(angle),
+                          eccentricity_y=eps * c * math.sin(angle),
+                          velocity_x=rng.normal() * c * SPEED * 0.3,
+                          velocity_y=rng.normal() * c * SPEED * 0.3,
+                          journal_speed=SPEED, shell_speed=0.0, viscosity=0.01)
         args = (state.eccentricity_x, state.eccentricity_y, state.velocity_x,
                 state.velocity_y, SPEED, 0.01, kernel.params)
         expected = np.array(film.force(state))
@@ -133,8 +135,9 @@ def test_table_film_constant_load_settles_at_the_steady_point_in_three_cycles():
 
     def balance(polar):
         eps, angle = polar
-        fx, fy = film.force(FilmState(eps * c * math.cos(angle), eps * c * math.sin(angle),
-                                      0.0, 0.0, SPEED, 0.0, 0.01))
+        fx, fy = film.force(FilmState(eccentricity_x=eps * c * math.cos(angle),
+                                      eccentricity_y=eps * c * math.sin(angle),
+                                      journal_speed=SPEED, shell_speed=0.0, viscosity=0.01))
         return [(fx + load) / load, fy / load]
 
     eps_ref, angle_ref = fsolve(balance, [0.5, 1.0], xtol=1e-12)
