@@ -56,3 +56,45 @@ def test_a_second_process_loads_the_compiled_flight_and_writes_the_same_results(
         assert (tmp_path / "first" / name).read_bytes() == \
             (tmp_path / "second" / name).read_bytes()
     assert _summary(tmp_path / "first") == _summary(tmp_path / "second")
+
+
+def _spring_damper():
+    """A closure force F = −k e − b ė [N] (k = 4 N/m, b = 2 N s/m): not cacheable."""
+    import numba as nb
+
+    @nb.njit
+    def force(x, y, vx, vy, omega_sum, viscosity, params):
+        return -params[0] * x - params[1] * vx, -params[0] * y - params[1] * vy
+
+    return force
+
+
+def test_a_closure_force_runs_the_same_segment_uncached_and_in_python():
+    """Constant load W = 1 N on a spring k = 4 N/m with damping b = 2 N s/m, m = 1 kg,
+    c = 1 m, ω = 1 rad/s: the centre settles at x = W/k (damping ratio 0.5; after 40 rad
+    the transient is e^{-40})."""
+    import numpy as np
+
+    from conrod.orbit.compiled_flight import flight_segment
+    from conrod.orbit.tr_bdf2 import STATUS_END, specialise
+
+    angles = np.array([0.0, 2.0 * np.pi])
+    table = np.array([[1.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]])
+    data = (angles, table, 2.0 * np.pi, 0.01, 1.0, 1.0, 1.0, 1.0)
+    params = (4.0, 2.0)
+    force = _spring_damper()
+    compiled = flight_segment(force)
+
+    def python_rhs(phi, u, params, data):
+        return np.array([u[2], u[3], 1.0 - 4.0 * u[0] - 2.0 * u[2], -4.0 * u[1] - 2.0 * u[3]])
+
+    python = specialise("spring", python_rhs, compiled=False)
+    results = []
+    for segment in (compiled, python):
+        status, phi, u, *_ = segment(params, data, 0.0, 40.0, np.zeros(4), 1e-4, 0.1, 1e-8,
+                                     1e-10, 10.0, np.zeros(0), np.zeros((0, 4)), 0, 10**6,
+                                     0.1, True)
+        assert status == STATUS_END and phi == 40.0
+        results.append(u)
+    np.testing.assert_allclose(results[0], [0.25, 0.0, 0.0, 0.0], atol=1e-7)
+    np.testing.assert_allclose(results[1], results[0], rtol=0, atol=1e-12)
