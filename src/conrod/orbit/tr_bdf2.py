@@ -12,9 +12,10 @@ MATLAB's ``ode23tb``), d = 1 − √2/2, w = √2/4:
 Both implicit stages share the matrix I − d h J, J = ∂f/∂u; Newton is simplified (J kept
 over steps while the iteration contracts, refreshed when it does not). Steps are
 error-controlled (mixed absolute/relative RMS norm, as SciPy's) and never longer than
-``max_step``. The step function is written once: compiled with numba for films with a
-compiled force, run as plain Python for films solved in Python (Reynolds), where each
-evaluation of f is a film solve.
+``max_step``. The step function is written once, with f, its Jacobian and the stage as
+global names bound per film by :func:`specialise`: compiled with numba (and cached on disk)
+for films with a compiled force (:mod:`conrod.orbit.compiled_flight`), run as plain Python
+for films solved in Python, where each evaluation of f is a film solve.
 
 [1] R.E. Bank, W.M. Coughran, W. Fichtner, E.H. Grosse, D.J. Rose, R.K. Smith, Transient
     simulation of silicon devices and circuits, IEEE Trans. CAD 4 (1985) 436–451.
