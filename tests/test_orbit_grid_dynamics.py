@@ -45,8 +45,8 @@ def test_compiled_force_and_jacobian_equal_the_film_and_its_adjoint(feed):
         state = FilmState(eccentricity_x=eps * c * math.cos(angle),
                           eccentricity_y=eps * c * math.sin(angle),
                           velocity_x=rng.normal() * c * SPEED * 0.3,
-                          velocity_y=rng.normal() * c * SPEED * 0.3, journal_speed=SPEED,
-                          shell_speed=0.0, viscosity=0.01)
+                          velocity_y=rng.normal() * c * SPEED * 0.3,
+                          journal_speed=SPEED, shell_speed=0.0, viscosity=0.01)
         args = (state.eccentricity_x, state.eccentricity_y, state.velocity_x,
                 state.velocity_y, SPEED, 0.01, kernel.params)
         expected = np.array(film.force(state))
@@ -136,9 +136,8 @@ def test_table_film_constant_load_settles_at_the_steady_point_in_three_cycles():
     def balance(polar):
         eps, angle = polar
         fx, fy = film.force(FilmState(eccentricity_x=eps * c * math.cos(angle),
-                                      eccentricity_y=eps * c * math.sin(angle), velocity_x=0.0,
-                                      velocity_y=0.0, journal_speed=SPEED, shell_speed=0.0,
-                                      viscosity=0.01))
+                                      eccentricity_y=eps * c * math.sin(angle),
+                                      journal_speed=SPEED, shell_speed=0.0, viscosity=0.01))
         return [(fx + load) / load, fy / load]
 
     eps_ref, angle_ref = fsolve(balance, [0.5, 1.0], xtol=1e-12)

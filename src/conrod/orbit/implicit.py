@@ -14,7 +14,6 @@ from __future__ import annotations
 import functools
 import math
 
-import numba as nb
 import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
@@ -22,7 +21,6 @@ from conrod.film.base import FilmState
 from conrod.film.capabilities import HasFlightKernel, HasForceJacobian
 from conrod.orbit.adaptive import (
     MAX_PHASE_CHANGES,
-    _free_rhs,
     _Phases,
     _record,
     _scaled,
@@ -30,9 +28,10 @@ from conrod.orbit.adaptive import (
     _state,
     _switch,
 )
+from conrod.orbit.compiled_flight import flight_segment
 from conrod.orbit.problem import OrbitProblem, OrbitState, periodic_sample
 from conrod.orbit.progress import REPORT_EVERY_DEG, report_angle
-from conrod.orbit.tr_bdf2 import STATUS_END, STATUS_HIT, STATUS_NEWTON, segment
+from conrod.orbit.tr_bdf2 import STATUS_END, STATUS_HIT, STATUS_NEWTON, specialise
 from conrod.orbit.trajectory import CycleTrajectory
 
 FIRST_STEP = 1.0e-4
@@ -51,50 +50,6 @@ multigrid cycles per cycle at 0.1, 19 600 at 0.5, 18 400 at 1.0; the orbits of a
 within 3.3e-5 c of one at 5e-3."""
 STEPS_PER_DEGREE = 2000
 """Most accepted steps per degree of crank angle in a segment before giving up [-]."""
-
-
-@functools.cache
-def _kernel_rhs(force):
-    """Compiled du/dφ(φ, u, params, data) of a film with the compiled ``force``;
-    data = (angles, table, cycle, μ, c, ω, m_x, m_y) as :func:`adaptive._free_rhs`."""
-
-    @nb.njit
-    def rhs(phi, u, params, data):
-        angles, table, cycle, mu, c, omega, mass_x, mass_y = data
-        return _free_rhs(force, params, phi, u, angles, table, cycle, mu, c, omega,
-                         mass_x, mass_y)
-
-    return rhs
-
-
-@functools.cache
-def _kernel_jacobian(film_jacobian):
-    """Compiled ∂(du/dφ)/∂u [-] from a flight kernel's ∂F/∂(e, ė)
-    (:class:`~conrod.film.reynolds_flight.FlightKernel`); same data as :func:`_kernel_rhs`."""
-
-    @nb.njit
-    def jacobian(rhs, phi, u, f0, params, data):
-        angles, table, cycle, mu, c, omega, mass_x, mass_y = data
-        row = periodic_sample(phi, angles, table, cycle)
-        c_omega = c * omega
-        _, film = film_jacobian(u[0] * c, u[1] * c, u[2] * c_omega, u[3] * c_omega,
-                                row[2] + row[3], mu, params)
-        return _scaled_jacobian(film, c, omega, mass_x, mass_y)
-
-    return jacobian
-
-
-@nb.njit(cache=True)
-def _scaled_jacobian(film, c, omega, mass_x, mass_y):
-    """∂(du/dφ)/∂u [-] from the film's ∂F/∂(e, ė) (2 × 4) [N/m, N s/m]."""
-    out = np.zeros((4, 4))
-    out[0, 2] = out[1, 3] = 1.0
-    for row in range(2):
-        scale = (mass_x if row == 0 else mass_y) * c * omega * omega
-        for col in range(2):
-            out[2 + row, col] = film[row, col] * c / scale
-            out[2 + row, 2 + col] = film[row, 2 + col] * c * omega / scale
-    return out
 
 
 def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleTrajectory:
@@ -155,12 +110,11 @@ class _FreeFlight:
         kernel = problem.compiled_force
         self.compiled = kernel is not None
         self.chunked = kernel is None  # a closed-form or tabulated force: one chunk
-        self.jacobian = None
         self.flight = None
         self.session = phases.session
         self.refresh_rate = 0.0 if self.compiled else PYTHON_REFRESH_RATE
         if self.compiled:
-            self.rhs, self.params = _kernel_rhs(kernel.force), kernel.params
+            self.segment, self.params = flight_segment(kernel.force), kernel.params
         elif problem.asperity is None and isinstance(problem.film, HasFlightKernel):
             self.flight = problem.film.flight_kernel(
                 phases.session.memory,
@@ -168,12 +122,16 @@ class _FreeFlight:
         self.evaluate = self.flight is None  # stage derivatives: see tr_bdf2._stage
         if self.flight is not None:  # grid film compiled, expensive Jacobian: keep it
             self.compiled = True
-            self.rhs, self.params = _kernel_rhs(self.flight.force), self.flight.params
-            self.jacobian = _kernel_jacobian(self.flight.jacobian)
+            self.segment = flight_segment(self.flight.force, self.flight.jacobian)
+            self.params = self.flight.params
         elif not self.compiled:
-            self.rhs, self.params = (lambda phi, u, params, data: phases.free_rhs(phi, u)), ()
+            jacobian = None
             if problem.asperity is None and isinstance(problem.film, HasForceJacobian):
-                self.jacobian = functools.partial(_film_jacobian, problem, phases)
+                jacobian = functools.partial(_film_jacobian, problem, phases)
+            self.segment = specialise(
+                "python", lambda phi, u, params, data: phases.free_rhs(phi, u), jacobian,
+                compiled=False)
+            self.params = ()
         self.data = (phases.angles, phases.table, float(problem.loads.cycle),
                      float(problem.viscosity), float(problem.clearance),
                      float(problem.crank_speed), float(problem.mass_x),
@@ -205,11 +163,11 @@ class _FreeFlight:
 
     def _chunk(self, phi, end, u, h, phi_out, out_u, next_out):
         max_steps = int(STEPS_PER_DEGREE * max(math.degrees(end - phi), 1.0))
-        status, phi_new, u_new, h, steps, next_out, self.evaluations = segment(
-            self.rhs, self.params, self.data, float(phi), float(end),
-            np.asarray(u, dtype=float), h, self.max_step, self.rtol, self.atol,
-            self.circle, phi_out, out_u, next_out, max_steps, compiled=self.compiled,
-            jacobian=self.jacobian, refresh_rate=self.refresh_rate, evaluate=self.evaluate)
+        result = self.segment(self.params, self.data, float(phi), float(end),
+                              np.asarray(u, dtype=float), h, self.max_step, self.rtol,
+                              self.atol, self.circle, phi_out, out_u, next_out, max_steps,
+                              self.refresh_rate, self.evaluate)
+        status, phi_new, u_new, h, steps, next_out, self.evaluations = result
         self.h = h
         if self.flight is not None:  # the warm start goes on in the session
             self.session.restore(self.flight.memory())
@@ -224,7 +182,7 @@ class _FreeFlight:
         return status, phi_new, u_new, h, steps, next_out
 
 
-def _film_jacobian(problem: OrbitProblem, phases: _Phases, rhs, phi, u, f0, params, data):
+def _film_jacobian(problem: OrbitProblem, phases: _Phases, phi, u, f0, params, data):
     """∂(du/dφ)/∂u [-] from the film's own ∂F/∂(e, ė)
     (:class:`~conrod.film.capabilities.HasForceJacobian`)."""
     c, w = problem.clearance, problem.crank_speed

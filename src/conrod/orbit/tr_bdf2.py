@@ -12,9 +12,10 @@ MATLAB's ``ode23tb``), d = 1 − √2/2, w = √2/4:
 Both implicit stages share the matrix I − d h J, J = ∂f/∂u; Newton is simplified (J kept
 over steps while the iteration contracts, refreshed when it does not). Steps are
 error-controlled (mixed absolute/relative RMS norm, as SciPy's) and never longer than
-``max_step``. The step function is written once: compiled with numba for films with a
-compiled force, run as plain Python for films solved in Python (Reynolds), where each
-evaluation of f is a film solve.
+``max_step``. The step function is written once, with f, its Jacobian and the stage as
+global names bound per film by :func:`specialise`: compiled with numba (and cached on disk)
+for films with a compiled force (:mod:`conrod.orbit.compiled_flight`), run as plain Python
+for films solved in Python, where each evaluation of f is a film solve.
 
 [1] R.E. Bank, W.M. Coughran, W. Fichtner, E.H. Grosse, D.J. Rose, R.K. Smith, Transient
     simulation of silicon devices and circuits, IEEE Trans. CAD 4 (1985) 436–451.
@@ -25,6 +26,7 @@ evaluation of f is a film solve.
 from __future__ import annotations
 
 import math
+import types
 
 import numba as nb
 import numpy as np
@@ -43,8 +45,23 @@ STATUS_END, STATUS_HIT, STATUS_COLLAPSE, STATUS_NEWTON = 0, 1, -1, -2
 failed with a fresh Jacobian at the smallest step."""
 
 
-def _fd_jacobian(rhs, phi, u, f0, params, data):
-    """Forward-difference J = ∂f/∂u (4 × 4) [-]."""
+def rhs(phi, u, params, data):
+    """du/dφ [-]: a placeholder, bound per film by :func:`specialise`."""
+    raise NotImplementedError
+
+
+def jacobian(phi, u, f0, params, data):
+    """∂(du/dφ)/∂u [-]: a placeholder, bound per film by :func:`specialise`."""
+    raise NotImplementedError
+
+
+def stage(phi, base, guess, dh, inverse, params, data, atol, rtol, eta, evaluate):
+    """One implicit stage: a placeholder, bound per film by :func:`specialise`."""
+    raise NotImplementedError
+
+
+def _fd_jacobian(phi, u, f0, params, data):
+    """Forward-difference J = ∂f/∂u (4 × 4) [-] of the bound ``rhs``."""
     jac = np.empty((4, 4))
     for j in range(4):
         step = 1.0e-7 * max(1.0, abs(u[j]))
@@ -63,7 +80,7 @@ def _norm(v, scale):
     return math.sqrt(total / v.size)
 
 
-def _stage(rhs, phi, base, guess, dh, inverse, params, data, atol, rtol, eta, evaluate):
+def _stage(phi, base, guess, dh, inverse, params, data, atol, rtol, eta, evaluate):
     """Solve z = base + d h f(φ, z) by simplified Newton with ``inverse`` = (I − d h J)⁻¹,
     stopping when the estimated iteration error η‖Δz‖ (η = ρ/(1 − ρ), ρ the contraction
     rate; ``eta`` from the previous stage before a rate is known) is below
@@ -137,9 +154,10 @@ def _hit_fraction(h, u0, f0, u1, f1, circle):
     return high
 
 
-def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol, atol, circle,
+def _segment(params, data, phi, end, u, h, max_step, rtol, atol, circle,
              out_phi, out_u, next_out, max_steps, refresh_rate, evaluate):
-    """Integrate du/dφ = rhs(φ, u, params, data) from φ to ``end`` (free flight).
+    """Integrate du/dφ = rhs(φ, u, params, data) from φ to ``end`` (free flight), with
+    the ``rhs``, ``jacobian`` and ``stage`` bound by :func:`specialise`.
 
     u : scaled state (x/c, y/c, v_x/(c ω), v_y/(c ω)) [-]; h, max_step [rad];
     circle : contact radius / c [-] (the segment stops where the centre reaches it);
@@ -149,7 +167,7 @@ def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol,
     (:func:`_stage`). Returns (status, φ, u, h, steps, next_out, jacobian evaluations).
     """
     f = rhs(phi, u, params, data)
-    jac = jacobian(rhs, phi, u, f, params, data)
+    jac = jacobian(phi, u, f, params, data)
     fresh = True
     evaluations = 1
     eye = np.eye(4)
@@ -172,17 +190,17 @@ def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol,
         else:
             guess = u + 2.0 * dh * f
         eta = max(eta, 1.0e-3) ** 0.8
-        z, fz, ok, rate1, eta = stage(rhs, phi + 2.0 * dh, u + dh * f, guess, dh, inverse,
+        z, fz, ok, rate1, eta = stage(phi + 2.0 * dh, u + dh * f, guess, dh, inverse,
                                       params, data, atol, rtol, eta, evaluate)
         rate2 = 0.0
         if ok:
             base = u + h * WEIGHT * (f + fz)
             guess = _hermite(0.5 / GAMMA_HALF, 2.0 * dh, u, f, z, fz)
-            u1, f1, ok, rate2, eta = stage(rhs, phi + h, base, guess, dh, inverse, params,
+            u1, f1, ok, rate2, eta = stage(phi + h, base, guess, dh, inverse, params,
                                            data, atol, rtol, eta, evaluate)
         if not ok:
             if not fresh:
-                jac = jacobian(rhs, phi, u, f, params, data)
+                jac = jacobian(phi, u, f, params, data)
                 evaluations += 1
                 fresh, dh_inverse = True, -1.0
                 continue
@@ -218,7 +236,7 @@ def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol,
         u, f = u1, f1
         fresh = False
         if max(rate1, rate2) > refresh_rate:  # slow contraction: refresh J
-            jac = jacobian(rhs, phi, u, f, params, data)
+            jac = jacobian(phi, u, f, params, data)
             evaluations += 1
             fresh, dh_inverse = True, -1.0
         h *= min(4.0, max(0.2, 0.9 * max(error, 1.0e-10) ** (-1.0 / 3.0)))
@@ -226,21 +244,29 @@ def _segment(rhs, jacobian, stage, params, data, phi, end, u, h, max_step, rtol,
     return status, phi, u, h, steps, next_out, evaluations
 
 
-fd_jacobian_compiled = nb.njit(_fd_jacobian)
-stage_compiled = nb.njit(_stage)
-segment_compiled = nb.njit(_segment)
+def _bind(template, name, functions):
+    """``template`` with the global names in ``functions`` bound (same code, own name)."""
+    bound = types.FunctionType(template.__code__, {**template.__globals__, **functions},
+                               name)
+    bound.__qualname__ = bound.__name__ = name
+    bound.__doc__ = template.__doc__
+    return bound
 
 
-def segment(rhs, params, data, phi, end, u, h, max_step, rtol, atol, circle, out_phi,
-            out_u, next_out, max_steps, *, compiled, jacobian=None, refresh_rate=0.1,
-            evaluate=True):
-    """:func:`_segment` compiled (``rhs`` a numba function) or in Python; ``jacobian``
-    (rhs, φ, u, f, params, data) → ∂f/∂u, default forward differences; ``evaluate``:
-    stage derivatives evaluated (cheap f) or from the stage equations (:func:`_stage`)."""
-    if compiled:
-        return segment_compiled(rhs, jacobian or fd_jacobian_compiled, stage_compiled,
-                                params, data, phi, end, u, h, max_step, rtol, atol, circle,
-                                out_phi, out_u, next_out, max_steps, refresh_rate, evaluate)
-    return _segment(rhs, jacobian or _fd_jacobian, _stage, params, data, phi, end, u, h,
-                    max_step, rtol, atol, circle, out_phi, out_u, next_out, max_steps,
-                    refresh_rate, evaluate)
+def specialise(name, rhs, jacobian=None, *, compiled, cache=False):
+    """:func:`_segment` for ``rhs`` (φ, u, params, data) → du/dφ and ``jacobian``
+    (φ, u, f, params, data) → ∂f/∂u (None: forward differences); compiled with numba
+    (``rhs`` and ``jacobian`` numba functions) or plain Python. The compiled step is
+    cached on disk when ``cache`` (then ``name`` must be unique and stable, and the bound
+    functions module-level numba functions: numba caches only code whose callees are
+    globals). Returns segment(params, data, φ, end, u, h, max_step, rtol, atol, circle,
+    out_phi, out_u, next_out, max_steps, refresh_rate, evaluate) → (status, φ, u, h,
+    steps, next_out, jacobian evaluations)."""
+    jit = nb.njit(cache=True) if cache else nb.njit
+    wrap = jit if compiled else (lambda function: function)
+    functions = {"rhs": rhs}
+    if jacobian is None:
+        jacobian = wrap(_bind(_fd_jacobian, f"{name}_fd_jacobian", functions))
+    stage = wrap(_bind(_stage, f"{name}_stage", functions))
+    return wrap(_bind(_segment, f"{name}_segment",
+                      {"rhs": rhs, "jacobian": jacobian, "stage": stage}))

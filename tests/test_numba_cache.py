@@ -1,0 +1,100 @@
+"""The compiled implicit free flight is loaded from numba's disk cache by a second process,
+and the second process writes the same results bit for bit."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+CASE = ROOT / "examples" / "passenger_car_diesel_2000rpm.toml"
+
+RUN_AND_COUNT = """
+import sys
+from conrod.cli.app import main
+from conrod.film.short_bearing import kernel_force
+from conrod.orbit.compiled_flight import flight_segment
+
+try:
+    main()
+except SystemExit as stop:
+    code = stop.code
+stats = flight_segment(kernel_force).stats
+print("CACHE", sum(stats.cache_hits.values()), sum(stats.cache_misses.values()))
+sys.exit(code)
+"""
+
+
+def _run(out: Path, cache: Path) -> tuple[int, int]:
+    """(cache hits, cache misses) of the short film's compiled segment in a new process."""
+    command = [sys.executable, "-c", RUN_AND_COUNT, "run", str(CASE), "--film", "short",
+               "--integrator", "implicit", "--no-figures", "--out", str(out)]
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src"), "NUMBA_CACHE_DIR": str(cache)}
+    done = subprocess.run(command, capture_output=True, text=True, env=env, check=False)
+    assert done.returncode == 0, done.stderr[-2000:]
+    line = next(x for x in done.stdout.splitlines() if x.startswith("CACHE"))
+    hits, misses = (int(v) for v in line.split()[1:])
+    return hits, misses
+
+
+def _summary(out: Path) -> dict:
+    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    summary.pop("wall_time_s")
+    return summary
+
+
+def test_a_second_process_loads_the_compiled_flight_and_writes_the_same_results(tmp_path):
+    cache = tmp_path / "numba"
+    first = _run(tmp_path / "first", cache)
+    second = _run(tmp_path / "second", cache)
+    assert first == (0, 1)  # compiled and saved
+    assert second == (1, 0)  # loaded, nothing compiled
+    for name in ("cycle.csv", "wear_journal.csv", "wear_shell.csv"):
+        assert (tmp_path / "first" / name).read_bytes() == \
+            (tmp_path / "second" / name).read_bytes()
+    assert _summary(tmp_path / "first") == _summary(tmp_path / "second")
+
+
+def _spring_damper():
+    """A closure force F = −k e − b ė [N] (k = 4 N/m, b = 2 N s/m): not cacheable."""
+    import numba as nb
+
+    @nb.njit
+    def force(x, y, vx, vy, omega_sum, viscosity, params):
+        return -params[0] * x - params[1] * vx, -params[0] * y - params[1] * vy
+
+    return force
+
+
+def test_a_closure_force_runs_the_same_segment_uncached_and_in_python():
+    """Constant load W = 1 N on a spring k = 4 N/m with damping b = 2 N s/m, m = 1 kg,
+    c = 1 m, ω = 1 rad/s: the centre settles at x = W/k (damping ratio 0.5; after 40 rad
+    the transient is e^{-40})."""
+    import numpy as np
+
+    from conrod.orbit.compiled_flight import flight_segment
+    from conrod.orbit.tr_bdf2 import STATUS_END, specialise
+
+    angles = np.array([0.0, 2.0 * np.pi])
+    table = np.array([[1.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]])
+    data = (angles, table, 2.0 * np.pi, 0.01, 1.0, 1.0, 1.0, 1.0)
+    params = (4.0, 2.0)
+    force = _spring_damper()
+    compiled = flight_segment(force)
+
+    def python_rhs(phi, u, params, data):
+        return np.array([u[2], u[3], 1.0 - 4.0 * u[0] - 2.0 * u[2], -4.0 * u[1] - 2.0 * u[3]])
+
+    python = specialise("spring", python_rhs, compiled=False)
+    results = []
+    for segment in (compiled, python):
+        status, phi, u, *_ = segment(params, data, 0.0, 40.0, np.zeros(4), 1e-4, 0.1, 1e-8,
+                                     1e-10, 10.0, np.zeros(0), np.zeros((0, 4)), 0, 10**6,
+                                     0.1, True)
+        assert status == STATUS_END and phi == 40.0
+        results.append(u)
+    np.testing.assert_allclose(results[0], [0.25, 0.0, 0.0, 0.0], atol=1e-7)
+    np.testing.assert_allclose(results[1], results[0], rtol=0, atol=1e-12)
