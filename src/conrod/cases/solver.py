@@ -83,7 +83,7 @@ class SolverSection(Section):
     film_tolerance: float = Field(
         default=1.0e-12, gt=0.0, le=1.0e-3,
         description="Iteration tolerance of grid films in the orbit; tight, because the "
-        "implicit integrator differentiates the film force with ~1e-8 steps [-]",
+        "Newton iteration of the implicit integrators stalls on a noisier force [-]",
     )
     n_theta: int = Field(
         default=72, ge=8, le=2048, multiple_of=2,
