@@ -24,17 +24,17 @@ import numba as nb
 import numpy as np
 
 from conrod.orbit.problem import periodic_sample
-from conrod.orbit.tr_bdf2 import _bind, specialise
+from conrod.orbit.tr_bdf2 import UNBOUND, _bind, specialise
 
 
 def force(x, y, vx, vy, omega_sum, viscosity, params):
     """Film force (F_x, F_y) [N]: a placeholder, bound per film by :func:`flight_segment`."""
-    raise NotImplementedError
+    raise RuntimeError(UNBOUND)
 
 
 def film_jacobian(x, y, vx, vy, omega_sum, viscosity, params):
     """(F, ∂F/∂(e, ė)) [N, N/m, N s/m]: a placeholder, bound by :func:`flight_segment`."""
-    raise NotImplementedError
+    raise RuntimeError(UNBOUND)
 
 
 def _rhs(phi, u, params, data):

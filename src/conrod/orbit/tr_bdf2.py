@@ -45,19 +45,25 @@ STATUS_END, STATUS_HIT, STATUS_COLLAPSE, STATUS_NEWTON = 0, 1, -1, -2
 failed with a fresh Jacobian at the smallest step."""
 
 
+UNBOUND = ("a TR-BDF2 template function was called unbound; the step code runs only through "
+           "specialise(), which binds the film's functions in its place")
+"""Message of the template globals below: they name the callees of the one step code and are
+replaced per film by :func:`specialise` (never called themselves)."""
+
+
 def rhs(phi, u, params, data):
     """du/dφ [-]: a placeholder, bound per film by :func:`specialise`."""
-    raise NotImplementedError
+    raise RuntimeError(UNBOUND)
 
 
 def jacobian(phi, u, f0, params, data):
     """∂(du/dφ)/∂u [-]: a placeholder, bound per film by :func:`specialise`."""
-    raise NotImplementedError
+    raise RuntimeError(UNBOUND)
 
 
 def stage(phi, base, guess, dh, inverse, params, data, atol, rtol, eta, evaluate):
     """One implicit stage: a placeholder, bound per film by :func:`specialise`."""
-    raise NotImplementedError
+    raise RuntimeError(UNBOUND)
 
 
 def _fd_jacobian(phi, u, f0, params, data):
