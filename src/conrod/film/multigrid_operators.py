@@ -142,20 +142,25 @@ def restrict(fine: np.ndarray, coarse_mask: np.ndarray, symmetric: bool,
             out[ic, jc] = total / a_p[ic, jc]
 
 
+@nb.njit(cache=True, inline="always")
+def interpolated(coarse: np.ndarray, i: int, j: int) -> float:
+    """Bilinear interpolation of ``coarse`` (θ periodic) at fine node (i, j)."""
+    nc = coarse.shape[0]
+    i0 = i // 2
+    i1 = (i0 + 1) % nc if i % 2 else i0
+    j0 = j // 2
+    j1 = j0 + 1 if j % 2 else j0
+    return 0.25 * (coarse[i0, j0] + coarse[i1, j0] + coarse[i0, j1] + coarse[i1, j1])
+
+
 @nb.njit(cache=True)
 def add_prolongated(coarse: np.ndarray, fine: np.ndarray, fine_mask: np.ndarray) -> None:
     """fine += bilinear interpolation of ``coarse`` (θ periodic) on unmasked nodes."""
     n, m = fine.shape
-    nc = coarse.shape[0]
     for i in range(n):
-        i0 = i // 2
-        i1 = (i0 + 1) % nc if i % 2 else i0
         for j in range(1, m - 1):
-            if fine_mask[i, j]:
-                continue
-            j0 = j // 2
-            j1 = j0 + 1 if j % 2 else j0
-            fine[i, j] += 0.25 * (coarse[i0, j0] + coarse[i1, j0] + coarse[i0, j1] + coarse[i1, j1])
+            if not fine_mask[i, j]:
+                fine[i, j] += interpolated(coarse, i, j)
 
 
 @nb.njit(cache=True)

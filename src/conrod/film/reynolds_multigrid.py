@@ -44,6 +44,7 @@ from conrod.film.multigrid_operators import (
     coarsen,
     coarsest_relaxation,
     conductances,
+    interpolated,
     relax,
     residual,
     restrict,
@@ -160,18 +161,11 @@ def relax_with_change(p, w_e, w_w, w_n, w_s, s, floor, previous):
 def add_projected(coarse, fine, fine_mask, floor):
     """fine := max(fine + bilinear interpolation of ``coarse``, floor) on unmasked nodes."""
     n, m = fine.shape
-    nc = coarse.shape[0]
     for i in range(n):
-        i0 = i // 2
-        i1 = (i0 + 1) % nc if i % 2 else i0
         for j in range(1, m - 1):
-            if fine_mask[i, j]:
-                continue
-            j0 = j // 2
-            j1 = j0 + 1 if j % 2 else j0
-            value = fine[i, j] + 0.25 * (coarse[i0, j0] + coarse[i1, j0] + coarse[i0, j1]
-                                         + coarse[i1, j1])
-            fine[i, j] = value if value > floor else floor
+            if not fine_mask[i, j]:
+                value = fine[i, j] + interpolated(coarse, i, j)
+                fine[i, j] = value if value > floor else floor
 
 
 @nb.njit(cache=True)
