@@ -102,6 +102,14 @@ def test_python_writers_refuse_a_foreign_folder_too(foreign):
     assert sorted(p.name for p in foreign.iterdir()) == ["chapter1.tex", "data.csv"]
 
 
+def test_the_sweep_python_api_refuses_a_foreign_folder_before_computing(foreign):
+    from conrod.sweep import Sweep
+
+    with pytest.raises(CaseError, match=r"out 'thesis'|chapter1.tex"):
+        Sweep(STUDY, foreign, workers=1).run()
+    assert sorted(p.name for p in foreign.iterdir()) == ["chapter1.tex", "data.csv"]
+
+
 def test_a_folder_holding_only_the_input_file_is_accepted(tmp_path):
     case = tmp_path / "case.toml"
     case.write_text("title = 'x'\n", encoding="utf-8")

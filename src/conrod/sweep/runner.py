@@ -27,6 +27,7 @@ import pandas as pd
 
 from conrod.errors import CaseError
 from conrod.io.atomic import write_json
+from conrod.io.result_folder import check_output_folder
 from conrod.sweep.store import read_record, remove_stale
 from conrod.sweep.study import Study
 from conrod.sweep.table import record_row, rows_to_frame, write_parquet
@@ -55,6 +56,7 @@ class Sweep:
                  figures: bool = False):
         self.study = study if isinstance(study, Study) else Study.from_toml(study)
         self.out = Path(out)
+        self._inputs = () if isinstance(study, Study) else (study,)
         if scheduler is not None and workers is not None:
             raise CaseError("--workers applies to the local cluster; with --scheduler the "
                             "cluster's own workers run the variants")
@@ -73,6 +75,7 @@ class Sweep:
             on_record: Callable[[dict[str, Any]], None] | None = None) -> pd.DataFrame:
         """Run the unfinished variants; write and return the table (one row per variant)."""
         variants = self.variants()  # everything validated before anything runs
+        check_output_folder(self.out, option="out", marker=STUDY_FILE, inputs=self._inputs)
         self.out.mkdir(parents=True, exist_ok=True)
         remove_stale(self.out)
         write_json(self.out / STUDY_FILE, self._description(variants))
