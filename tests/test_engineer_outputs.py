@@ -283,6 +283,19 @@ def test_mass_conserving_without_oil_feed_is_refused_before_computing(runner, tm
     assert not (tmp_path / "o").exists()
 
 
+def test_mass_conserving_without_oil_feed_is_refused_by_the_python_api_too():
+    from conrod import Case, Simulation
+    from conrod.errors import CaseError
+
+    case = Case.from_toml(EXAMPLES / "passenger_car_diesel_2000rpm.toml")
+    with pytest.raises(CaseError, match=r"needs an oil feed .*bearing.supply_pressure = 0 Pa"):
+        Simulation(case, film="mass_conserving")
+    grooved = Case.from_toml(EXAMPLES / "ruston_hornsby_6vebx_mk3.toml")
+    with pytest.raises(CaseError, match="1 groove"):  # a groove, but not fed
+        Simulation(grooved, film="mass_conserving")
+    Simulation(grooved.with_(bearing__supply_pressure=3e5), film="mass_conserving")
+
+
 def test_lengths_in_metres_are_keyword_only():
     """A positional 15e-6 could be an eccentricity in metres or a ratio; refused clearly."""
     import dataclasses

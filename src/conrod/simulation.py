@@ -95,6 +95,8 @@ class Simulation:
         self._film = None if film is None or isinstance(film, str) else film
         self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
         self._names = names
+        if self._film is None:
+            check_oil_feed(bearing.geometry(), self.solver.film)
         self._loads = loads if loads is not None else self._read_loads()  # bad tables fail here
 
     # -- components -------------------------------------------------------------------
@@ -298,6 +300,21 @@ class _ThermalOrbit:
     temperature: float | None
     cycles: int
     iterations: int
+
+
+def check_oil_feed(geometry: BearingGeometry, film: str) -> None:
+    """The mass-conserving film in an orbit needs oil fed above the cavitation pressure
+    through a groove or a hole: without it the lands starve over the cycle and the orbit
+    cannot converge (a steady film solve does not need it)."""
+    fed = (geometry.grooves or geometry.feed_holes) and (
+        geometry.supply_pressure > geometry.cavitation_pressure)
+    if film == "mass_conserving" and not fed:
+        raise CaseError(
+            "solver.film = 'mass_conserving': needs an oil feed above the cavitation pressure "
+            f"(bearing.supply_pressure = {geometry.supply_pressure:g} Pa, cavitation "
+            f"{geometry.cavitation_pressure:g} Pa, {len(geometry.grooves)} groove(s), "
+            f"{len(geometry.feed_holes)} hole(s)): add a groove or feed hole to [bearing] and "
+            "set bearing.supply_pressure, or use film = 'reynolds'")
 
 
 def default_film(case: Case) -> FilmModel:

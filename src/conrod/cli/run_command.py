@@ -139,7 +139,6 @@ def register(app: typer.Typer) -> None:
         check_output_folder(out, inputs=(case_file,))
         case = Case.from_toml(case_file)
         n_theta, n_z = _grid(grid)
-        _check_oil_feed(case, film.value if film else case.solver.film)
         simulation = Simulation(case, film=film and film.value,
                                 integrator=integrator and integrator.value, max_cycles=max_cycles,
                                 step_deg=step_deg, n_theta=n_theta, n_z=n_z,
@@ -156,26 +155,6 @@ def register(app: typer.Typer) -> None:
         write_results(results, out, figures=figures)
         print_headline(results, out)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
-
-
-def _check_oil_feed(case: Any, film: str) -> None:
-    """The mass-conserving film needs oil fed above the cavitation pressure through a groove
-    or a hole: without it the lands starve and the solver cannot converge."""
-    from conrod.errors import CaseError
-
-    bearing = case.bearing
-    if film != "mass_conserving" or bearing is None:
-        return
-    geometry = bearing.geometry()
-    fed = (geometry.grooves or geometry.feed_holes) and (
-        geometry.supply_pressure > geometry.cavitation_pressure)
-    if not fed:
-        raise CaseError(
-            "solver.film = 'mass_conserving': needs an oil feed above the cavitation pressure "
-            f"(bearing.supply_pressure = {geometry.supply_pressure:g} Pa, cavitation "
-            f"{geometry.cavitation_pressure:g} Pa, {len(geometry.grooves)} groove(s), "
-            f"{len(geometry.feed_holes)} hole(s)): add a groove or feed hole to [bearing] and "
-            "set bearing.supply_pressure, or use film = 'reynolds'")
 
 
 def _with_step_study(results, simulation, case, film, integrator, max_cycles, n_theta, n_z):
