@@ -152,11 +152,29 @@ class _Balance:
                 damping *= 10.0
             else:
                 break  # no decrease even with tiny steps: not converged
+        if norm > ACCEPTED_RESIDUAL * size:
+            v, r, warm = self._bracketed(start, v, r, warm, load, speeds, dt)
+            norm = float(np.hypot(*r))
         if norm > ACCEPTED_RESIDUAL * size and (blocked or self._near_circle(start, v, dt)):
             return None
         x1, y1 = start.position(v, dt)
         return _Step(x1, y1, float(v[0]), float(v[1]), warm, 0.0, False, norm / size,
                      norm <= ACCEPTED_RESIDUAL * size)
+
+    def _bracketed(self, start: _Start, v, r, warm, load, speeds, dt):
+        """(v, r, memory) of the bracketed search from the stalled iterate v
+        (:mod:`conrod.orbit.content_bracket`); the stalled iterate when it finds nothing
+        better."""
+        from conrod.orbit.content_bracket import bracketed_balance
+
+        def residual(x1, y1):
+            return self.residual(start, start.velocity(x1, y1, dt), load, speeds, dt, warm)
+
+        found = bracketed_balance(residual, start.position(v, dt), load, self.radius,
+                                  self.problem.clearance)
+        if found is None or np.hypot(*found.residual) >= np.hypot(*r):
+            return v, r, warm
+        return start.velocity(found.x, found.y, dt), found.residual, found.memory
 
     def _admissible(self, start: _Start, v, dt):
         """(v, True) moved so that the end position lies on the contact circle when it would
