@@ -78,7 +78,7 @@ def _orbit(b, film: str):
 
 
 @pytest.mark.slow
-@settings(max_examples=10, deadline=None, derandomize=True,
+@settings(max_examples=8, deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.too_slow])
 @given(bearings)
 def test_fed_bearing_orbit_is_periodic_or_names_the_cause(b):

@@ -13,9 +13,12 @@ orbit). Unlike the instantaneous force balance at a frozen film fraction, this b
 an answer for any motion of the journal towards a ruptured region (the squeezed content
 refills the gap and carries the load), so the step is well posed; both formulas are
 L-stable. The 2 × 2 balance is solved by a damped Newton iteration with a finite-difference
-Jacobian, each film solve warm-started from the previous trial; a step that does not
-converge is split in halves (backward Euler, down to 1/2^:data:`MAX_HALVINGS` of the step)
-before the orbit stops with the crank angle, the force residual [N] and what to change.
+Jacobian, each film solve warm-started from the previous trial; where it stalls because
+the film force cannot turn with the load (a pressurised strip one row wide: the massless
+journal jumps), a bracketed search for the end position finishes it
+(:mod:`conrod.orbit.content_bracket`); a step that does not converge is split in halves
+(backward Euler, down to 1/2^:data:`MAX_HALVINGS` of the step) before the orbit stops
+with the crank angle, the force residual [N] and what to change.
 
 On the contact circle r_c the centre moves along the circle (one unknown, the angle) and
 the normal force that the film and load leave unbalanced is the contact force P_c ≥ 0
@@ -314,9 +317,10 @@ def _failure(problem: OrbitProblem, phi: float, result: _Step | None, load,
                   "oil feed (bearing.supply_pressure, grooves) can fill the film under this "
                   "load")
     else:
-        advice = ("without mass the journal would have to jump: the film left between the "
-                  "ruptured regions cannot turn its force with the load; run the orbit with "
-                  "mass (solver.integrator = 'auto' or 'implicit')")
+        advice = ("no end position inside the contact circle balances the load, not even "
+                  "after a jump of the massless journal (bracketed search); refine "
+                  "solver.n_theta/n_z, reduce solver.quasi_static_step_deg, or run the "
+                  "orbit with mass (solver.integrator = 'auto' or 'implicit')")
     return ConvergenceError(
         f"mass-conserving orbit step did not balance the load after {MAX_HALVINGS} halvings "
         f"(force residual {residual:.3g} N of a {size - 1.0:.3g} N load); {advice}",

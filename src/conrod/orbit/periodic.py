@@ -22,7 +22,9 @@ Periodicity error of cycle k: max over the output angles of |e_k(φ) − e_{k−
 (for a cycle repeated from where the last one ended: it is then the last cycle's
 closure seen along the whole cycle). A cycle from an extrapolated start is measured by its
 own closure, max(|e_k(end) − e_k(0)|/c, |ė_k(end) − ė_k(0)|/(c ω)) (position only for
-the massless orbit): the previous cycle started elsewhere and says nothing about it.
+the massless orbit; with a film content also the root mean square of the change of the
+film fraction over the cycle): the previous cycle started elsewhere and says nothing
+about it.
 The orbit is periodic when it is at most ``[solver] periodicity_tolerance``; if it is not
 after ``max_cycles``, the result says so (``periodic = False`` plus a warning) instead of
 returning silently.
@@ -90,13 +92,18 @@ def cycle_difference(a: CycleTrajectory, b: CycleTrajectory, clearance: float) -
 
 
 def cycle_closure(start: OrbitState, end: OrbitState, problem: OrbitProblem,
-                  with_mass: bool) -> float:
-    """How far one cycle is from closing on itself: max(|e_end − e_0|/c, and with mass
-    |ė_end − ė_0|/(c ω)) [-]."""
+                  with_mass: bool, content: HasMixableContent | None = None) -> float:
+    """How far one cycle is from closing on itself: max(|e_end − e_0|/c, with mass
+    |ė_end − ė_0|/(c ω), with a ``content`` film the root mean square of the change of its
+    film fraction ϑ) [-]."""
     c, w = problem.clearance, problem.crank_speed
     closure = math.hypot(end.x - start.x, end.y - start.y) / c
     if with_mass:
         closure = max(closure, math.hypot(end.vx - start.vx, end.vy - start.vy) / (c * w))
+    if content is not None and start.film_memory is not None and end.film_memory is not None:
+        change = (content.content_vector(end.film_memory)
+                  - content.content_vector(start.film_memory))
+        closure = max(closure, float(np.sqrt(np.mean(change**2))))
     return closure
 
 
@@ -126,7 +133,8 @@ def periodic_orbit(
         with reporting(None if on_angle is None else functools.partial(on_angle, cycle)):
             current = integrate_cycle(problem, state, settings, chosen)
         if extrapolated:
-            error = cycle_closure(state, current.end_state, problem, mixing.with_mass)
+            error = cycle_closure(state, current.end_state, problem, mixing.with_mass,
+                                  mixing.content)
         elif previous is not None:
             error = cycle_difference(current, previous, problem.clearance)
         history.append(error)
