@@ -107,15 +107,17 @@ def _timeout(signum, frame):
     raise TimeoutError
 
 
+REPEATS = 3
+"""Cycles timed per speed row; the fastest counts (a shared machine) [-]."""
 PASSENGER_CAR = ROOT / "examples" / "passenger_car_diesel_2000rpm.toml"
 SPEED_ROWS = [("reynolds", "quasi_static"), ("mass_conserving", "quasi_static"),
               ("reynolds", "implicit"), ("mass_conserving", "implicit")]
 
 
 def passenger_car_rows() -> list[str]:
-    """Time of the second cycle (after a warm-up cycle) on the passenger-car case fed by a
-    2 mm central circumferential groove at 0.3 MPa, 72×16, Reynolds and mass-conserving,
-    massless and with mass, all in this one run."""
+    """Fastest of :data:`REPEATS` cycles (after a warm-up cycle) on the passenger-car case
+    fed by a 2 mm central circumferential groove at 0.3 MPa, 72×16, Reynolds and
+    mass-conserving, massless and with mass, all in this one run."""
     from conrod import Case, Simulation
     from conrod.cases.bearing import GrooveSection
     from conrod.orbit import initial_state, integrate_cycle
@@ -128,10 +130,12 @@ def passenger_car_rows() -> list[str]:
     for film, integrator in SPEED_ROWS:
         sim = Simulation(case, film=film, integrator=integrator, n_theta=72, n_z=16)
         problem = sim.problem()
-        warm = integrate_cycle(problem, initial_state(), sim.solver)
-        start = time.perf_counter()
-        cycle = integrate_cycle(problem, warm.end_state, sim.solver)
-        seconds = time.perf_counter() - start
+        cycle = integrate_cycle(problem, initial_state(), sim.solver)
+        seconds = math.inf
+        for _ in range(REPEATS):
+            start = time.perf_counter()
+            cycle = integrate_cycle(problem, cycle.end_state, sim.solver)
+            seconds = min(seconds, time.perf_counter() - start)
         h_min = problem.clearance - float(np.max(np.hypot(cycle.x, cycle.y)))
         reference.setdefault(integrator, seconds)
         ratio = seconds / reference[integrator]
@@ -179,8 +183,8 @@ def main() -> None:
     lines += [f"| {f} | {i} | {n}/{CASES} | {t:.1f} |" for (f, i), (n, t) in totals.items()]
     lines += ["", "## Speed on the passenger car with an oil feed", "",
               f"`{PASSENGER_CAR.relative_to(ROOT)}` with a 2 mm central groove at 0.3 MPa, "
-              "72×16, time of the second cycle; ratio to the Reynolds film with the same "
-              "integrator in this run (target ≤ 2×).", "",
+              f"72×16, fastest of {REPEATS} cycles after a warm-up cycle; ratio to the "
+              "Reynolds film with the same integrator in this run (target ≤ 2×).", "",
               "| film | integrator | time per cycle | × Reynolds | h_min |",
               "| --- | --- | --- | --- | --- |"]
     lines += passenger_car_rows()
