@@ -147,6 +147,21 @@ class HasContentStep(Protocol):
 
 
 @runtime_checkable
+class HasMixableContent(Protocol):
+    """A film whose content (the film fraction ϑ on its grid) can be extrapolated between
+    cycles with the journal position: the acceleration of the cycle-to-cycle map of the
+    orbit carries it in its state."""
+
+    def content_vector(self, memory: Any) -> np.ndarray:
+        """The content of ``memory`` as a flat vector (film fraction ϑ [-])."""
+        ...
+
+    def with_content(self, memory: Any, vector: np.ndarray) -> Any:
+        """``memory`` with the content ``vector`` (clipped to 0 ≤ ϑ ≤ 1)."""
+        ...
+
+
+@runtime_checkable
 class HasForceJacobian(Protocol):
     """A film that gives the derivatives of its force with respect to the journal-centre
     state, J = ∂F/∂(e_x, e_y, ė_x, ė_y) (2 × 4: N/m, N s/m), from its own solver (e.g.

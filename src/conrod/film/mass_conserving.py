@@ -198,6 +198,17 @@ class MassConservingFilm:
         fraction = np.clip(memory.fraction + dt * rate, 0.0, 1.0)
         return replace(memory, fraction=fraction, thickness=None)
 
+    def content_vector(self, memory: MassConservingMemory) -> np.ndarray:
+        """Film fraction ϑ of ``memory`` as a flat vector [-]."""
+        return np.asarray(memory.fraction, dtype=float).ravel()
+
+    def with_content(self, memory: MassConservingMemory,
+                     vector: np.ndarray) -> MassConservingMemory:
+        """``memory`` with the film fraction ``vector`` (clipped to [0, 1]) and no stored
+        thickness: the next implicit step takes h^n at its own start position."""
+        fraction = np.clip(np.reshape(vector, np.shape(memory.fraction)), 0.0, 1.0)
+        return replace(memory, fraction=fraction, thickness=None)
+
     def content_step(self, state: FilmState, memory: MassConservingMemory, dt: float,
                      warm: MassConservingMemory | None = None,
                      previous: MassConservingMemory | None = None,

@@ -13,9 +13,12 @@ orbit). Unlike the instantaneous force balance at a frozen film fraction, this b
 an answer for any motion of the journal towards a ruptured region (the squeezed content
 refills the gap and carries the load), so the step is well posed; both formulas are
 L-stable. The 2 × 2 balance is solved by a damped Newton iteration with a finite-difference
-Jacobian, each film solve warm-started from the previous trial; a step that does not
-converge is split in halves (backward Euler, down to 1/2^:data:`MAX_HALVINGS` of the step)
-before the orbit stops with the crank angle, the force residual [N] and what to change.
+Jacobian, each film solve warm-started from the previous trial; where it stalls because
+the film force cannot turn with the load (a pressurised strip one row wide: the massless
+journal jumps), a bracketed search for the end position finishes it
+(:mod:`conrod.orbit.content_bracket`); a step that does not converge is split in halves
+(backward Euler, down to 1/2^:data:`MAX_HALVINGS` of the step) before the orbit stops
+with the crank angle, the force residual [N] and what to change.
 
 On the contact circle r_c the centre moves along the circle (one unknown, the angle) and
 the normal force that the film and load leave unbalanced is the contact force P_c ≥ 0
@@ -43,6 +46,9 @@ ACCEPTED_RESIDUAL = 1.0e-5
 """Largest relative residual accepted when the iteration limit is reached [-]."""
 MAX_HALVINGS = 6
 """Most halvings of a step that does not converge [-]."""
+CHORD_CONTRACTION = 0.25
+"""Least reduction of the force residual per iteration with a reused Jacobian before it is
+recomputed [-]."""
 SUBSTEP_BUDGET = 4
 """Most steps per cycle, halved ones included, as a multiple of the nominal count: a cycle
 that needs more stops instead of grinding on [-]."""
@@ -91,6 +97,14 @@ class _Start:
         return np.array([(1.5 * x1 - 2.0 * self.x + 0.5 * b.x) / dt,
                          (1.5 * y1 - 2.0 * self.y + 0.5 * b.y) / dt])
 
+    def predicted_velocity(self) -> np.ndarray:
+        """Start of the iteration for the end velocity [m/s]: linear extrapolation over two
+        equal steps (BDF2), else the velocity at the start."""
+        b = self.before
+        if b is None:
+            return np.array([self.vx, self.vy])
+        return np.array([2.0 * self.vx - b.vx, 2.0 * self.vy - b.vy])
+
     def acceleration(self, v, dt: float) -> np.ndarray:
         """dv/dt at the end of the step [m/s²]."""
         b = self.before
@@ -109,6 +123,7 @@ class _Balance:
         self.mass = np.array([problem.mass_x, problem.mass_y]) if with_mass else np.zeros(2)
         self.radius = problem.contact_radius * (1.0 - 1e-9)
         self.scale = problem.clearance * max(problem.crank_speed, 1e-3)
+        self._kept: dict = {}  # last Jacobian / contact slope by (kind, Δt, backward Euler)
 
     def residual(self, start: _Start, v, load, speeds, dt, warm):
         """(residual W + F − m dv/dt [N], memory at the end of the step) at end velocity v."""
@@ -130,33 +145,74 @@ class _Balance:
         """Levenberg–Marquardt on the velocity off the circle (the film force can be nearly
         insensitive to one direction of the velocity where little film is left, so plain
         Newton steps explode), trial end positions projected onto the contact circle;
-        None when the centre is pushed onto the circle."""
-        v, _ = self._admissible(start, np.array([start.vx, start.vy]), dt)
+        None when the centre is pushed onto the circle. The Jacobian of the last step of
+        the same kind is reused while it contracts the residual by
+        :data:`CHORD_CONTRACTION` per iteration (chord iteration), else recomputed."""
+        v, _ = self._admissible(start, start.predicted_velocity(), dt)
         size = math.hypot(*load) + 1.0
         r, warm = self.residual(start, v, load, speeds, dt, None)
         norm, damping, blocked = float(np.hypot(*r)), 1e-9, False
+        kind = ("free", dt, start.before is None)
+        jac, fresh = self._kept.pop(kind, None), False
         for _ in range(NEWTON_ITERATIONS):
             if norm <= RELATIVE_RESIDUAL * size:
                 break
-            jac = self._jacobian(start, v, r, load, speeds, dt, warm) * self.scale
-            normal, gradient = jac.T @ jac, jac.T @ r
-            level = float(np.max(np.diag(normal))) or 1.0
-            for _ in range(16):
-                step = -np.linalg.solve(normal + damping * level * np.eye(2), gradient)
-                trial, blocked = self._admissible(start, v + self.scale * step, dt)
-                r_trial, w_trial = self.residual(start, trial, load, speeds, dt, warm)
-                if np.hypot(*r_trial) < norm:
-                    v, r, warm = trial, r_trial, w_trial
-                    norm, damping = float(np.hypot(*r_trial)), max(damping / 10.0, 1e-15)
-                    break
-                damping *= 10.0
-            else:
-                break  # no decrease even with tiny steps: not converged
+            if jac is None:
+                jac, fresh = self._jacobian(start, v, r, load, speeds, dt, warm) * self.scale, True
+            found = self._descent(start, v, r, norm, jac, damping, load, speeds, dt, warm,
+                                  16 if fresh else 2)
+            if found is None:
+                if fresh:
+                    break  # no decrease even with tiny steps: not converged
+                jac = None
+                continue
+            jac = _broyden(jac, (found[0] - v) / self.scale, found[1] - r)
+            v, r, warm, damping, blocked = found
+            contraction = float(np.hypot(*r)) / norm
+            norm = float(np.hypot(*r))
+            if not fresh and contraction > CHORD_CONTRACTION:
+                jac = None
+            fresh = False
+        self._kept[kind] = jac
+        if norm > ACCEPTED_RESIDUAL * size:
+            v, r, warm = self._bracketed(start, v, r, warm, load, speeds, dt)
+            norm = float(np.hypot(*r))
         if norm > ACCEPTED_RESIDUAL * size and (blocked or self._near_circle(start, v, dt)):
             return None
         x1, y1 = start.position(v, dt)
         return _Step(x1, y1, float(v[0]), float(v[1]), warm, 0.0, False, norm / size,
                      norm <= ACCEPTED_RESIDUAL * size)
+
+    def _descent(self, start: _Start, v, r, norm, jac, damping, load, speeds, dt, warm,
+                 tries: int):
+        """(v, r, memory, damping, blocked) after the first Levenberg–Marquardt step of
+        ``jac`` that lowers the residual, raising the damping up to ``tries`` times; None
+        when none does."""
+        normal, gradient = jac.T @ jac, jac.T @ r
+        level = float(np.max(np.diag(normal))) or 1.0
+        for _ in range(tries):
+            step = -np.linalg.solve(normal + damping * level * np.eye(2), gradient)
+            trial, blocked = self._admissible(start, v + self.scale * step, dt)
+            r_trial, w_trial = self.residual(start, trial, load, speeds, dt, warm)
+            if np.hypot(*r_trial) < norm:
+                return trial, r_trial, w_trial, max(damping / 10.0, 1e-15), blocked
+            damping *= 10.0
+        return None
+
+    def _bracketed(self, start: _Start, v, r, warm, load, speeds, dt):
+        """(v, r, memory) of the bracketed search from the stalled iterate v
+        (:mod:`conrod.orbit.content_bracket`); the stalled iterate when it finds nothing
+        better."""
+        from conrod.orbit.content_bracket import bracketed_balance
+
+        def residual(x1, y1):
+            return self.residual(start, start.velocity(x1, y1, dt), load, speeds, dt, warm)
+
+        found = bracketed_balance(residual, start.position(v, dt), load, self.radius,
+                                  self.problem.clearance)
+        if found is None or np.hypot(*found.residual) >= np.hypot(*r):
+            return v, r, warm
+        return start.velocity(found.x, found.y, dt), found.residual, found.memory
 
     def _admissible(self, start: _Start, v, dt):
         """(v, True) moved so that the end position lies on the contact circle when it would
@@ -192,21 +248,31 @@ class _Balance:
 
         alpha = math.atan2(start.y, start.x)
         rt, r, v, warm = tangential(alpha, None)
+        kind = ("circle", dt, start.before is None)
+        slope, fresh = self._kept.get(kind), False
         for _ in range(NEWTON_ITERATIONS):
             if abs(rt) <= RELATIVE_RESIDUAL * size:
                 break
-            slope = (tangential(alpha + 1e-7, warm)[0] - rt) / 1e-7
+            if not slope:
+                slope, fresh = (tangential(alpha + 1e-7, warm)[0] - rt) / 1e-7, True
             change = max(min(-rt / slope if slope != 0.0 else 0.0, 0.05), -0.05)
             lam, trial = 1.0, None
-            while lam >= 1e-6:
+            while lam >= (1e-6 if fresh else 0.25):
                 trial = tangential(alpha + lam * change, warm)
                 if abs(trial[0]) < abs(rt):
                     break
                 lam, trial = 0.5 * lam, None
             if trial is None:
-                break  # no decrease: not converged
+                if fresh:
+                    break  # no decrease: not converged
+                slope = None
+                continue
+            if abs(lam * change) > 1e-9:  # secant slope, above the film solver's noise
+                slope = (trial[0] - rt) / (lam * change)
+            fresh = False
             alpha += lam * change
             rt, r, v, warm = trial
+        self._kept[kind] = slope
         normal = np.array([math.cos(alpha), math.sin(alpha)])
         contact = float(r @ normal)  # the unbalanced force pressing outwards = P_c
         if contact < 0.0:
@@ -223,6 +289,17 @@ class _Balance:
             if result is not None:
                 return result
         return None
+
+
+def _broyden(jac: np.ndarray, step: np.ndarray, change: np.ndarray) -> np.ndarray:
+    """Broyden's rank-one update of ``jac`` to the secant ``change`` = J ``step``.
+
+    C.G. Broyden, "A class of methods for solving nonlinear simultaneous equations",
+    Math. Comp. 19 (1965) 577–593."""
+    length = float(step @ step)
+    if length == 0.0:
+        return jac
+    return jac + np.outer(change - jac @ step, step) / length
 
 
 def content_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
@@ -296,9 +373,10 @@ def _failure(problem: OrbitProblem, phi: float, result: _Step | None, load,
                   "oil feed (bearing.supply_pressure, grooves) can fill the film under this "
                   "load")
     else:
-        advice = ("without mass the journal would have to jump: the film left between the "
-                  "ruptured regions cannot turn its force with the load; run the orbit with "
-                  "mass (solver.integrator = 'auto' or 'implicit')")
+        advice = ("no end position inside the contact circle balances the load, not even "
+                  "after a jump of the massless journal (bracketed search); refine "
+                  "solver.n_theta/n_z, reduce solver.quasi_static_step_deg, or run the "
+                  "orbit with mass (solver.integrator = 'auto' or 'implicit')")
     return ConvergenceError(
         f"mass-conserving orbit step did not balance the load after {MAX_HALVINGS} halvings "
         f"(force residual {residual:.3g} N of a {size - 1.0:.3g} N load); {advice}",

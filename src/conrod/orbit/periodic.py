@@ -12,14 +12,19 @@ ended but at the Anderson extrapolation of the cycle-to-cycle map
 (:mod:`conrod.orbit.acceleration`) on the state at φ = 0 (position and velocity scaled by
 c and c ω; the position alone for the massless orbit, whose velocity follows from it).
 Only while the plainly repeated cycles converge slowly (the periodicity error falling by
-less than 20× per cycle); not for a film whose memory is a film content (it would have to
-be extrapolated too), nor across a contact at φ = 0.
+less than 20× per cycle); not across a contact at φ = 0. A film whose memory is a
+transported content (mass-conserving) joins its film fraction ϑ to the mixed state
+(weighted so that its root mean square counts as one component): the content is the slow
+part of such an orbit, and a start that moved the journal but kept the old content
+would not be a point of the cycle map.
 
 Periodicity error of cycle k: max over the output angles of |e_k(φ) − e_{k−1}(φ)|/c [-]
 (for a cycle repeated from where the last one ended: it is then the last cycle's
 closure seen along the whole cycle). A cycle from an extrapolated start is measured by its
 own closure, max(|e_k(end) − e_k(0)|/c, |ė_k(end) − ė_k(0)|/(c ω)) (position only for
-the massless orbit): the previous cycle started elsewhere and says nothing about it.
+the massless orbit; with a film content also the root mean square of the change of the
+film fraction over the cycle): the previous cycle started elsewhere and says nothing
+about it.
 The orbit is periodic when it is at most ``[solver] periodicity_tolerance``; if it is not
 after ``max_cycles``, the result says so (``periodic = False`` plus a warning) instead of
 returning silently.
@@ -35,6 +40,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from conrod import registry
+from conrod.film.capabilities import HasMixableContent
 from conrod.orbit.acceleration import AndersonMixing
 from conrod.orbit.integrators import Integrator
 from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
@@ -86,13 +92,18 @@ def cycle_difference(a: CycleTrajectory, b: CycleTrajectory, clearance: float) -
 
 
 def cycle_closure(start: OrbitState, end: OrbitState, problem: OrbitProblem,
-                  with_mass: bool) -> float:
-    """How far one cycle is from closing on itself: max(|e_end − e_0|/c, and with mass
-    |ė_end − ė_0|/(c ω)) [-]."""
+                  with_mass: bool, content: HasMixableContent | None = None) -> float:
+    """How far one cycle is from closing on itself: max(|e_end − e_0|/c, with mass
+    |ė_end − ė_0|/(c ω), with a ``content`` film the root mean square of the change of its
+    film fraction ϑ) [-]."""
     c, w = problem.clearance, problem.crank_speed
     closure = math.hypot(end.x - start.x, end.y - start.y) / c
     if with_mass:
         closure = max(closure, math.hypot(end.vx - start.vx, end.vy - start.vy) / (c * w))
+    if content is not None and start.film_memory is not None and end.film_memory is not None:
+        change = (content.content_vector(end.film_memory)
+                  - content.content_vector(start.film_memory))
+        closure = max(closure, float(np.sqrt(np.mean(change**2))))
     return closure
 
 
@@ -122,7 +133,8 @@ def periodic_orbit(
         with reporting(None if on_angle is None else functools.partial(on_angle, cycle)):
             current = integrate_cycle(problem, state, settings, chosen)
         if extrapolated:
-            error = cycle_closure(state, current.end_state, problem, mixing.with_mass)
+            error = cycle_closure(state, current.end_state, problem, mixing.with_mass,
+                                  mixing.content)
         elif previous is not None:
             error = cycle_difference(current, previous, problem.clearance)
         history.append(error)
@@ -138,14 +150,17 @@ def periodic_orbit(
 
 def _mixing(problem: OrbitProblem, chosen: Integrator, settings) -> _Mixing | None:
     """The Anderson mixing of this run, None when it is off or cannot apply."""
-    if not getattr(settings, "accelerate_cycles", False) or problem.has_film_content:
+    mixable = isinstance(problem.film, HasMixableContent)
+    if not getattr(settings, "accelerate_cycles", False) or (problem.has_film_content
+                                                              and not mixable):
         return None
     from conrod.orbit.integrators import AutomaticIntegrator, QuasiStaticIntegrator
 
     if isinstance(chosen, AutomaticIntegrator):
         chosen = chosen.choose(problem)
     limit = MIXING_LIMIT * problem.contact_radius / problem.clearance
-    return _Mixing(AndersonMixing(limit), not isinstance(chosen, QuasiStaticIntegrator))
+    return _Mixing(AndersonMixing(limit), not isinstance(chosen, QuasiStaticIntegrator),
+                   problem.film if problem.has_film_content else None)
     # an integrator object of unknown kind is treated as one with mass
 
 
@@ -153,6 +168,28 @@ def _mixing(problem: OrbitProblem, chosen: Integrator, settings) -> _Mixing | No
 class _Mixing:
     anderson: AndersonMixing
     with_mass: bool
+    content: HasMixableContent | None = None
+    """The film whose content joins the mixed state (None: position and velocity only)."""
+
+    def pack(self, state: OrbitState, scale: np.ndarray) -> np.ndarray:
+        """Scaled state of the mixing: position (and velocity), then the film content
+        weighted by 1/√n (its root mean square counts as one component)."""
+        values = np.array([state.x, state.y, state.vx, state.vy])[:scale.size] / scale
+        if self.content is None:
+            return values
+        content = self.content.content_vector(state.film_memory)
+        return np.concatenate([values, content / math.sqrt(content.size)])
+
+    def unpack(self, proposal: np.ndarray, end: OrbitState, scale: np.ndarray) -> OrbitState:
+        """``end`` moved to the extrapolated ``proposal`` (content included)."""
+        values = np.array([end.x, end.y, end.vx, end.vy])
+        values[:scale.size] = proposal[:scale.size] * scale
+        memory = end.film_memory
+        if self.content is not None:
+            content = proposal[scale.size:] * math.sqrt(proposal.size - scale.size)
+            memory = self.content.with_content(memory, content)
+        return replace(end, x=float(values[0]), y=float(values[1]), vx=float(values[2]),
+                       vy=float(values[3]), film_memory=memory)
 
 
 def _slow(history: list[float]) -> bool:
@@ -171,18 +208,14 @@ def _next_start(mixing: _Mixing | None, start: OrbitState, end: OrbitState,
     if start.in_contact or end.in_contact:
         mixing.anderson.reset()
         return end, False
+    if mixing.content is not None and (start.film_memory is None or end.film_memory is None):
+        return end, False
     c, w = problem.clearance, problem.crank_speed
-    size = 4 if mixing.with_mass else 2
-    scale = np.array([c, c, c * w, c * w])[:size]
-    proposal = mixing.anderson.propose(
-        np.array([start.x, start.y, start.vx, start.vy])[:size] / scale,
-        np.array([end.x, end.y, end.vx, end.vy])[:size] / scale)
+    scale = np.array([c, c, c * w, c * w])[:4 if mixing.with_mass else 2]
+    proposal = mixing.anderson.propose(mixing.pack(start, scale), mixing.pack(end, scale))
     if proposal is None or not slow:
         return end, False
-    values = np.array([end.x, end.y, end.vx, end.vy])
-    values[:size] = proposal * scale
-    return replace(end, x=float(values[0]), y=float(values[1]), vx=float(values[2]),
-                   vy=float(values[3])), True
+    return mixing.unpack(proposal, end, scale), True
 
 
 def _implicit(chosen: Integrator, problem: OrbitProblem) -> bool:
