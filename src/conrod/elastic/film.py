@@ -313,6 +313,20 @@ class ElasticFilm(FilmWrapper):
         return (float(outcome.velocity[0]), float(outcome.velocity[1]),
                 outcome.force_residual, after)
 
+    # ------------------------------------------------------ journal with mass
+    def supports_mass_step(self) -> bool:
+        """True when the orbit with mass can step this film: the exact film response
+        (isoviscous Reynolds film, :mod:`conrod.elastic.mass_step`) [-]."""
+        return self.exact
+
+    def mass_step(self, request, memory: ElasticMemory, previous: ElasticMemory | None = None,
+                  extra_force=None):
+        """One implicit step of the journal with mass, bore and end velocity solved together
+        (:func:`conrod.elastic.mass_step.mass_step`)."""
+        from conrod.elastic.mass_step import mass_step
+
+        return mass_step(self, request, memory, previous, extra_force)
+
     # ---------------------------------------------------------------- coupling
     def _static_memory(self) -> ElasticMemory:
         settings = self.settings
