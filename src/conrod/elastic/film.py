@@ -87,6 +87,8 @@ class ElasticMemory:
     reference_dt : float  Time from that angle to the current one [s].
     clocked : bool  The crank angle comes with every force balance (massless orbit);
         False: it is advanced by ω dt in :meth:`ElasticFilm.advance_memory`.
+    acceleration : ndarray or None  Journal acceleration (2,) at the end of an implicit step
+        of the orbit with mass [m/s²] (:mod:`conrod.elastic.mass_step`); None otherwise.
     """
 
     inner: Any
@@ -101,6 +103,7 @@ class ElasticMemory:
     reference: np.ndarray | None = None
     reference_dt: float = 0.0
     clocked: bool = False
+    acceleration: np.ndarray | None = None
 
 
 @dataclass(frozen=True)

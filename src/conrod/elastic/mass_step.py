@@ -131,7 +131,8 @@ def mass_step(film, request: MassStepRequest, memory, previous=None,
         np.asarray(request.load, dtype=float), inertia, operator, c,
         c * max(film.crank_speed, 1e-3), film._coupling.tolerance,
         5 * settings.max_iterations, settings.increment_share,
-        chord=_chord(film, share > 0.0))
+        chord=_chord(film, share > 0.0),
+        travel=-tau * _trig(film))
     payload: PressureEvaluation = outcome.payload
     after = dataclasses.replace(
         at_end, inner=payload.memory(), deformation=outcome.deformation,
@@ -140,6 +141,8 @@ def mass_step(film, request: MassStepRequest, memory, previous=None,
         deformation_rate=float(np.max(np.abs(outcome.deformation - memory.deformation)))
         / request.dt)
     velocity = np.asarray(outcome.velocity, dtype=float)
+    after = dataclasses.replace(after, acceleration=(velocity - request.velocity_reference)
+                                / tau)
     scale = float(np.hypot(*request.load)) + 1.0
     return MassStepOutcome(velocity, request.position_reference + tau * velocity, after,
                            outcome.force_residual * scale, outcome.converged)
@@ -153,11 +156,16 @@ def _chord(film, elastic: bool) -> ChordJacobian:
     return film.chords[key]
 
 
+def _trig(film) -> np.ndarray:
+    """(cos θ_j, sin θ_j) of the bore nodes (n, 2) [-]."""
+    return np.stack([np.cos(film.housing.angles), np.sin(film.housing.angles)], axis=1)
+
+
 def _responder(film, tau: float, mass: np.ndarray):
     """payload → the step's exact response: ∂/∂u of the film (rate over τ included) and
     ∂/∂v through the end position and velocity, −τ Σ_j (cos θ_j, sin θ_j) ∂/∂u_j, with
     −m/τ of the inertia term on the force (module docstring)."""
-    trig = np.stack([np.cos(film.housing.angles), np.sin(film.housing.angles)], axis=1)
+    trig = _trig(film)
 
     def respond(payload: PressureEvaluation) -> FilmResponse:
         response = film_response(film.base, payload.state, payload.pressure, film._nodal,
