@@ -17,11 +17,14 @@ Its memory (:class:`ElasticMemory`) travels in the integrator's state through
 of the last solve (the warm start of the next), the crank angle φ [rad] that the inertia
 deformation needs — advanced by ω dt in :meth:`ElasticFilm.advance_memory`, the one hook
 every fixed-step integrator calls after a step — and the coupling diagnostics. Because that
-memory evolves in lock-step with a fixed step, :meth:`initial_history` is not None and the
-error-controlled ``adaptive`` integrator refuses the film; ``quasi_static`` and ``rk2``
-run it. In ``rk2`` the predictor and corrector solves of a step both see φ at the start of
-the step (the inertia deformation lags by at most one step); the massless orbit passes the
-exact φ of each state.
+memory evolves in lock-step with a fixed step, :meth:`initial_history` is not None. The
+massless orbit (``quasi_static``) passes the exact φ of each state to
+:meth:`balance_velocity`; the orbit with mass (``auto``, ``implicit``, ``adaptive``: fixed
+BDF2 steps of :mod:`conrod.orbit.coupled_orbit`) asks :meth:`mass_step` for the end of each
+step, journal velocity and bore solved together (:mod:`conrod.elastic.mass_step`; films
+with the exact response, :meth:`supports_mass_step`). ``rk2`` is refused for those films
+(the bore rate over its short step is too stiff) and runs the others, its predictor and
+corrector solves both seeing φ at the start of the step.
 
 Deformation rate. The squeeze term 12 μ ∂h/∂t includes the bore's rate ∂u/∂t, taken
 backward in time from the deformation at the previous crank angle (:mod:`conrod.elastic.rate`,
