@@ -326,12 +326,12 @@ class ElasticFilm(FilmWrapper):
         return self.exact
 
     def mass_step(self, request, memory: ElasticMemory, previous: ElasticMemory | None = None,
-                  extra_force=None):
+                  extra_force=None, earlier: ElasticMemory | None = None):
         """One implicit step of the journal with mass, bore and end velocity solved together
         (:func:`conrod.elastic.mass_step.mass_step`)."""
         from conrod.elastic.mass_step import mass_step
 
-        return mass_step(self, request, memory, previous, extra_force)
+        return mass_step(self, request, memory, previous, extra_force, earlier)
 
     # ---------------------------------------------------------------- coupling
     def _static_memory(self) -> ElasticMemory:

@@ -89,15 +89,18 @@ def bore_reference(memory, previous, bdf2: bool) -> np.ndarray:
     return (4.0 * memory.deformation - previous.deformation) / 3.0
 
 
-def bore_start(memory, previous) -> np.ndarray:
-    """Start value of u at the end of the step: u_n extrapolated linearly [m]."""
+def bore_start(memory, previous, earlier=None) -> np.ndarray:
+    """Start value of u at the end of the step: u_n extrapolated linearly, or
+    quadratically when ``earlier`` (two steps back) is given [m]."""
     if previous is None:
         return memory.deformation
+    if earlier is not None:
+        return 3.0 * (memory.deformation - previous.deformation) + earlier.deformation
     return 2.0 * memory.deformation - previous.deformation
 
 
 def mass_step(film, request: MassStepRequest, memory, previous=None,
-              extra_force=None) -> MassStepOutcome:
+              extra_force=None, earlier=None) -> MassStepOutcome:
     """The step of ``request`` from the elastic ``film``'s ``memory`` (at the start of the
     step; ``previous``: one step earlier); ``extra_force(x, y)`` an additional force on
     the journal (asperity contact) [N], left out of the Jacobian."""
@@ -125,7 +128,8 @@ def mass_step(film, request: MassStepRequest, memory, previous=None,
         return forces, force, h_min, payload
 
     c = film.base.geometry.radial_clearance
-    start = bore_start(memory, previous) if share > 0.0 else np.zeros_like(memory.deformation)
+    start = (bore_start(memory, previous, earlier) if share > 0.0
+             else np.zeros_like(memory.deformation))
     outcome = newton_balance(
         evaluate, _responder(film, tau, mass), start, np.asarray(request.guess, dtype=float),
         np.asarray(request.load, dtype=float), inertia, operator, c,

@@ -47,9 +47,10 @@ class HasCoupledMassStep(Protocol):
         ...
 
     def mass_step(self, request: Any, memory: Any, previous: Any = None,
-                  extra_force: Any = None) -> Any:
+                  extra_force: Any = None, earlier: Any = None) -> Any:
         """:class:`conrod.elastic.mass_step.MassStepOutcome` of ``request`` from ``memory``
-        (``previous``: the memory one step earlier, for BDF2)."""
+        (``previous``: the memory one step earlier, for BDF2; ``earlier``: two steps
+        earlier, for the start value; ``extra_force(x, y)``: asperity force [N])."""
         ...
 
 
@@ -116,7 +117,10 @@ def _advance(problem: OrbitProblem, phi0: float, phi1: float, start: _Point,
         outcome = None
     if outcome is not None and outcome.converged:
         _check_circle(problem, outcome.position, phi1)
-        behind = _Point(start.position, start.velocity, start.memory)  # no longer chain
+        older = start.before
+        behind = _Point(start.position, start.velocity, start.memory,  # two points kept
+                        None if older is None else _Point(older.position, older.velocity,
+                                                          older.memory))
         return _Point(outcome.position, outcome.velocity, outcome.memory, behind), 1, True
     if depth >= MAX_HALVINGS:
         raise _failure(problem, phi1, outcome)
@@ -159,6 +163,8 @@ def _step(problem: OrbitProblem, phi1: float, dt: float, start: _Point):
         e_ref = (4.0 * start.position - before.position) / 3.0
         v_ref = (4.0 * start.velocity - before.velocity) / 3.0
         guess = 2.0 * start.velocity - before.velocity
+        if before.before is not None:  # quadratic through the last three points
+            guess = 3.0 * (start.velocity - before.velocity) + before.before.velocity
     speeds = problem.loads.speeds(np.array([phi1]))
     request = MassStepRequest(
         position_reference=e_ref, velocity_reference=v_ref, tau=tau, dt=dt,
@@ -166,7 +172,9 @@ def _step(problem: OrbitProblem, phi1: float, dt: float, start: _Point):
         journal_speed=float(speeds[0][0]), shell_speed=float(speeds[1][0]),
         viscosity=problem.viscosity, crank_angle=phi1, guess=guess, bdf2=before is not None)
     previous = before.memory if before is not None else None
-    return problem.film.mass_step(request, start.memory, previous, _asperity(problem))
+    earlier = before.before.memory if before is not None and before.before is not None else None
+    return problem.film.mass_step(request, start.memory, previous, _asperity(problem),
+                                  earlier)
 
 
 def _load(problem: OrbitProblem, phi: float) -> np.ndarray:
