@@ -16,6 +16,8 @@ from conrod.results.ehd import ElasticRunResults
 from conrod.simulation import Simulation
 from elastic_helpers import kamaz_case
 
+LIMIT_STEP_DEG = 0.5
+"""Step of the massless-limit comparison, both orbits [deg]."""
 GRID = {"n_theta": 36, "n_z": 8, "film": "reynolds", "output_step_deg": 4.0}
 
 
@@ -156,14 +158,15 @@ def test_vanishing_mass_approaches_the_massless_elastic_orbit():
     distances = []
     massless = None
     for share in (1.0, 1e-2, 1e-4):
-        problem = _problem(10.0, share, quasi_static_step_deg=0.5, max_step_deg=0.5)
+        problem = _problem(10.0, share, quasi_static_step_deg=LIMIT_STEP_DEG,
+                           max_step_deg=LIMIT_STEP_DEG)
         if massless is None:
-            settings = Simulation(kamaz_case(**{**GRID, "quasi_static_step_deg": 0.5,
+            settings = Simulation(kamaz_case(**{**GRID, "quasi_static_step_deg": LIMIT_STEP_DEG,
                                                 "integrator": "quasi_static"})).solver
             massless = periodic_orbit(problem, settings, integrator="quasi_static")
             reference = np.stack([massless.last.x, massless.last.y], axis=1)
             start = massless.last.end_state
-        cycle = coupled_cycle(problem, start, 0.5, 4.0)
+        cycle = coupled_cycle(problem, start, LIMIT_STEP_DEG, 4.0)
         orbit = np.stack([cycle.x, cycle.y], axis=1)
         distances.append(float(np.max(np.hypot(*(orbit - reference).T))) / problem.clearance)
     assert distances[1] < 0.5 * distances[0]
