@@ -1,13 +1,18 @@
 """Elastohydrodynamic run times: the KamAZ-740 example on the deforming bore.
 
     PYTHONPATH=src python3 benchmarks/ehd_benchmarks.py [--grids 36x8,72x16,144x32]
-        [--stiffening 1] [--step 0.5] [--film reynolds]
+        [--stiffening 1] [--step 0.5] [--film reynolds] [--integrator quasi_static]
 
 Writes benchmarks/ehd_benchmarks.md: per film grid (bore nodes = n_θ), the wall time of the
 elastic periodic run (massless orbit, the case's default 0.5° steps) and of its rigid
 companion, cycles, film solves per step (the corrector's and the next predictor's force
 balance at one crank angle) and h_min / p_max of both. ``--stiffening`` divides the shipped
 rod's compliance and inertia fields (1: the shipped rod itself).
+
+``--integrator implicit`` runs the journal with mass instead (BDF2 steps of the journal and
+the bore together at ``--step`` ≤ 1°, rigid companion by TR-BDF2 with mass) and writes
+benchmarks/ehd_benchmarks_with_mass.md, with the massless elastic run of the same grid
+timed in the same invocation for the ratio.
 """
 
 from __future__ import annotations
@@ -21,7 +26,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def run(n_theta: int, n_z: int, stiffening: float, step: float, film: str) -> dict:
+def run(n_theta: int, n_z: int, stiffening: float, step: float, film: str,
+        integrator: str = "quasi_static", rigid: bool = True) -> dict:
     import tomllib
 
     from conrod.cases.case import Case
@@ -30,22 +36,25 @@ def run(n_theta: int, n_z: int, stiffening: float, step: float, film: str) -> di
 
     examples = ROOT / "examples"
     data = tomllib.loads((examples / "kamaz_740_truck_diesel.toml").read_text())
-    data["solver"] = {"film": film, "integrator": "quasi_static", "n_theta": n_theta,
+    data["solver"] = {"film": film, "integrator": integrator, "n_theta": n_theta,
                       "n_z": n_z, "quasi_static_step_deg": step,
-                      "output_step_deg": max(1.0, step)}
+                      "max_step_deg": min(step, 1.0), "output_step_deg": max(1.0, step)}
     case = Case.from_dict(data, base_dir=examples)
     built = Housing.from_case(case)
     housing = Housing(built.angles, built.radius, built.compliance / stiffening,
                       built.inertia_base / stiffening, built.correction, built.kinematics)
     start = time.perf_counter()
-    results = Simulation(case, housing=housing).run()
+    results = Simulation(case, housing=housing, rigid_companion=rigid).run()
     total = time.perf_counter() - start
     elastic_time = results.info["elastic_wall_time_s"]
+    companion = results.rigid.summary if results.rigid is not None else results.summary
     return {"grid": f"{n_theta}x{n_z}", "film": film, "elastic_s": elastic_time,
             "rigid_s": total - elastic_time, "cycles": results.summary.cycles,
             "solves": float(np.mean(results.columns["coupling_iterations"])),
-            "h_min": (results.rigid.summary.h_min * 1e6, results.summary.h_min * 1e6),
-            "p_max": (results.rigid.summary.p_max * 1e-6, results.summary.p_max * 1e-6)}
+            "h_min": (companion.h_min * 1e6, results.summary.h_min * 1e6),
+            "p_max": (companion.p_max * 1e-6, results.summary.p_max * 1e-6),
+            "h_min_angle": results.summary.h_min_angle_deg
+            if hasattr(results.summary, "h_min_angle_deg") else float("nan")}
 
 
 def main() -> None:
@@ -56,7 +65,11 @@ def main() -> None:
     parser.add_argument("--grids", default="36x8,72x16,144x32")
     parser.add_argument("--step", type=float, default=0.5)
     parser.add_argument("--films", default="reynolds")
+    parser.add_argument("--integrator", default="quasi_static")
     args = parser.parse_args()
+    if args.integrator != "quasi_static":
+        with_mass(args)
+        return
     rows = []
     for film in args.films.split(","):
         for grid in args.grids.split(","):
@@ -80,6 +93,36 @@ def main() -> None:
                      f"{r['cycles']} | {r['solves']:.1f} | {r['h_min'][0]:.3f} / "
                      f"{r['h_min'][1]:.3f} | {r['p_max'][0]:.1f} / {r['p_max'][1]:.1f} |")
     (ROOT / "benchmarks" / "ehd_benchmarks.md").write_text("\n".join(lines) + "\n")
+
+
+def with_mass(args) -> None:
+    """The with-mass table: per grid the elastic run with mass (and its rigid companion
+    with mass) and the massless elastic run of the same grid, in one invocation."""
+    rows = []
+    for grid in args.grids.split(","):
+        n_theta, n_z = (int(v) for v in grid.split("x"))
+        mass = run(n_theta, n_z, args.stiffening, args.step, "reynolds", args.integrator)
+        massless = run(n_theta, n_z, args.stiffening, 0.5, "reynolds", "quasi_static",
+                       rigid=False)
+        rows.append((grid, mass, massless))
+        print(grid, mass, massless, flush=True)
+    rod = "shipped rod" if args.stiffening == 1.0 else f"rod modulus x {args.stiffening:g}"
+    lines = [f"# EHD benchmarks with mass (KamAZ-740, {rod}, Reynolds film)", "",
+             f"Journal with mass: `{args.integrator}` (BDF2 steps of the journal and the bore "
+             f"together, {min(args.step, 1.0):g} deg); rigid companion: the same integrator "
+             "on the rigid bore (TR-BDF2 with mass); massless: `quasi_static`, 0.5 deg, no "
+             "companion. One invocation, same machine state.", "",
+             "| grid | with mass: elastic [s] | rigid [s] | cycles | film solves / step | "
+             "h_min rigid / elastic [µm] | p_max rigid / elastic [MPa] | massless elastic "
+             "[s] | massless h_min [µm] | massless p_max [MPa] |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for grid, m, q in rows:
+        lines.append(
+            f"| {grid} | {m['elastic_s']:.1f} | {m['rigid_s']:.1f} | {m['cycles']} | "
+            f"{m['solves']:.1f} | {m['h_min'][0]:.3f} / {m['h_min'][1]:.3f} | "
+            f"{m['p_max'][0]:.1f} / {m['p_max'][1]:.1f} | {q['elastic_s']:.1f} | "
+            f"{q['h_min'][1]:.3f} | {q['p_max'][1]:.1f} |")
+    (ROOT / "benchmarks" / "ehd_benchmarks_with_mass.md").write_text("\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":

@@ -6,7 +6,8 @@ there (the coupling is already converged, so this is one film solve) and gives:
 * ``coupling_iterations`` — film solves of the couplings on the accepted path of that step
   (the orbit's own trial solves for its Jacobian are not counted) [-];
 * ``force_residual_N`` — |F + W| of the massless force balance (the normal component taken
-  by the contact circle removed); with a moving mass, |F + W − m a| with a from the
+  by the contact circle removed); with a moving mass, |F + W − m a| with a of the
+  implicit step that ended there (orbit with mass on the elastic bore), else from the
   periodic central difference of the output velocities [N];
 * ``deformation_increment_m`` — the last deformation increment max|Δu| of the coupling [m];
 * ``bore_displacement_min_m`` / ``_max_m`` — range of the corrected bore displacement [m];
@@ -66,16 +67,31 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
         columns["deformation_increment_m"][i] = memory.increment
         columns["bore_displacement_min_m"][i] = after.deformation.min()
         columns["bore_displacement_max_m"][i] = after.deformation.max()
-    columns["force_residual_N"] = _force_residual(problem, cycle, force, massless)
+    columns["force_residual_N"] = _force_residual(problem, cycle, force, massless,
+                                                  _step_accelerations(film_memory))
     return ElasticCycle(deformation, np.asarray(film.housing.angles), columns, peak,
                         peak_pressure)
 
 
-def _force_residual(problem, cycle, force: np.ndarray, massless: bool) -> np.ndarray:
-    """|F + W (− m a)| [N], the contact circle's normal reaction removed."""
+def _step_accelerations(film_memory: list) -> np.ndarray | None:
+    """The journal accelerations of the implicit steps that ended at the output angles
+    (n_out, 2) [m/s²], None when the memories do not hold them (massless, rk2)."""
+    values = [getattr(memory, "acceleration", None) for memory in film_memory]
+    if any(value is None for value in values):
+        return None
+    return np.asarray(values, dtype=float)
+
+
+def _force_residual(problem, cycle, force: np.ndarray, massless: bool,
+                    accelerations: np.ndarray | None = None) -> np.ndarray:
+    """|F + W (− m a)| [N], the contact circle's normal reaction removed; ``accelerations``
+    [m/s²] of the steps, else a from the output velocities."""
     rx = force[:, 0] + cycle.load_x
     ry = force[:, 1] + cycle.load_y
-    if not massless:
+    if not massless and accelerations is not None:
+        rx = rx - problem.mass_x * accelerations[:, 0]
+        ry = ry - problem.mass_y * accelerations[:, 1]
+    elif not massless:
         dphi = float(cycle.crank_angle[1] - cycle.crank_angle[0])
         dt = dphi / problem.crank_speed
         ax = (np.roll(cycle.velocity_x, -1) - np.roll(cycle.velocity_x, 1)) / (2 * dt)

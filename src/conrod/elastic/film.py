@@ -17,11 +17,14 @@ Its memory (:class:`ElasticMemory`) travels in the integrator's state through
 of the last solve (the warm start of the next), the crank angle φ [rad] that the inertia
 deformation needs — advanced by ω dt in :meth:`ElasticFilm.advance_memory`, the one hook
 every fixed-step integrator calls after a step — and the coupling diagnostics. Because that
-memory evolves in lock-step with a fixed step, :meth:`initial_history` is not None and the
-error-controlled ``adaptive`` integrator refuses the film; ``quasi_static`` and ``rk2``
-run it. In ``rk2`` the predictor and corrector solves of a step both see φ at the start of
-the step (the inertia deformation lags by at most one step); the massless orbit passes the
-exact φ of each state.
+memory evolves in lock-step with a fixed step, :meth:`initial_history` is not None. The
+massless orbit (``quasi_static``) passes the exact φ of each state to
+:meth:`balance_velocity`; the orbit with mass (``auto``, ``implicit``, ``adaptive``: fixed
+BDF2 steps of :mod:`conrod.orbit.coupled_orbit`) asks :meth:`mass_step` for the end of each
+step, journal velocity and bore solved together (:mod:`conrod.elastic.mass_step`; films
+with the exact response, :meth:`supports_mass_step`). ``rk2`` is refused for those films
+(the bore rate over its short step is too stiff) and runs the others, its predictor and
+corrector solves both seeing φ at the start of the step.
 
 Deformation rate. The squeeze term 12 μ ∂h/∂t includes the bore's rate ∂u/∂t, taken
 backward in time from the deformation at the previous crank angle (:mod:`conrod.elastic.rate`,
@@ -87,6 +90,8 @@ class ElasticMemory:
     reference_dt : float  Time from that angle to the current one [s].
     clocked : bool  The crank angle comes with every force balance (massless orbit);
         False: it is advanced by ω dt in :meth:`ElasticFilm.advance_memory`.
+    acceleration : ndarray or None  Journal acceleration (2,) at the end of an implicit step
+        of the orbit with mass [m/s²] (:mod:`conrod.elastic.mass_step`); None otherwise.
     """
 
     inner: Any
@@ -101,6 +106,7 @@ class ElasticMemory:
     reference: np.ndarray | None = None
     reference_dt: float = 0.0
     clocked: bool = False
+    acceleration: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -312,6 +318,20 @@ class ElasticFilm(FilmWrapper):
             increment=outcome.increment)
         return (float(outcome.velocity[0]), float(outcome.velocity[1]),
                 outcome.force_residual, after)
+
+    # ------------------------------------------------------ journal with mass
+    def supports_mass_step(self) -> bool:
+        """True when the orbit with mass can step this film: the exact film response
+        (isoviscous Reynolds film, :mod:`conrod.elastic.mass_step`) [-]."""
+        return self.exact
+
+    def mass_step(self, request, memory: ElasticMemory, previous: ElasticMemory | None = None,
+                  extra_force=None, earlier: ElasticMemory | None = None):
+        """One implicit step of the journal with mass, bore and end velocity solved together
+        (:func:`conrod.elastic.mass_step.mass_step`)."""
+        from conrod.elastic.mass_step import mass_step
+
+        return mass_step(self, request, memory, previous, extra_force, earlier)
 
     # ---------------------------------------------------------------- coupling
     def _static_memory(self) -> ElasticMemory:

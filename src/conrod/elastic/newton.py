@@ -43,7 +43,8 @@ class ChordJacobian:
 def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance: float,
                    v_scale: float, tolerance: float, max_iterations: int, share: float,
                    with_velocity: bool = True,
-                   chord: ChordJacobian | None = None) -> BalanceOutcome:
+                   chord: ChordJacobian | None = None,
+                   travel: np.ndarray | None = None) -> BalanceOutcome:
     """(u, v) with G = 0 (and F + W = 0 when ``with_velocity``) from (u0 [m], v0 [m/s]).
 
     evaluate : callable  (u, v) → (nodal forces f [N], film force F [N] (2,), h_min [m],
@@ -51,6 +52,10 @@ def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance
     load : W [N] (2,); inertia : λ P U c(φ) [m]; operator : λ P C [m/N];
     tolerance : max|G| accepted [m]; max_iterations : film solves before giving up [-];
     chord : the Jacobian carried from the last call (updated in place), None: fresh.
+    travel : ndarray (n, 2) or None  Film-thickness change at the bore nodes per unit
+        velocity update [s] when the velocity also moves the journal (implicit step of the
+        orbit with mass, −τ (cos θ_j, sin θ_j)): an update then keeps the whole change of the
+        film thickness, max|Δu + travel Δv|, ≤ share h_min; None: no such limit.
     """
     c, n = clearance, len(u0)
     w_scale = float(np.hypot(*load)) + 1.0
@@ -83,6 +88,8 @@ def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance
             chord.builds += 1
         step = -inverse @ r
         step *= _limit(step, n, h_min / c, share, with_velocity)
+        if travel is not None:
+            step *= _travel_limit(step, n, travel * v_scale / c, h_min / c, share)
         norm = float(np.linalg.norm(r))
         best, best_lam, lam = None, 1.0, 1.0
         for _ in range(LINE_SEARCH_CUTS):
@@ -158,3 +165,12 @@ def _limit(step: np.ndarray, n: int, h_min_scaled: float, share: float,
         if largest_v * scale > 10.0:
             scale = 10.0 / largest_v
     return scale
+
+
+def _travel_limit(step: np.ndarray, n: int, travel_scaled: np.ndarray, h_min_scaled: float,
+                  share: float) -> float:
+    """Scale ≤ 1 keeping the change of the film thickness by the bore and the journal
+    together, max|Δu + travel Δv|, ≤ share h_min (Rodin's Δ safeguard on the whole gap)."""
+    change = float(np.max(np.abs(step[:n] + travel_scaled @ step[n:])))
+    allowed = share * max(h_min_scaled, 0.0)
+    return allowed / change if change > allowed and change > 0.0 else 1.0

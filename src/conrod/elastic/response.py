@@ -145,6 +145,10 @@ class PressureEvaluation:
         result.pressure = self.pressure
         return result, ReynoldsMemory(self.pressure)
 
+    def memory(self) -> ReynoldsMemory:
+        """The film memory after the solve (its warm start), without the characteristics."""
+        return ReynoldsMemory(self.pressure)
+
 
 def evaluate_pressure(film: ReynoldsFilm, state, memory: ReynoldsMemory | None
                       ) -> PressureEvaluation:

@@ -14,21 +14,38 @@ from conrod.errors import CaseError
 from conrod.results.ehd import ElasticRunResults
 
 FIXED_STEP_INTEGRATORS = ("auto", "quasi_static", "rk2")
-"""Integrators that run the elastic film: its bore deformation, crank angle and
-deformation rate advance in lock-step with a fixed step (``auto`` picks quasi_static)."""
+"""Integrators that run an elastic film without the exact response (mass-conserving,
+pressure-dependent viscosity): its memory advances in lock-step with a fixed step
+(``auto`` picks quasi_static)."""
+WITH_MASS_INTEGRATORS = ("auto", "implicit", "adaptive")
+"""Integrators that run the journal with mass on the elastic bore: fixed BDF2 steps of the
+journal and the bore together (:mod:`conrod.orbit.coupled_orbit`)."""
 
 
 def check_integrator(simulation) -> None:
-    """CaseError naming the field, before anything runs, for an error-controlled
-    integrator (implicit, adaptive) with an elastic housing."""
+    """CaseError naming the field, before anything runs, for an integrator that cannot
+    run the elastic film: ``rk2`` for the isoviscous Reynolds film (its explicit step of a
+    few hundredths of a degree makes the bore rate in the squeeze term stiff; the implicit
+    steps of :mod:`conrod.orbit.coupled_orbit` run it), ``implicit``/``adaptive`` for a
+    film without the exact response (mass-conserving, pressure-dependent viscosity)."""
     integrator = simulation.integrator()
     name = integrator if isinstance(integrator, str) else integrator.name
-    if name not in FIXED_STEP_INTEGRATORS:
+    with_mass = bool(simulation.film_model().supports_mass_step())
+    allowed = WITH_MASS_INTEGRATORS + ("quasi_static",) if with_mass else (
+        FIXED_STEP_INTEGRATORS)
+    if name in allowed:
+        return
+    if with_mass:
         raise CaseError(
-            f"solver.integrator = {name!r} with an elastic [housing]: the bore deformation "
-            "and its rate advance in lock-step with a fixed step, which an error-controlled "
-            "integrator cannot hold (allowed: quasi_static or auto for the massless journal, "
-            "rk2 for the journal with mass)")
+            f"solver.integrator = {name!r} with an elastic [housing]: its explicit step of "
+            "a few hundredths of a degree makes the bore rate in the squeeze term too stiff "
+            "for the coupling (allowed: implicit, adaptive or auto for the journal with "
+            "mass, quasi_static for the massless journal)")
+    raise CaseError(
+        f"solver.integrator = {name!r} with an elastic [housing]: the "
+        f"{simulation.film_model().base.name} film's memory advances in lock-step with a "
+        "fixed step, which an error-controlled integrator cannot hold (allowed: "
+        "quasi_static or auto for the massless journal, rk2 for the journal with mass)")
 
 
 def elastic_run(simulation, progress=None) -> ElasticRunResults:

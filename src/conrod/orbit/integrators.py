@@ -38,9 +38,13 @@ class AdaptiveIntegrator:
     name: str = "adaptive"
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
-        """One cycle; refuses a film whose content evolves in lock-step with a fixed step."""
+        """One cycle; a film on an elastic bore runs the fixed-step orbit with mass of
+        :mod:`conrod.orbit.coupled_orbit` (steps ≤ ``max_step_deg``); refuses another film
+        whose content evolves in lock-step with a fixed step."""
         from conrod.orbit.adaptive import adaptive_cycle
 
+        if _coupled(problem):
+            return _coupled_cycle(problem, state, settings)
         if problem.has_film_content:
             raise CaseError(
                 f"solver.integrator = 'adaptive': the {problem.film.name} film carries a "
@@ -53,7 +57,8 @@ class AdaptiveIntegrator:
 @dataclass(frozen=True)
 class AutomaticIntegrator:
     """The default: the orbit with mass by ``implicit`` — TR-BDF2 for films without a film
-    content, BDF2 steps of the film content for the mass-conserving film — and the massless
+    content, BDF2 steps of the film content for the mass-conserving film, BDF2 steps of the
+    journal and the bore together for the film on an elastic bore — and the massless
     ``quasi_static`` orbit for another film whose content is transported in lock-step with
     a fixed step."""
 
@@ -61,7 +66,8 @@ class AutomaticIntegrator:
 
     def choose(self, problem: OrbitProblem) -> Integrator:
         """The integrator used for ``problem``."""
-        if problem.has_film_content and not isinstance(problem.film, HasContentStep):
+        if problem.has_film_content and not isinstance(problem.film, HasContentStep) and (
+                not _coupled(problem)):
             return QuasiStaticIntegrator()
         return ImplicitIntegrator()
 
@@ -80,7 +86,9 @@ class ImplicitIntegrator:
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
         """One cycle; a film with a transported content that steps it implicitly
         (mass-conserving) runs the BDF2 orbit with mass of :mod:`conrod.orbit.content_orbit`
-        at the largest step ≤ ``max_step_deg`` that divides ``output_step_deg``."""
+        at the largest step ≤ ``max_step_deg`` that divides ``output_step_deg``; so does a
+        film on an elastic bore, whose bore deformation is solved with the journal's step
+        (:mod:`conrod.orbit.coupled_orbit`)."""
         from conrod.orbit.implicit import implicit_cycle
 
         if problem.has_film_content and isinstance(problem.film, HasContentStep):
@@ -89,6 +97,8 @@ class ImplicitIntegrator:
             output = settings.output_step_deg
             step = output / math.ceil(output / settings.max_step_deg - 1e-9)
             return content_cycle(problem, state, step, output, with_mass=True)
+        if _coupled(problem):
+            return _coupled_cycle(problem, state, settings)
         return implicit_cycle(problem, state, settings)
 
 
@@ -118,3 +128,18 @@ class QuasiStaticIntegrator:
 
         return quasi_static_cycle(problem, state, settings.quasi_static_step_deg,
                                   settings.output_step_deg)
+
+
+def _coupled(problem: OrbitProblem) -> bool:
+    """The film solves its own unknowns (the elastic bore) with the journal's step."""
+    from conrod.orbit.coupled_orbit import coupled_mass_film
+
+    return coupled_mass_film(problem)
+
+
+def _coupled_cycle(problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
+    """One cycle of :func:`conrod.orbit.coupled_orbit.coupled_cycle` at the largest step ≤
+    ``max_step_deg`` that divides ``output_step_deg``."""
+    from conrod.orbit.coupled_orbit import coupled_cycle, coupled_step_deg
+
+    return coupled_cycle(problem, state, coupled_step_deg(settings), settings.output_step_deg)

@@ -113,7 +113,7 @@ class ElasticRunResults:
         iterations = self.columns.get("coupling_iterations")
         if iterations is not None and len(iterations):
             lines["coupling"] = (f"{float(np.mean(iterations)):.1f} film solves per step "
-                                 "(mean, both force balances of the step)")
+                                 "(mean, all force balances of the step)")
         return lines
 
 
