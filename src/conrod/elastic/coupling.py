@@ -25,6 +25,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+CUTS = 4
+"""Halvings of a secant step before the best trial is taken [-]."""
+
 Evaluate = Callable[[np.ndarray], tuple[np.ndarray, float, object]]
 """u [m] → (nodal forces f [N], minimum film thickness h_min [m], film payload)."""
 
@@ -164,3 +167,59 @@ def fixed_point_coupling(evaluate: Evaluate, start: np.ndarray, inertia: np.ndar
             return CouplingOutcome(u, payload, iteration, residual, 0.0, True)
         u = u - relaxation * residual_vector
     return CouplingOutcome(u, payload, max_iterations, residual, 0.0, False)
+
+
+def secant_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.ndarray,
+                    operator: np.ndarray, settings: CouplingSettings, chord) -> CouplingOutcome:
+    """G(u) = 0 from ``start`` [m] by Newton steps whose Jacobian J = I − P C ∂f/∂u comes
+    from ``respond(payload)`` (∂f/∂u of the film on its converged set, N/m; payload as
+    returned by ``evaluate``) and is improved by good Broyden updates along the steps taken:
+    where the film's linearisation misses part of the response (a mass-conserving film's
+    broken-film cells) the secant updates learn it. A step that does not reduce max|G| is
+    refused and the Jacobian rebuilt at the current u; with a fresh Jacobian the step is
+    taken anyway (across a switch of the cavitation set the residual is only piecewise
+    smooth). Converged when max|G| ≤ tolerance or, with a fresh Jacobian, when the Newton
+    correction max|J⁻¹G| — the error left in u — is: a film step that is nearly
+    incompressible in its content makes ∂G/∂u large (10⁵ measured), so G itself cannot fall
+    to the tolerance in floating point while u is already exact to it. ``chord.inverse``
+    carries J⁻¹ to the next call; ``chord.builds`` counts the linearisations."""
+    u = np.array(start, dtype=float)
+    forces, h_min, payload = evaluate(u)
+    solves, increment, fresh, correction = 1, 0.0, False, np.inf
+    g = u - operator @ forces - inertia
+    inverse = chord.inverse if chord.inverse is not None and (
+        chord.inverse.shape[0] == u.size) else None
+    while float(np.max(np.abs(g))) > settings.tolerance and solves < settings.max_iterations:
+        if inverse is None:
+            inverse = np.linalg.inv(np.eye(u.size) - operator @ respond(payload))
+            chord.builds += 1
+            fresh = True
+        step = -inverse @ g
+        if fresh and float(np.max(np.abs(step))) <= settings.tolerance:
+            correction = float(np.max(np.abs(step)))
+            break  # the Newton correction (the error left in u) is within the tolerance
+        step *= _safeguard(step, h_min, settings.increment_share)
+        norm, best = float(np.max(np.abs(g))), None
+        for _ in range(CUTS):  # halve the step until max|G| decreases; else the best trial
+            trial_forces, trial_h, trial_payload = evaluate(u + step)
+            solves += 1
+            trial_g = u + step - operator @ trial_forces - inertia
+            if best is None or np.max(np.abs(trial_g)) < np.max(np.abs(best[1])):
+                best = (step, trial_g, trial_h, trial_payload)
+            if float(np.max(np.abs(trial_g))) < norm or solves >= settings.max_iterations:
+                break
+            step = 0.5 * step
+        step, trial_g, trial_h, trial_payload = best
+        if float(np.max(np.abs(trial_g))) >= norm and not fresh:
+            inverse = None  # a poor secant Jacobian: rebuild here
+            continue
+        hy = inverse @ (trial_g - g)
+        denominator = float(step @ hy)
+        if abs(denominator) > 1e-30 * float(step @ step):
+            inverse = inverse + np.outer(step - hy, step @ inverse) / denominator
+        u, g, h_min, payload = u + step, trial_g, trial_h, trial_payload
+        increment, fresh = float(np.max(np.abs(step))), False
+    chord.inverse = inverse
+    residual = float(np.max(np.abs(g)))
+    return CouplingOutcome(u, payload, solves, residual, increment,
+                           min(residual, correction) <= settings.tolerance)
