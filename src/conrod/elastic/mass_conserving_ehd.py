@@ -35,11 +35,17 @@ import numpy as np
 from conrod.elastic.coupling import CouplingOutcome, secant_coupling
 from conrod.elastic.film import ElasticFilm, ElasticMemory, ElasticSettings
 from conrod.elastic.newton import ChordJacobian
+from conrod.elastic.rate import rated
 from conrod.elastic.response import film_response, nodal_force_weights
 from conrod.errors import ConvergenceError
-from conrod.film.base import FilmState
+from conrod.film.base import FilmResult, FilmState
+from conrod.film.capabilities import solve_film
 from conrod.film.mass_conserving import FilmFields, MassConservingFilm
 from conrod.film.reynolds import ReynoldsFilm
+
+DIFFERENCE_STEP = 1e-8
+"""Forward-difference step of the coupling's Jacobian, share of the clearance [-] (the
+content step's own noise is far below: measured quadratic Newton convergence)."""
 
 
 @dataclass
@@ -85,6 +91,29 @@ class ElasticMassConservingFilm(ElasticFilm):
         self.content_calls = 0
         self.content_solves = 0
         self.content_failures = 0
+
+    def solve_with_memory(self, state: FilmState, memory: ElasticMemory, *,
+                          with_pressure: bool = False) -> tuple[FilmResult, ElasticMemory]:
+        """The film at ``state`` on the bore deformation of a content step's ``memory``
+        (one instantaneous solve with the film fraction of that step and the bore's rate
+        over it in the squeeze term; the coupling was solved by the step), else
+        :meth:`ElasticFilm.solve_with_memory`."""
+        if memory.inner is None or memory.inner.thickness is None or memory.reference is None:
+            return super().solve_with_memory(state, memory, with_pressure=with_pressure)
+        rate = (self._field((memory.deformation - memory.reference) / memory.reference_dt)
+                if self.settings.deformation_rate else None)
+        deformed = rated(state, self._field(memory.deformation), rate)
+        result, inner = solve_film(self.base, deformed, memory.inner, with_pressure=True)
+        result = dataclasses.replace(result, pressure=result.pressure if with_pressure
+                                     else None, extra=dict(result.extra))
+        result.extra.update({
+            "coupling_iterations": float(memory.iterations),
+            "coupling_residual_m": memory.residual,
+            "deformation_increment_m": memory.increment,
+            "bore_displacement_min_m": float(memory.deformation.min()),
+            "bore_displacement_max_m": float(memory.deformation.max()),
+            "deformation_rate_m_per_s": memory.deformation_rate})
+        return result, dataclasses.replace(memory, inner=inner)
 
     def content_step(self, state: FilmState, memory: ElasticMemory, dt: float,
                      warm: ElasticMemory | None = None,
@@ -141,7 +170,8 @@ class ElasticMassConservingFilm(ElasticFilm):
                                  rate_step).nodal_by_bore
 
         return secant_coupling(evaluate, respond, start, inertia, operator, self._coupling,
-                               self.chords["content"])
+                               self.chords["content"], DIFFERENCE_STEP
+                               * self.base.geometry.radial_clearance)
 
     def _content_evaluator(self, state: FilmState, memory: ElasticMemory, dt: float,
                            warm: ElasticMemory | None, previous: ElasticMemory | None):
