@@ -25,6 +25,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+CHORD_CONTRACTION = 0.1
+"""Keep a Jacobian while a step reduces max|G| to at most this share [-]."""
+
 CUTS = 4
 """Halvings of a secant step before the best trial is taken [-]."""
 
@@ -220,7 +223,8 @@ def secant_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.
             inverse = None  # a poor secant Jacobian: rebuild here
             continue
         inverse = _broyden(inverse, step, trial_g - g)
-        exact = exact or (fresh == "response" and reduced > 0.5 * norm)
+        exact = exact or (fresh == "response" and reduced > 0.5 * norm
+                          and difference_step is not None)
         if fresh == "response" and reduced > 0.5 * norm:
             inverse = None  # the film's linearisation is not enough here
         u, g, h_min, payload = u + step, trial_g, trial_h, trial_payload
@@ -265,3 +269,51 @@ def _difference_jacobian(evaluate, u, g, operator, inertia, step: float) -> np.n
         forces = evaluate(shifted)[0]
         jacobian[:, k] = (shifted - operator @ forces - inertia - g) / step
     return jacobian
+
+
+def semismooth_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.ndarray,
+                        operator: np.ndarray, settings: CouplingSettings,
+                        chord) -> CouplingOutcome:
+    """G(u) = 0 from ``start`` [m] by Newton steps with the film's exact ∂f/∂u on the
+    cavitation set of an iterate (``respond(payload)`` [N/m]): a semismooth Newton
+    iteration. The inverse Jacobian ``chord.inverse`` is kept, also from call to call,
+    while a step reduces max|G| to a tenth (chord steps) and rebuilt otherwise
+    (``chord.builds`` counts the builds). A step that does not reduce max|G| is halved (at
+    most :data:`CUTS` trials); with a fresh Jacobian the best trial is then taken (the next
+    Jacobian sees the new set), with an old one the Jacobian is rebuilt first. Rodin's Δ
+    safeguard scales a step whose max|Δu| exceeds a share of h_min. Converged when
+    max|G| ≤ tolerance or, with a fresh Jacobian, the Newton correction max|J⁻¹G| (the
+    error left in u) is. Where the answer sits on a switch of the set the Jacobians of
+    its two sides can send the iterate back and forth; :func:`secant_coupling` then takes
+    over."""
+    u = np.array(start, dtype=float)
+    forces, h_min, payload = evaluate(u)
+    g = u - operator @ forces - inertia
+    solves, increment, fresh = 1, 0.0, False
+    residual, correction = float(np.max(np.abs(g))), np.inf
+    inverse = chord.inverse if chord.inverse is not None and (
+        chord.inverse.shape[0] == u.size) else None
+    while residual > settings.tolerance and solves < settings.max_iterations:
+        if inverse is None:
+            inverse = np.linalg.inv(np.eye(u.size) - operator @ respond(payload))
+            chord.builds += 1
+            fresh = True
+        step = -inverse @ g
+        if fresh and float(np.max(np.abs(step))) <= settings.tolerance:
+            correction = float(np.max(np.abs(step)))
+            break
+        step *= _safeguard(step, h_min, settings.increment_share)
+        step, trial, trial_h, trial_payload, tried = _line_search(
+            evaluate, u, step, residual, operator, inertia)
+        solves += tried
+        reduced = float(np.max(np.abs(trial)))
+        if reduced >= residual and not fresh:
+            inverse = None
+            continue
+        if reduced > CHORD_CONTRACTION * residual:
+            inverse = None
+        u, g, h_min, payload = u + step, trial, trial_h, trial_payload
+        residual, increment, fresh = reduced, float(np.max(np.abs(step))), False
+    chord.inverse = inverse
+    return CouplingOutcome(u, payload, solves, residual, increment,
+                           min(residual, correction) <= settings.tolerance)

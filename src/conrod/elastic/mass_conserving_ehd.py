@@ -32,18 +32,21 @@ from typing import Any
 
 import numpy as np
 
-from conrod.elastic.coupling import CouplingOutcome, secant_coupling
+from conrod.elastic.coupling import CouplingOutcome, secant_coupling, semismooth_coupling
 from conrod.elastic.film import ElasticFilm, ElasticMemory, ElasticSettings
+from conrod.elastic.mass_conserving_response import content_step_response
 from conrod.elastic.newton import ChordJacobian
 from conrod.elastic.rate import rated
-from conrod.elastic.response import film_response, nodal_force_weights
+from conrod.elastic.response import nodal_force_weights
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.capabilities import solve_film
 from conrod.film.mass_conserving import FilmFields, MassConservingFilm
-from conrod.film.reynolds import ReynoldsFilm
 
-DIFFERENCE_STEP = 1e-8
+SEMISMOOTH_SOLVES = 8
+"""Film solves of the semismooth Newton iteration before the secant one takes over [-]."""
+
+DIFFERENCE_STEP: float | None = 1e-8
 """Forward-difference step of the coupling's Jacobian, share of the clearance [-] (the
 content step's own noise is far below: measured quadratic Newton convergence)."""
 
@@ -86,8 +89,8 @@ class ElasticMassConservingFilm(ElasticFilm):
         if self.settings.deformation_rate:
             self.base = with_rate(base)
         self.chords["content"] = ChordJacobian()
-        self._full_film = ReynoldsFilm(base.geometry, n_theta=base.n_theta, n_z=base.n_z)
-        self._nodal = nodal_force_weights(self._full_film, housing.angles, housing.radius)
+        self.chords["secant"] = ChordJacobian()
+        self._nodal = nodal_force_weights(base, housing.angles, housing.radius)
         self.content_calls = 0
         self.content_solves = 0
         self.content_failures = 0
@@ -161,17 +164,29 @@ class ElasticMassConservingFilm(ElasticFilm):
         return fx, fy, after
 
     def _newton(self, evaluate, start, inertia, operator, rate_step) -> CouplingOutcome:
-        """G(u) = 0 by :func:`conrod.elastic.coupling.secant_coupling` with ∂f/∂u of the
-        content step's full-film set: there the step is Reynolds' equation with the capacity
-        term as a squeeze term of rate h/``rate_step`` (:mod:`conrod.elastic.response`);
-        the secant updates add what the broken-film cells contribute."""
-        def respond(payload):
-            return film_response(self._full_film, payload[3], payload[4], self._nodal,
-                                 rate_step).nodal_by_bore
+        """G(u) = 0 by semismooth Newton steps with the exact ∂f/∂u of the content step on
+        its converged cavitation set (:mod:`conrod.elastic.mass_conserving_response`);
+        where these do not settle within :data:`SEMISMOOTH_SOLVES` film solves (an answer
+        on a switch of the set), by the secant iteration with forward-difference Jacobians
+        (:func:`conrod.elastic.coupling.secant_coupling`)."""
+        dx, dz = self.base.spacing()
 
-        return secant_coupling(evaluate, respond, start, inertia, operator, self._coupling,
-                               self.chords["content"], DIFFERENCE_STEP
+        def respond(payload):
+            state, inner = payload[3], payload[2]
+            viscous = 12.0 * state.viscosity * dx * dz / rate_step
+            return content_step_response(self.base.fields(state), inner.pressure,
+                                         inner.fraction, viscous, self._nodal)
+
+        quick = dataclasses.replace(self._coupling, max_iterations=SEMISMOOTH_SOLVES)
+        first = semismooth_coupling(evaluate, respond, start, inertia, operator, quick,
+                                    self.chords["content"])
+        if first.converged:
+            return first
+        then = secant_coupling(evaluate, respond, first.deformation, inertia, operator,
+                               self._coupling, self.chords["secant"],
+                               None if DIFFERENCE_STEP is None else DIFFERENCE_STEP
                                * self.base.geometry.radial_clearance)
+        return dataclasses.replace(then, iterations=first.iterations + then.iterations)
 
     def _content_evaluator(self, state: FilmState, memory: ElasticMemory, dt: float,
                            warm: ElasticMemory | None, previous: ElasticMemory | None):
@@ -186,7 +201,7 @@ class ElasticMassConservingFilm(ElasticFilm):
                                                    before)
             latest[0] = inner
             pressure = self.base.gauge_pressure(inner.pressure, deformed)
-            forces = self.housing.nodal_forces(pressure, self._z)
+            forces = np.sum(self._nodal * pressure, axis=1)
             return forces, float(inner.thickness.min()), (fx, fy, inner, deformed, pressure)
         return evaluate
 
