@@ -181,10 +181,11 @@ def secant_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.
     A new Jacobian comes first from ``respond(payload)`` (∂f/∂u of the film on its converged
     set [N/m]; payload as returned by ``evaluate``); when a step taken with it contracts
     max|G| by less than half — the linearisation misses part of the film's response (a
-    mass-conserving film's broken-film cells) — the next one is built by forward
-    differences of ``difference_step`` [m] along every node (n film solves, not counted
-    in ``settings.max_iterations``). A step that does not reduce max|G| with a carried or
-    secant Jacobian is refused and the Jacobian rebuilt at the current u.
+    mass-conserving film's broken-film cells, or an answer on a switch of its set) — the
+    next one is built once by forward differences of ``difference_step`` [m] along every
+    node (n film solves, not counted in ``settings.max_iterations``). A step that does
+    not reduce max|G| with a carried or secant Jacobian is refused and the Jacobian
+    rebuilt at the current u.
 
     Converged when max|G| ≤ tolerance or, with a fresh Jacobian, when the Newton correction
     max|J⁻¹G| — the error left in u — is: a film step that is nearly incompressible in its
@@ -196,7 +197,7 @@ def secant_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.
     forces, h_min, payload = evaluate(u)
     g = u - operator @ forces - inertia
     solves, updates, increment, correction = 1, 0, 0.0, np.inf
-    fresh, exact = "", False
+    fresh, exact, differenced = "", False, False
     inverse = chord.inverse if chord.inverse is not None and (
         chord.inverse.shape[0] == u.size) else None
     while float(np.max(np.abs(g))) > settings.tolerance and updates < settings.max_iterations:
@@ -204,7 +205,7 @@ def secant_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.
             if exact:
                 jacobian = _difference_jacobian(evaluate, u, g, operator, inertia,
                                                 difference_step)
-                solves += u.size
+                solves, exact, differenced = solves + u.size, False, True
             else:
                 jacobian = np.eye(u.size) - operator @ respond(payload)
             inverse, fresh = np.linalg.inv(jacobian), "exact" if exact else "response"
@@ -224,7 +225,7 @@ def secant_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.
             continue
         inverse = _broyden(inverse, step, trial_g - g)
         exact = exact or (fresh == "response" and reduced > 0.5 * norm
-                          and difference_step is not None)
+                          and difference_step is not None and not differenced)
         if fresh == "response" and reduced > 0.5 * norm:
             inverse = None  # the film's linearisation is not enough here
         u, g, h_min, payload = u + step, trial_g, trial_h, trial_payload
