@@ -11,9 +11,14 @@ of the step before on its own deformed film, so
 contains the bore's rate ∂u/∂t exactly as the discrete content balance needs it: oil
 squeezed by the bore is conserved like oil squeezed by the journal. At the end of each step
 the bore deformation solves G(u) = u − λP(C f(p(u)) + U c(φ)) = 0 with the pressure of that
-step (:func:`conrod.elastic.coupling.solve_coupling`, warm-started from the trial before
-and, at a new step, from the deformation extrapolated at its last rate); the crank angle φ
-of the step's end is the start's plus ω Δt.
+step, by semismooth Newton steps with the step's exact response on its cavitation set
+(:mod:`conrod.elastic.mass_conserving_response`, :func:`conrod.elastic.coupling.\
+semismooth_coupling`; :func:`~conrod.elastic.coupling.secant_coupling` where the answer sits
+on a switch of that set), warm-started from the trial before and, at a new step, from the
+deformation extrapolated at its last rate; the crank angle φ of the step's end is the
+start's plus ω Δt. A trial of the step without a coupled answer (the film closes, the
+iteration does not settle) returns a NaN force, which the orbit's Newton iteration
+rejects and which makes it halve the step; NaN never reaches a result.
 
 :class:`ElasticMassConservingFilm` declares
 :class:`~conrod.film.capabilities.HasContentStep`, so the orbit integrators take it through
