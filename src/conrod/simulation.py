@@ -143,11 +143,11 @@ class Simulation:
         housing = self.housing()
         if housing is None or not isinstance(film, SupportsDeformation):
             return film
-        from conrod.elastic.film import ElasticFilm
+        from conrod.elastic.mass_conserving_ehd import elastic_film
 
         loads = self.load_cycle()
         settings = dataclasses.replace(coupling_settings(self.case), cycle=loads.cycle)
-        return ElasticFilm(film, housing, loads.crank_speed, settings)
+        return elastic_film(film, housing, loads.crank_speed, settings)
 
     def _named_film(self) -> FilmModel:
         """The film of ``[solver] film`` with the case's pressure–viscosity law."""

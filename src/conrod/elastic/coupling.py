@@ -25,6 +25,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+CHORD_CONTRACTION = 0.1
+"""Keep a Jacobian while a step reduces max|G| to at most this share [-]."""
+
+CUTS = 4
+"""Halvings of a secant step before the best trial is taken [-]."""
+
 Evaluate = Callable[[np.ndarray], tuple[np.ndarray, float, object]]
 """u [m] → (nodal forces f [N], minimum film thickness h_min [m], film payload)."""
 
@@ -164,3 +170,151 @@ def fixed_point_coupling(evaluate: Evaluate, start: np.ndarray, inertia: np.ndar
             return CouplingOutcome(u, payload, iteration, residual, 0.0, True)
         u = u - relaxation * residual_vector
     return CouplingOutcome(u, payload, max_iterations, residual, 0.0, False)
+
+
+def secant_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.ndarray,
+                    operator: np.ndarray, settings: CouplingSettings, chord,
+                    difference_step: float) -> CouplingOutcome:
+    """G(u) = 0 from ``start`` [m] by Newton steps with line search (halving, :data:`CUTS`)
+    and good Broyden updates of J⁻¹ along the steps taken, J = I − P C ∂f/∂u.
+
+    A new Jacobian comes first from ``respond(payload)`` (∂f/∂u of the film on its converged
+    set [N/m]; payload as returned by ``evaluate``); when a step taken with it contracts
+    max|G| by less than half — the linearisation misses part of the film's response (a
+    mass-conserving film's broken-film cells, or an answer on a switch of its set) — the
+    next one is built once by forward differences of ``difference_step`` [m] along every
+    node (n film solves, not counted in ``settings.max_iterations``). A step that does
+    not reduce max|G| with a carried or secant Jacobian is refused and the Jacobian
+    rebuilt at the current u.
+
+    Converged when max|G| ≤ tolerance or, with a fresh Jacobian, when the Newton correction
+    max|J⁻¹G| — the error left in u — is: a film step that is nearly incompressible in its
+    content makes ∂G/∂u large (entries of 700 measured), so G itself need not fall to the
+    tolerance while u is already exact to it. ``chord.inverse`` carries J⁻¹ to the next
+    call; ``chord.builds`` counts the Jacobians built.
+    """
+    u = np.array(start, dtype=float)
+    forces, h_min, payload = evaluate(u)
+    g = u - operator @ forces - inertia
+    solves, updates, increment, correction = 1, 0, 0.0, np.inf
+    fresh, exact, differenced = "", False, False
+    inverse = chord.inverse if chord.inverse is not None and (
+        chord.inverse.shape[0] == u.size) else None
+    while float(np.max(np.abs(g))) > settings.tolerance and updates < settings.max_iterations:
+        if inverse is None:
+            if exact:
+                jacobian = _difference_jacobian(evaluate, u, g, operator, inertia,
+                                                difference_step)
+                solves, exact, differenced = solves + u.size, False, True
+            else:
+                jacobian = np.eye(u.size) - operator @ respond(payload)
+            inverse, fresh = np.linalg.inv(jacobian), "exact" if exact else "response"
+            chord.builds += 1
+        step = -inverse @ g
+        if fresh and float(np.max(np.abs(step))) <= settings.tolerance:
+            correction = float(np.max(np.abs(step)))
+            break  # the Newton correction (the error left in u) is within the tolerance
+        step *= _safeguard(step, h_min, settings.increment_share)
+        norm = float(np.max(np.abs(g)))
+        step, trial_g, trial_h, trial_payload, tried = _line_search(
+            evaluate, u, step, norm, operator, inertia)
+        solves, updates = solves + tried, updates + tried
+        reduced = float(np.max(np.abs(trial_g)))
+        if reduced >= norm and not fresh:
+            inverse = None  # a poor secant Jacobian: rebuild here
+            continue
+        inverse = _broyden(inverse, step, trial_g - g)
+        exact = exact or (fresh == "response" and reduced > 0.5 * norm
+                          and difference_step is not None and not differenced)
+        if fresh == "response" and reduced > 0.5 * norm:
+            inverse = None  # the film's linearisation is not enough here
+        u, g, h_min, payload = u + step, trial_g, trial_h, trial_payload
+        increment, fresh = float(np.max(np.abs(step))), ""
+    chord.inverse = inverse
+    residual = float(np.max(np.abs(g)))
+    return CouplingOutcome(u, payload, solves, residual, increment,
+                           min(residual, correction) <= settings.tolerance)
+
+
+def _line_search(evaluate, u, step, norm, operator, inertia):
+    """Halve ``step`` until max|G| falls below ``norm`` (at most :data:`CUTS` trials);
+    (step, G, h_min, payload, film solves) of the first such trial, else of the best."""
+    best, tried = None, 0
+    for _ in range(CUTS):
+        forces, h_min, payload = evaluate(u + step)
+        tried += 1
+        g = u + step - operator @ forces - inertia
+        if best is None or np.max(np.abs(g)) < np.max(np.abs(best[1])):
+            best = (step, g, h_min, payload)
+        if float(np.max(np.abs(g))) < norm:
+            break
+        step = 0.5 * step
+    return (*best, tried)
+
+
+def _broyden(inverse: np.ndarray, step: np.ndarray, change: np.ndarray) -> np.ndarray:
+    """Good Broyden update of J⁻¹ from the step and the residual change."""
+    hy = inverse @ change
+    denominator = float(step @ hy)
+    if abs(denominator) > 1e-30 * float(step @ step):
+        return inverse + np.outer(step - hy, step @ inverse) / denominator
+    return inverse
+
+
+def _difference_jacobian(evaluate, u, g, operator, inertia, step: float) -> np.ndarray:
+    """J = ∂G/∂u by forward differences of ``step`` [m] along every node."""
+    jacobian = np.empty((u.size, u.size))
+    for k in range(u.size):
+        shifted = u.copy()
+        shifted[k] += step
+        forces = evaluate(shifted)[0]
+        jacobian[:, k] = (shifted - operator @ forces - inertia - g) / step
+    return jacobian
+
+
+def semismooth_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia: np.ndarray,
+                        operator: np.ndarray, settings: CouplingSettings,
+                        chord) -> CouplingOutcome:
+    """G(u) = 0 from ``start`` [m] by Newton steps with the film's exact ∂f/∂u on the
+    cavitation set of an iterate (``respond(payload)`` [N/m]): a semismooth Newton
+    iteration. The inverse Jacobian ``chord.inverse`` is kept, also from call to call,
+    while a step reduces max|G| to a tenth (chord steps) and rebuilt otherwise
+    (``chord.builds`` counts the builds). A step that does not reduce max|G| is halved (at
+    most :data:`CUTS` trials); with a fresh Jacobian the best trial is then taken (the next
+    Jacobian sees the new set), with an old one the Jacobian is rebuilt first. Rodin's Δ
+    safeguard scales a step whose max|Δu| exceeds a share of h_min. Converged when
+    max|G| ≤ tolerance or, with a fresh Jacobian, the Newton correction max|J⁻¹G| (the
+    error left in u) is. Where the answer sits on a switch of the set the Jacobians of
+    its two sides can send the iterate back and forth; :func:`secant_coupling` then takes
+    over."""
+    u = np.array(start, dtype=float)
+    forces, h_min, payload = evaluate(u)
+    g = u - operator @ forces - inertia
+    solves, increment, fresh = 1, 0.0, False
+    residual, correction = float(np.max(np.abs(g))), np.inf
+    inverse = chord.inverse if chord.inverse is not None and (
+        chord.inverse.shape[0] == u.size) else None
+    while residual > settings.tolerance and solves < settings.max_iterations:
+        if inverse is None:
+            inverse = np.linalg.inv(np.eye(u.size) - operator @ respond(payload))
+            chord.builds += 1
+            fresh = True
+        step = -inverse @ g
+        if fresh and float(np.max(np.abs(step))) <= settings.tolerance:
+            correction = float(np.max(np.abs(step)))
+            break
+        step *= _safeguard(step, h_min, settings.increment_share)
+        step, trial, trial_h, trial_payload, tried = _line_search(
+            evaluate, u, step, residual, operator, inertia)
+        solves += tried
+        reduced = float(np.max(np.abs(trial)))
+        if reduced >= residual and not fresh:
+            inverse = None
+            continue
+        if reduced > CHORD_CONTRACTION * residual:
+            inverse = None
+        u, g, h_min, payload = u + step, trial, trial_h, trial_payload
+        residual, increment, fresh = reduced, float(np.max(np.abs(step))), False
+    chord.inverse = inverse
+    return CouplingOutcome(u, payload, solves, residual, increment,
+                           min(residual, correction) <= settings.tolerance)

@@ -11,6 +11,7 @@ import numpy as np
 from conrod import registry
 from conrod.elastic.cycle import elastic_cycle
 from conrod.errors import CaseError
+from conrod.film.capabilities import HasContentStep
 from conrod.results.ehd import ElasticRunResults
 
 FIXED_STEP_INTEGRATORS = ("auto", "quasi_static", "rk2")
@@ -76,8 +77,9 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
         "jacobian_builds": film.jacobian.builds + film.balance_jacobian.builds + sum(
             chord.builds for chord in film.chords.values()),
         "elastic_wall_time_s": elastic_seconds,
-        "deformation_rate_in_squeeze_term": bool(film.settings.deformation_rate
-                                                 and film.base.name == "reynolds"),
+        "deformation_rate_in_squeeze_term": bool(
+            isinstance(film, HasContentStep) or (film.settings.deformation_rate
+                                              and film.base.name == "reynolds")),
     }
     summary = dataclasses.replace(results.summary, wall_time=time.perf_counter() - start)
     return ElasticRunResults(

@@ -15,7 +15,10 @@ with h, a, C at the end of the step, and is solved with ϑ for the Elrod–Adams
 complementarity (p̃ > 0 ⇒ ϑ = 1, ϑ < 1 ⇒ p̃ = 0) by the Ausas sweep
 (:func:`~conrod.film.mass_conserving_kernel.elrod_adams_step`).
 
-The state handed in is the one at the end of the step. With the content of the step
+The state handed in is the one at the end of the step, with its deformation field δ(θ, z)
+when the bore deforms: h^{n+1} includes it and the stored h^n is the deformed film of the
+step before, so the bore's own rate enters the content balance (ϑh)^{n+1} − (ϑh)^n and oil
+is conserved on a moving bore too. With the content of the step
 before, the step is BDF2 (second order, ∂q/∂t ≈ (3q^{n+1} − 4q^n + q^{n−1})/(2Δt)); in
 the full film this is Reynolds' equation with ∂h/∂t of the journal velocity, since
 3h^{n+1} − 4h^n + h^{n−1} = 2Δt ∂h/∂t for a rigid film moved by the same BDF2 step.
@@ -33,7 +36,6 @@ import numpy as np
 
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
-from conrod.film.capabilities import refuse_deformation
 from conrod.film.mass_conserving_kernel import elrod_adams_step
 from conrod.film.mass_conserving_results import axial_weights
 
@@ -52,7 +54,8 @@ def content_step(
     """Film force (F_x, F_y) [N] at the end of a step ``dt`` [s] that starts from the film
     content of ``memory``, and the memory at the end of the step.
 
-    state : FilmState  End of the step; its velocity is the journal velocity there [m/s].
+    state : FilmState  End of the step; its velocity is the journal velocity there [m/s];
+        its ``deformation`` δ(θ, z) [m], when set, is part of h^{n+1}.
     memory : MassConservingMemory  Film fraction ϑ^n (and h^n) at the start of the step.
     warm : MassConservingMemory or None  Start values of ϑ and p̃ for the sweep (an earlier
         trial of the same step); None: those of ``memory``.
@@ -65,7 +68,6 @@ def content_step(
     if film.pressure_viscosity is not None:
         raise ConvergenceError("implicit film-content step: not available with a "
                                "pressure-viscosity law")
-    refuse_deformation(state, film.name)
     f = film.fields(state)
     dx, dz = film.spacing()
     cell = 12.0 * state.viscosity * dx * dz / dt
