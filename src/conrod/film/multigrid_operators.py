@@ -81,10 +81,10 @@ def _first_masked(finest, i, j, di, dj, step):
 @nb.njit(cache=True)
 def cut_stencil(a_east, a_north, mask, symmetric, finest, step):
     """:func:`stencil` of a coarse level whose nodes are every ``step``-th node of the
-    finest grid, with the free boundary where the finest mask puts it: a face whose grid
-    line meets a masked finest node t < ``step`` cells away ends there (zero correction at
-    distance t, Shortley–Weller), its conductance × step/t and no coupling to the node
-    beyond. Sampled masks alone put that boundary up to a coarse cell off."""
+    finest grid, with the free boundary where the finest mask puts it: a face towards a
+    masked coarse neighbour whose grid line meets a masked finest node t < ``step`` cells
+    away ends there (zero correction at distance t, Shortley–Weller), its conductance ×
+    step/t. Sampled masks alone put that boundary up to a coarse cell off."""
     w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, mask, symmetric)
     n, m = a_east.shape
     for i in range(n):
@@ -93,11 +93,13 @@ def cut_stencil(a_east, a_north, mask, symmetric, finest, step):
             if mask[i, j]:
                 continue
             fi, fj = step * i, step * j
-            t_e = _first_masked(finest, fi, fj, 1, 0, step)
-            t_w = _first_masked(finest, fi, fj, -1, 0, step)
-            t_s = _first_masked(finest, fi, fj, 0, -1, step)
+            ip = i + 1 if i + 1 < n else 0
             mid = symmetric and j == m - 2
-            t_n = t_s if mid else _first_masked(finest, fi, fj, 0, 1, step)
+            t_e = _first_masked(finest, fi, fj, 1, 0, step) if mask[ip, j] else step
+            t_w = _first_masked(finest, fi, fj, -1, 0, step) if mask[im, j] else step
+            t_s = _first_masked(finest, fi, fj, 0, -1, step) if mask[i, j - 1] else step
+            t_n = t_s if mid else (_first_masked(finest, fi, fj, 0, 1, step)
+                                   if mask[i, j + 1] else step)
             if t_e == step and t_w == step and t_s == step and t_n == step:
                 continue
             a_e = a_east[i, j] * step / t_e

@@ -8,11 +8,12 @@ One cycle (Brandt & Cryer's projected multigrid in its simplest, correction form
    prolongation, the finite-volume balance of the union of control volumes),
 3. a linear V-cycle (Gauss–Seidel smoothing, ``COARSEST_SWEEPS`` SOR sweeps on the
    coarsest grid) solves the correction with zero correction on masked nodes; coarse
-   conductances come from the film thickness at coinciding nodes (re-discretisation),
-   and a coarse face whose grid line crosses the fine grid's free boundary ends where the
-   fine mask puts it (Shortley–Weller: conductance × 2^k/t for a boundary t fine cells
-   away, :func:`~conrod.film.multigrid_operators.cut_stencil`); the coarse masks and
-   stencils are rebuilt only when the cavitated set moved,
+   conductances come from the film thickness at coinciding nodes (re-discretisation);
+   with ``CUT_LEVELS`` coarse levels or more, a coarse face whose grid line meets the
+   fine grid's free boundary before the masked coarse neighbour ends where the fine mask
+   puts it (Shortley–Weller: conductance × 2^k/t for a boundary t fine cells away,
+   :func:`~conrod.film.multigrid_operators.cut_stencil`); the coarse masks and stencils
+   are rebuilt only when the cavitated set moved,
 4. the prolonged correction is added on the full-film nodes, projected, and
    ``POST_SWEEPS`` projected sweeps follow.
 
@@ -26,7 +27,9 @@ a warm-started cycle converged at 0.50 per cycle (V) or 0.27 (W) against 0.13 wi
 film. Ending the coarse faces at the fine boundary restores the full-film rate (0.12–0.13
 per cycle with the rupture line, V-cycle; warm 288×64 at 1e-12: 15 → 11 cycles, 3.9 →
 2.2 ms), and a V-cycle then beats the W-cycle per unit time (0.124 in 180 µs against
-0.110 in 246 µs per cycle).
+0.110 in 246 µs per cycle). With fewer coarse levels the sampled masks do as well (144×32
+half grid: 0.11 per cycle either way) and the elastic KamAZ-740 orbit at 72×16 makes 3.8 %
+fewer cycles with them, so the cut starts at four coarse levels (288×64 and finer).
 
 Cycles stop when the largest change of one cycle is ≤ tolerance·max|p|, or earlier when
 two successive cycles contracted the change by ρ < ``ESTIMATE_RATE`` and the remaining
@@ -68,6 +71,10 @@ COARSEST_SWEEPS = 8
 ESTIMATE_RATE = 0.5
 """Contraction per cycle below which (in two successive cycles) the remaining error is
 estimated as change·ρ/(1 − ρ) and the cycles stop once that is ≤ tolerance [-]."""
+CUT_LEVELS = 4
+"""Coarse-level count from which the coarse faces are cut at the fine free boundary
+(:func:`~conrod.film.multigrid_operators.cut_stencil`) [-]; below it the sampled masks
+(module docstring)."""
 W_CYCLE_LEVELS = 5
 """Coarse-level count from which the correction is a W-cycle (V below) [-]; above the
 :func:`coarse_levels` limit of 4, so every cycle is a V-cycle (module docstring)."""
@@ -181,8 +188,12 @@ def coarse_operators(mask_fine, coarse_east, coarse_north, symmetric):
     masks = [coarsen(mask_fine, symmetric)]
     for level in range(1, levels):
         masks.append(coarsen(masks[level - 1], symmetric))
-    stencils = [cut_stencil(coarse_east[k], coarse_north[k], masks[k], symmetric, mask_fine,
-                            2 ** (k + 1)) for k in range(levels)]
+    if levels < CUT_LEVELS:
+        stencils = [stencil(coarse_east[k], coarse_north[k], masks[k], symmetric)
+                    for k in range(levels)]
+    else:
+        stencils = [cut_stencil(coarse_east[k], coarse_north[k], masks[k], symmetric,
+                                mask_fine, 2 ** (k + 1)) for k in range(levels)]
     return masks, stencils
 
 
