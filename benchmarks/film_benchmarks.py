@@ -46,9 +46,14 @@ VISCOSITY, SPEED, ECCENTRICITY = 0.02, 200.0, 0.6
 GRIDS = ((72, 16), (144, 32), (288, 64))
 TOLERANCE = 1.0e-7
 """Pressure-iteration tolerance of the rows of the second table (max|Δp|/max|p|) [-]."""
-REYNOLDS_TOLERANCES = (1.0e-7, 1.0e-9, 1.0e-12)
-"""Tolerances of the Reynolds-versus-ROSS table [-]: 1e-12 is what the orbit with mass uses
-(``[solver] film_tolerance``), 1e-9 where the quasi-static orbit's velocity solves end."""
+REYNOLDS_TOLERANCES = {
+    5.0e-7: "implicit orbit with mass: force in Newton (0.5 × relative_tolerance 1e-6)",
+    1.0e-7: "implicit orbit with mass: Jacobian solves",
+    1.0e-9: "quasi-static orbit: accepted velocity solve",
+    1.0e-12: "adaptive orbit, EHD coupling (film_tolerance)",
+}
+"""Multigrid tolerances of the Reynolds-versus-ROSS table [-] and the orbit path that solves
+the film at each with the default ``[solver]`` settings (``docs/film.md``, Speed)."""
 ROSS_REPEATS = 7
 ROUNDS = 3
 """Interleaved rounds of the Reynolds-versus-ROSS table [-]."""
@@ -257,6 +262,14 @@ def time_ross(n_theta: int, n_z: int) -> dict | str:
         return f"ROSS 3.1 not run ({type(error).__name__}: {error})"
 
 
+def _call_with_memory(film: ReynoldsFilm, call: str, state: FilmState, memory):
+    """``solve`` or ``force`` warm-started from ``memory`` (``solve()``/``force()`` alone
+    are cold); returns the memory after the call."""
+    if call == "solve":
+        return film.solve_with_memory(state, memory)[1]
+    return film.force_with_memory(state, memory)[2]
+
+
 def time_reynolds(n_theta: int, n_z: int, tolerance: float, n_cold: int = 7,
                   n_warm: int = 30) -> dict[str, float]:
     """Median CPU time [s] of cold and warm ReynoldsFilm solve() and force() calls."""
@@ -270,12 +283,12 @@ def time_reynolds(n_theta: int, n_z: int, tolerance: float, n_cold: int = 7,
         for _ in range(n_cold):
             film = model()
             start = time.process_time()
-            getattr(film, call)(state_at(0))
+            memory = _call_with_memory(film, call, state_at(0), film.initial_memory())
             cold.append(time.process_time() - start)
         warm = []
-        for k in range(1, n_warm + 1):
+        for k in range(1, n_warm + 1):  # warm: each solve starts from the last field
             start = time.process_time()
-            getattr(film, call)(state_at(k))
+            memory = _call_with_memory(film, call, state_at(k), memory)
             warm.append(time.process_time() - start)
         out[f"{call}_cold"], out[f"{call}_warm"] = float(np.median(cold)), float(np.median(warm))
     result = model().solve(state_at(0))
@@ -329,7 +342,8 @@ def reynolds_versus_ross() -> list[str]:
                 ratio = f"{median / r['solve_cold']:.1f}× / {median / r['solve_warm']:.1f}×"
                 load = f"{r['force']:.0f} / {runs[0]['load']:.0f}"
                 differences.append(abs(runs[0]["load"] / r["force"] - 1.0))
-            rows.append(f"| {grid[0]}×{grid[1]} | {tolerance:g} | {1e3 * r['solve_cold']:.3f} / "
+            rows.append(f"| {grid[0]}×{grid[1]} | {tolerance:g} ({REYNOLDS_TOLERANCES[tolerance]}) "
+                        f"| {1e3 * r['solve_cold']:.3f} / "
                         f"{1e3 * r['solve_warm']:.3f} | {1e3 * r['force_cold']:.3f} / "
                         f"{1e3 * r['force_warm']:.3f} | {ross_text} | {ratio} | {load} |")
             print(rows[-1], flush=True)
@@ -351,7 +365,10 @@ def markdown(rows: list[str], notes: list[str], versus: list[str]) -> str:
             "bearing D = 50 mm, L/D = 0.5, c = 25 µm, ε = 0.6, 200 rad/s, isoviscous; CPU time "
             "per call (medians).", "", "## Reynolds (Swift–Stieber) film and ROSS 3.1", "",
             "Cold = fresh model (nested-grid start), warm = the next 30 calls of a journal "
-            "creeping by 0.002 rad per call. ROSS 3.1: `ross.bearings.fluid_film.pressure.press` "
+            "creeping by 0.002 rad per call, each started from the last field "
+            "(`solve_with_memory` / `force_with_memory`, as the orbit calls the film). The "
+            "tolerances are those the orbit solves the film at with the default `[solver]` "
+            "settings (docs/film.md, Speed). ROSS 3.1: `ross.bearings.fluid_film.pressure.press` "
             f"(finite elements, banded LU), median of {ROSS_REPEATS} solves at the same grid "
             "(n_theta × n_z elements), ε = 0.6 held, one land of 2π − 1e-5 rad whose edge lies "
             "in the cavitated zone (for a land of exactly 360° ROSS drops the circumferential "

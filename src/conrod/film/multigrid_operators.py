@@ -67,6 +67,53 @@ def stencil(a_east: np.ndarray, a_north: np.ndarray, mask: np.ndarray, symmetric
     return w_e, w_w, w_n, w_s, a_p
 
 
+@nb.njit(cache=True, inline="always")
+def _first_masked(finest, i, j, di, dj, step):
+    """Fine cells [-] from finest node (i, j) along (di, dj) to the first masked finest
+    node, at most ``step`` (θ periodic)."""
+    n = finest.shape[0]
+    for t in range(1, step):
+        if finest[(i + t * di) % n, j + t * dj]:
+            return t
+    return step
+
+
+@nb.njit(cache=True)
+def cut_stencil(a_east, a_north, mask, symmetric, finest, step):
+    """:func:`stencil` of a coarse level whose nodes are every ``step``-th node of the
+    finest grid, with the free boundary where the finest mask puts it: a face towards a
+    masked coarse neighbour whose grid line meets a masked finest node t < ``step`` cells
+    away ends there (zero correction at distance t, Shortley–Weller), its conductance ×
+    step/t. Sampled masks alone put that boundary up to a coarse cell off."""
+    w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, mask, symmetric)
+    n, m = a_east.shape
+    for i in range(n):
+        im = i - 1 if i > 0 else n - 1
+        for j in range(1, m - 1):
+            if mask[i, j]:
+                continue
+            fi, fj = step * i, step * j
+            ip = i + 1 if i + 1 < n else 0
+            mid = symmetric and j == m - 2
+            t_e = _first_masked(finest, fi, fj, 1, 0, step) if mask[ip, j] else step
+            t_w = _first_masked(finest, fi, fj, -1, 0, step) if mask[im, j] else step
+            t_s = _first_masked(finest, fi, fj, 0, -1, step) if mask[i, j - 1] else step
+            t_n = t_s if mid else (_first_masked(finest, fi, fj, 0, 1, step)
+                                   if mask[i, j + 1] else step)
+            if t_e == step and t_w == step and t_s == step and t_n == step:
+                continue
+            a_e = a_east[i, j] * step / t_e
+            a_w = a_east[im, j] * step / t_w
+            a_s = a_north[i, j - 1] * step / t_s
+            a_n = a_s if mid else a_north[i, j] * step / t_n
+            a_p[i, j] = a_e + a_w + a_n + a_s
+            w_e[i, j] = a_e / a_p[i, j] if t_e == step else 0.0
+            w_w[i, j] = a_w / a_p[i, j] if t_w == step else 0.0
+            w_s[i, j] = (2.0 if mid else 1.0) * a_s / a_p[i, j] if t_s == step else 0.0
+            w_n[i, j] = a_n / a_p[i, j] if t_n == step and not mid else 0.0
+    return w_e, w_w, w_n, w_s, a_p
+
+
 @nb.njit(cache=True)
 def relax(p, w_e, w_w, w_n, w_s, s, omega, floor, sweeps):
     """``sweeps`` lexicographic (projected) SOR sweeps in place:

@@ -11,8 +11,9 @@ The pressure solves the Reynolds equation of :mod:`conrod.film.base` on a
   (:mod:`conrod.film.reynolds_kernel`).
 
 Speed: a cold solve starts on up to three nested grids (coarse → fine, [D2]);
-a solve given a :class:`ReynoldsMemory` starts from its field (warm start), which is what
-makes a transient orbit cheap. The memory is explicit: the orbit integrator holds it
+a solve given a :class:`ReynoldsMemory` starts from its field (warm start), moved along the
+secant of the last two solves when the memory holds both, which is what makes a transient
+orbit cheap. The memory is explicit: the orbit integrator holds it
 (:class:`~conrod.film.capabilities.HasMemory`); ``solve``/``force`` alone are cold.
 """
 
@@ -32,6 +33,7 @@ from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest
 from conrod.film.characteristics import FilmGrid
 from conrod.film.piezoviscosity import PressureViscosity
+from conrod.film.reynolds_memory import ReynoldsMemory, scaled_state
 from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
 
 FrictionConvention = Literal["full_film", "film_fraction"]
@@ -51,17 +53,6 @@ def optimal_relaxation(grid: FilmGrid) -> float:
     a_z = 1.0 / grid.d_z**2
     rho = (a_theta + a_z * math.cos(math.pi / grid.n_z)) / (a_theta + a_z)
     return 2.0 / (1.0 + math.sqrt(1.0 - rho * rho))
-
-
-@dataclass(frozen=True)
-class ReynoldsMemory:
-    """Warm start of :class:`ReynoldsFilm`: the last converged pressure field.
-
-    pressure : ndarray or None  p(θ, z) on the fine grid [Pa]; None for a cold start
-        (nested coarse-to-fine grids). Never modified in place.
-    """
-
-    pressure: np.ndarray | None = None
 
 
 @dataclass
@@ -193,7 +184,7 @@ class ReynoldsFilm:
         reduced, _ = self._solve_pressure(problem, state, memory)
         pressure = self._physical(reduced, state)
         fx, fy = chars.pressure_force(pressure, self.film_grid, self._force_weights)
-        return fx, fy, ReynoldsMemory(reduced)  # the warm start holds the solved field
+        return fx, fy, self._memory_after(memory, reduced, state)
 
     def sensitivities(self, state: FilmState):
         """Force, stiffness K = −∂F/∂e [N/m] and damping C = −∂F/∂ė [N s/m] from one
@@ -236,7 +227,15 @@ class ReynoldsFilm:
         result = self._characteristics(problem, reduced, pressure, state, info)
         if with_pressure:
             result.pressure = pressure
-        return result, ReynoldsMemory(reduced)
+        return result, self._memory_after(memory, reduced, state)
+
+    def _memory_after(self, memory: ReynoldsMemory, reduced: np.ndarray,
+                      state: FilmState) -> ReynoldsMemory:
+        """The warm start after a solve: the solved (reduced) field, its state and the
+        memory's field as the predictor's previous one."""
+        if not isinstance(memory, ReynoldsMemory):
+            return ReynoldsMemory(reduced)
+        return memory.after(reduced, scaled_state(state, self.geometry.radial_clearance))
 
     def compiled_kernel(self) -> CompiledKernel | None:
         """Booker's squeeze-direction loop (:mod:`conrod.film.reynolds_squeeze`), exact for a
@@ -340,10 +339,13 @@ class ReynoldsFilm:
     def _solve_pressure(self, problem: _Problem, state: FilmState,
                         memory: ReynoldsMemory) -> tuple[np.ndarray, dict]:
         """Converged pressure [Pa] on the fine grid and solver diagnostics."""
-        last = memory.pressure if self.warm_start else None
+        last = None
+        if self.warm_start and memory.pressure is not None:
+            last = (memory.start(scaled_state(state, self.geometry.radial_clearance))
+                    if isinstance(memory, ReynoldsMemory) else memory.pressure)
         warm = last is not None
         if last is not None:
-            pressure = last.copy()
+            pressure = np.maximum(last, problem.cavitation)
             sweeps, change = self._sweep(problem, pressure, state, self.tolerance)
             total = sweeps
         else:
