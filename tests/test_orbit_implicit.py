@@ -208,3 +208,17 @@ def test_constant_load_on_reynolds_film_settles_at_the_steady_point_in_three_cyc
     assert orbit.periodic and orbit.cycles <= 3
     assert eps == pytest.approx(eps_ref, rel=5e-3)
     assert angle == pytest.approx(angle_ref, rel=5e-3)
+
+
+def test_a_failed_free_flight_names_what_to_change_for_the_film():
+    """The piezoviscous Reynolds film on the shipped 2000 rpm case makes the implicit step
+    collapse (force steep in the journal velocity): the message says so and names the
+    isoviscous film, not a tolerance that would not help."""
+    from conrod.film.piezoviscosity import PressureViscosity
+    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.orbit.implicit import _failure_hint
+
+    law = PressureViscosity(law="barus", coefficient=1.5e-8)
+    piezo = ReynoldsFilm(n_theta=12, n_z=4, pressure_viscosity=law)
+    assert "pressure_viscosity = 'none'" in _failure_hint(piezo)
+    assert "relative_tolerance" in _failure_hint(ReynoldsFilm(n_theta=12, n_z=4))

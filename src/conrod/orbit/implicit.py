@@ -52,6 +52,18 @@ STEPS_PER_DEGREE = 2000
 """Most accepted steps per degree of crank angle in a segment before giving up [-]."""
 
 
+def _failure_hint(film) -> str:
+    """What to change when the free flight fails on ``film``."""
+    if getattr(film, "pressure_viscosity", None) is not None:
+        return ("the film's viscosity rises with pressure, so near this angle its force "
+                "changes by orders of magnitude over a small change of the journal velocity "
+                "(rigid bore beyond the pressure-viscosity law's range): check p_max with the "
+                "short film, run the isoviscous film (lubricant.pressure_viscosity = "
+                "'none') or an elastic big end")
+    return ("loosen [solver] relative_tolerance/absolute_tolerance or use "
+            "integrator = 'adaptive'")
+
+
 def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleTrajectory:
     """One cycle from ``state`` at φ = 0; ``settings`` = the ``[solver]`` section."""
     if problem.has_film_content:
@@ -113,6 +125,7 @@ class _FreeFlight:
         self.flight = None
         self.session = phases.session
         self.refresh_rate = 0.0 if self.compiled else PYTHON_REFRESH_RATE
+        self.hint = _failure_hint(problem.film)
         if self.compiled:
             self.segment, self.params = flight_segment(kernel.force), kernel.params
         elif problem.asperity is None and isinstance(problem.film, HasFlightKernel):
@@ -176,8 +189,7 @@ class _FreeFlight:
                     if status == STATUS_NEWTON else "step size collapsed")
             raise ConvergenceError(
                 f"implicit orbit integration: {what} (eccentricity ratio "
-                f"{math.hypot(u_new[0], u_new[1]):.4f}); loosen [solver] "
-                "relative_tolerance/absolute_tolerance or use integrator = 'adaptive'",
+                f"{math.hypot(u_new[0], u_new[1]):.4f}); {self.hint}",
                 where=f"crank angle {math.degrees(phi_new):.2f} deg")
         return status, phi_new, u_new, h, steps, next_out
 
