@@ -9,7 +9,7 @@ import pytest
 from scipy.optimize import brentq
 
 from conrod.orbit import OrbitState, integrate_cycle, periodic_orbit
-from orbit_helpers import SPEED, engine_like_load, load_cycle, short_problem, solver
+from orbit_helpers import SPEED, engine_like_load, geometry, load_cycle, short_problem, solver
 
 
 def _engine_problem(mass=40.0):
@@ -219,6 +219,6 @@ def test_a_failed_free_flight_names_what_to_change_for_the_film():
     from conrod.orbit.implicit import _failure_hint
 
     law = PressureViscosity(law="barus", coefficient=1.5e-8)
-    piezo = ReynoldsFilm(n_theta=12, n_z=4, pressure_viscosity=law)
+    piezo = ReynoldsFilm(geometry(), n_theta=12, n_z=4, pressure_viscosity=law)
     assert "pressure_viscosity = 'none'" in _failure_hint(piezo)
-    assert "relative_tolerance" in _failure_hint(ReynoldsFilm(n_theta=12, n_z=4))
+    assert "relative_tolerance" in _failure_hint(ReynoldsFilm(geometry(), n_theta=12, n_z=4))
