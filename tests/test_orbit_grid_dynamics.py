@@ -209,3 +209,24 @@ def test_in_cycle_reports_do_not_change_the_orbit():
     assert np.all(np.diff(angles) > 0.0) and angles[-1] == pytest.approx(4 * math.pi)
     assert len(angles) == 24
     assert np.array_equal(heard.x, silent.x) and np.array_equal(heard.vy, silent.vy)
+
+
+def test_massless_grid_orbit_reports_its_crank_angle_every_30_degrees():
+    """The massless orbit on a fed grid film (its Python step loop) reports the crank
+    angle in the cycle too (the progress display moves within a cycle), without changing
+    the orbit."""
+    from conrod.film.base import Groove
+
+    fed = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6,
+                          grooves=(Groove(2.0, 2.1, 0.004),), supply_pressure=3e5)
+    problem = short_problem(load_cycle(*engine_like_load(peak=6e3)),
+                            film=ReynoldsFilm(fed, n_theta=24, n_z=8), mass=2.0)
+    start = OrbitState(5e-6, 2e-6, 0.0, 0.0)
+    settings = solver(quasi_static_step_deg=2.0, output_step_deg=2.0)
+    angles: list[float] = []
+    with reporting(angles.append):
+        heard = integrate_cycle(problem, start, settings, "quasi_static")
+    silent = integrate_cycle(problem, start, settings, "quasi_static")
+    assert np.all(np.diff(angles) > 0.0) and len(angles) == 23  # 30°, 60°, …, 690°
+    assert np.allclose(np.diff(angles), math.radians(30.0))
+    assert np.array_equal(heard.x, silent.x) and np.array_equal(heard.y, silent.y)

@@ -36,6 +36,7 @@ import numpy as np
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmState
 from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
 NEWTON_ITERATIONS = 40
@@ -316,8 +317,9 @@ def content_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
     table = np.zeros((n_out, 7))
     memories: list[Any] = [None] * n_out
     last_force = _start_contact_force(problem, state, memory) if contact else 0.0
-    steps = 0
+    steps, reports = 0, AngleReports()
     for k in range(len(phi) - 1):
+        reports.reached(phi[k])
         if k % record_every == 0:
             row = k // record_every
             table[row] = (start.x, start.y, start.vx, start.vy, last_force,

@@ -30,7 +30,7 @@ import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
 from conrod.orbit.problem import OrbitProblem, OrbitState
-from conrod.orbit.progress import REPORT_EVERY_DEG, report_angle
+from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
 MAX_HALVINGS = 4
@@ -87,7 +87,7 @@ def coupled_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
     point = _Point((state.x, state.y), (state.vx, state.vy), memory)
     table = np.zeros((n_out, 7))
     memories: list[Any] = [None] * n_out
-    steps, next_report = 0, math.radians(REPORT_EVERY_DEG)
+    steps, reports = 0, AngleReports()
     for k in range(len(phi) - 1):
         if k % record_every == 0:
             row = k // record_every
@@ -97,9 +97,7 @@ def coupled_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
         steps += taken
         if not whole:
             point.before = None  # BDF2 needs two equal steps: restart by backward Euler
-        if phi[k + 1] >= next_report:
-            report_angle(phi[k + 1])
-            next_report += math.radians(REPORT_EVERY_DEG)
+        reports.reached(phi[k + 1])
     end = OrbitState(float(point.position[0]), float(point.position[1]),
                      float(point.velocity[0]), float(point.velocity[1]), False, point.memory)
     trajectory = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, steps)

@@ -10,6 +10,7 @@ is computed.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -38,3 +39,18 @@ def reporting(hook: Callable[[float], None] | None) -> Iterator[None]:
         yield
     finally:
         _HOOK.reset(token)
+
+
+class AngleReports:
+    """Reports of a fixed-step loop: call :meth:`reached` after each step; it reports
+    the crank angle once every :data:`REPORT_EVERY_DEG` [deg] of the cycle."""
+
+    def __init__(self) -> None:
+        self.next = math.radians(REPORT_EVERY_DEG)
+
+    def reached(self, phi: float) -> None:
+        """The loop has reached crank angle ``phi`` [rad] in the current cycle."""
+        if phi >= self.next:
+            report_angle(phi)
+            step = math.radians(REPORT_EVERY_DEG)
+            self.next = (math.floor(phi / step + 1e-9) + 1) * step

@@ -32,6 +32,7 @@ from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
 from conrod.orbit.content_orbit import content_cycle
 from conrod.orbit.memory import FilmSession
 from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
 
@@ -129,8 +130,9 @@ def quasi_static_cycle(
     x, y, guess = state.x, state.y, (state.vx, state.vy)
     table = np.zeros((n_out, 7))
     memory = [None] * n_out if session.has_memory else None
-    worst, worst_k = 0.0, 0
+    worst, worst_k, reports = 0.0, 0, AngleReports()
     for k in range(len(phi) - 1):
+        reports.reached(phi[k])
         vx, vy, r1 = velocity(x, y, load_x[k], load_y[k], wj[k], wb[k], guess, phi[k])
         contact = math.hypot(x, y) >= rc * (1.0 - 1e-9)
         if contact:

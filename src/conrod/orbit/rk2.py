@@ -21,6 +21,7 @@ from conrod.film.base import FilmState
 from conrod.orbit.contact import contact_acceleration
 from conrod.orbit.memory import FilmSession
 from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
 
@@ -208,7 +209,9 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
             problem.dry_friction, problem.contact_radius, (wj[k] - wb[k]) * radius, contact,
 )
 
+    reports = AngleReports()
     for k in range(n_steps):
+        reports.reached(k * dt * problem.crank_speed)
         ax, ay, pc, pf = acceleration(k, x, y, vx, vy)
         if k % record_every == 0:
             out[k // record_every] = (x, y, vx, vy, pc, pf, float(contact))
