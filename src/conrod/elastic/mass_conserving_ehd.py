@@ -23,7 +23,10 @@ rejects and which makes it halve the step; NaN never reaches a result.
 :class:`ElasticMassConservingFilm` declares
 :class:`~conrod.film.capabilities.HasContentStep`, so the orbit integrators take it through
 the implicit content orbit (:mod:`conrod.orbit.content_orbit`) as they take the rigid film,
-and the stiff-housing limit is the rigid orbit of the same integrator. Between steps (the
+and the stiff-housing limit is the rigid orbit of the same integrator. It also declares
+:class:`~conrod.film.capabilities.HasJointContentStep`: the orbit then hands it the whole
+step, journal velocity and bore deformation in one Newton iteration
+(:mod:`conrod.elastic.mass_conserving_joint`). Between steps (the
 per-angle characteristics) the instantaneous JFO solve sees the bore's rate in its squeeze
 term (:class:`MassConservingWithDeformationRate`).
 """
