@@ -23,7 +23,10 @@ rejects and which makes it halve the step; NaN never reaches a result.
 :class:`ElasticMassConservingFilm` declares
 :class:`~conrod.film.capabilities.HasContentStep`, so the orbit integrators take it through
 the implicit content orbit (:mod:`conrod.orbit.content_orbit`) as they take the rigid film,
-and the stiff-housing limit is the rigid orbit of the same integrator. Between steps (the
+and the stiff-housing limit is the rigid orbit of the same integrator. It also declares
+:class:`~conrod.film.capabilities.HasJointContentStep`: the orbit then hands it the whole
+step, journal velocity and bore deformation in one Newton iteration
+(:mod:`conrod.elastic.mass_conserving_joint`). Between steps (the
 per-angle characteristics) the instantaneous JFO solve sees the bore's rate in its squeeze
 term (:class:`MassConservingWithDeformationRate`).
 """
@@ -99,6 +102,8 @@ class ElasticMassConservingFilm(ElasticFilm):
         self.content_calls = 0
         self.content_solves = 0
         self.content_failures = 0
+        self.joint_calls = 0
+        self.joint_solves = 0
 
     def solve_with_memory(self, state: FilmState, memory: ElasticMemory, *,
                           with_pressure: bool = False) -> tuple[FilmResult, ElasticMemory]:
@@ -167,6 +172,15 @@ class ElasticMassConservingFilm(ElasticFilm):
             deformation_rate=float(np.max(np.abs(outcome.deformation - memory.deformation)))
             / dt, reference=memory.deformation, reference_dt=dt)
         return fx, fy, after
+
+    def joint_content_step(self, memory: ElasticMemory, previous: ElasticMemory | None,
+                           dt: float, **request):
+        """The content step with the journal velocity and the bore deformation solved
+        together by one Newton iteration with the exact Jacobian
+        (:func:`conrod.elastic.mass_conserving_joint.joint_content_step`; keywords there)."""
+        from conrod.elastic.mass_conserving_joint import joint_content_step
+
+        return joint_content_step(self, memory, previous, dt, **request)
 
     def _newton(self, evaluate, start, inertia, operator, rate_step) -> CouplingOutcome:
         """G(u) = 0 by semismooth Newton steps with the exact ∂f/∂u of the content step on

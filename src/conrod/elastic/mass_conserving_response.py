@@ -34,6 +34,23 @@ def content_step_response(fields, pressure: np.ndarray, fraction: np.ndarray,
     of the deformed end state); ``capacity_per_thickness`` K/h = κ 12μΔxΔz/Δt
     [Pa m]; ``nodal`` W (n, n_z + 1) [m²] from
     :func:`conrod.elastic.response.nodal_force_weights`."""
+    d_pressure = pressure_by_bore(fields, pressure, fraction, capacity_per_thickness)
+    return np.einsum("rjk,jk->jr", d_pressure, nodal)
+
+
+def force_by_bore(d_pressure: np.ndarray, line_weights: np.ndarray,
+                  cos_theta: np.ndarray, sin_theta: np.ndarray, radius: float) -> np.ndarray:
+    """∂F/∂u (2 × n) [N/m] of the film force F = −R Δθ Σ_i (cos θ_i, sin θ_i) Σ_k w_k p_ik
+    from ∂p/∂u (n, n_θ, n_z + 1) [Pa/m]; ``line_weights`` w_k the axial quadrature [m]."""
+    line = d_pressure @ line_weights  # (n_bore, n_θ)
+    factor = -radius * 2.0 * np.pi / cos_theta.size
+    return factor * np.stack([line @ cos_theta, line @ sin_theta])
+
+
+def pressure_by_bore(fields, pressure: np.ndarray, fraction: np.ndarray,
+                     capacity_per_thickness: float) -> np.ndarray:
+    """∂p/∂u_r (n, n_θ, n_z + 1) [Pa/m] of the content step on its converged cavitation
+    set (module docstring); zero on the cells at the cavitation pressure."""
     forward = bool(fields.couette_east[0, fields.h.shape[1] // 2] >= 0.0)
     free = fields.free
     full = free & (pressure > 0.0)
@@ -44,16 +61,16 @@ def content_step_response(fields, pressure: np.ndarray, fraction: np.ndarray,
     matrix = _unknown_matrix(fields, full, partial, index, capacity_per_thickness, forward)
     rows = _bore_derivatives(fields, pressure, fraction, capacity_per_thickness, forward)
     right = -rows[:, unknown]  # (n_bore, n_unknown)
-    factor = splu(matrix.tocsc())
     n_bore = rows.shape[0]
     d_pressure = np.zeros((n_bore,) + pressure.shape)
+    if right.shape[1] == 0:
+        return d_pressure
+    solved = splu(matrix.tocsc()).solve(np.ascontiguousarray(right.T))  # all columns at once
     full_of_unknown = full[unknown]
     nodes = np.nonzero(unknown)
-    for r in range(n_bore):
-        solved = factor.solve(np.ascontiguousarray(right[r]))
-        d_pressure[r, nodes[0][full_of_unknown], nodes[1][full_of_unknown]] = (
-            solved[full_of_unknown])
-    return np.einsum("rjk,jk->jr", d_pressure, nodal)
+    d_pressure[:, nodes[0][full_of_unknown], nodes[1][full_of_unknown]] = (
+        solved[full_of_unknown].T)
+    return d_pressure
 
 
 def _unknown_matrix(fields, full, partial, index, kappa: float, forward: bool):

@@ -12,6 +12,8 @@ declares what its inner model declares by delegating the methods.
   (:func:`refuse_deformation`), never ignore it;
 * :class:`HasContentStep` — an implicit (BDF2 / backward Euler) step of a transported film
   content (mass-conserving film), the orbit's step for films with content;
+* :class:`HasJointContentStep` — that step with the journal's end velocity solved together
+  with the film's own inner unknowns (the bore deformation of an elastic film);
 * :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
   integrator's Newton matrix);
 * :class:`HasFlightKernel` — a compiled force and Jacobian with a warm start that the
@@ -143,6 +145,25 @@ class HasContentStep(Protocol):
         memory at the end of the step; ``warm``: start values from an earlier trial;
         ``previous``: the memory one step earlier (second-order BDF2 step), None: backward
         Euler."""
+        ...
+
+
+@runtime_checkable
+class HasJointContentStep(Protocol):
+    """A film with a content step that solves the journal's end velocity together with its
+    own inner unknowns (a deforming bore) in one Newton iteration with the exact Jacobian:
+    the content orbit hands it the whole force balance of a step instead of iterating on
+    the velocity around it."""
+
+    def joint_content_step(self, memory: Any, previous: Any, dt: float, *,
+                           position_reference: Any, velocity_reference: Any, tau: float,
+                           mass: Any, load: Any, speeds: Any, viscosity: float, guess: Any,
+                           force_tolerance: float) -> Any:
+        """The step from ``memory`` whose end position is e_r + τ v and end acceleration
+        (v − v_r)/τ (e_r ``position_reference`` [m], v_r ``velocity_reference`` [m/s],
+        τ ``tau`` [s]) balancing ``load`` W [N] with ``mass`` [kg]; returns an object with
+        ``velocity`` [m/s], ``memory``, ``force_residual`` |F + W − m a|/(|W| + 1 N) [-]
+        and ``converged``, or None when the film cannot take the step this way."""
         ...
 
 

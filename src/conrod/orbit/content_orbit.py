@@ -35,6 +35,7 @@ import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmState
+from conrod.film.capabilities import HasJointContentStep
 from conrod.orbit.problem import OrbitProblem, OrbitState
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
@@ -151,6 +152,10 @@ class _Balance:
         :data:`CHORD_CONTRACTION` per iteration (chord iteration), else recomputed."""
         v, _ = self._admissible(start, start.predicted_velocity(), dt)
         size = math.hypot(*load) + 1.0
+        if isinstance(self.film, HasJointContentStep) and self.problem.asperity is None:
+            joint = self._joint(start, v, load, speeds, dt)
+            if joint is not None:
+                return joint
         r, warm = self.residual(start, v, load, speeds, dt, None)
         norm, damping, blocked = float(np.hypot(*r)), 1e-9, False
         kind = ("free", dt, start.before is None)
@@ -183,6 +188,33 @@ class _Balance:
         x1, y1 = start.position(v, dt)
         return _Step(x1, y1, float(v[0]), float(v[1]), warm, 0.0, False, norm / size,
                      norm <= ACCEPTED_RESIDUAL * size)
+
+    def _joint(self, start: _Start, guess, load, speeds, dt) -> _Step | None:
+        """The step by the film's joint Newton iteration (end velocity and the film's inner
+        unknowns together, :class:`~conrod.film.capabilities.HasJointContentStep`); None
+        when it does not converge inside the contact circle (the orbit's own iteration
+        then takes the step)."""
+        b = start.before
+        if b is None:
+            tau, position, velocity = dt, (start.x, start.y), (start.vx, start.vy)
+        else:
+            tau = dt / 1.5
+            position = ((2.0 * start.x - 0.5 * b.x) / 1.5, (2.0 * start.y - 0.5 * b.y) / 1.5)
+            velocity = ((2.0 * start.vx - 0.5 * b.vx) / 1.5,
+                        (2.0 * start.vy - 0.5 * b.vy) / 1.5)
+        done = self.film.joint_content_step(
+            start.memory, b.memory if b is not None else None, dt,
+            position_reference=np.array(position), velocity_reference=np.array(velocity),
+            tau=tau, mass=self.mass, load=np.array(load), speeds=speeds,
+            viscosity=self.problem.viscosity, guess=guess, force_tolerance=RELATIVE_RESIDUAL)
+        if done is None or not done.converged:
+            return None
+        v = done.velocity
+        x1, y1 = start.position(v, dt)
+        if math.hypot(x1, y1) > self.radius:
+            return None
+        return _Step(x1, y1, float(v[0]), float(v[1]), done.memory, 0.0, False,
+                     done.force_residual, True)
 
     def _descent(self, start: _Start, v, r, norm, jac, damping, load, speeds, dt, warm,
                  tries: int):
