@@ -45,3 +45,17 @@ def lame_bore_displacement(inner: float, outer: float, pressure: float, youngs: 
     a_coefficient = -pressure * (1.0 - poisson**2) / (
         youngs * ((1.0 + poisson) + (1.0 - poisson) * outer**2 / inner**2))
     return a_coefficient * (inner - outer**2 / inner)
+
+
+WINKLER_SETTINGS = {"rigid_start": 0.0, "ramp": np.radians(90.0)}
+"""Elastic coupling settings of the Winkler-bore tests: no rigid start, 90° ramp [rad]."""
+
+
+def winkler_housing(geometry, n_theta: int, bedding: float):
+    """A Winkler bore of ``n_theta`` nodes: node j moves out by ``bedding`` [m/N] × its
+    nodal force, no inertia field, no rigid-body correction."""
+    from conrod.elastic.housing import Housing
+
+    theta = 2 * np.pi * np.arange(n_theta) / n_theta
+    return Housing(theta, geometry.radius, bedding * np.eye(n_theta), np.zeros((n_theta, 4)),
+                   correction="none")

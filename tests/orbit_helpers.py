@@ -53,3 +53,25 @@ def engine_like_load(peak: float = 2.0e4, base: float = 2.0e3):
         return base * np.sin(phi)
 
     return load_x, load_y
+
+
+def fed_bearing_problem(bearing: dict, model, viscosity: float) -> OrbitProblem:
+    """A random-plausible fed big end (``bearing``: bore, width_ratio, rpm, clearance,
+    supply, unit_load in SI units): central groove fed at the supply pressure, a four-stroke
+    load (firing pulse on a rotating inertia load), film ``model`` on a 36×8 grid."""
+    from conrod.film.base import Groove
+
+    width = bearing["width_ratio"] * bearing["bore"]
+    fed = BearingGeometry(diameter=bearing["bore"], width=width,
+                          radial_clearance=bearing["clearance"],
+                          grooves=(Groove(width=0.1 * width),),
+                          supply_pressure=bearing["supply"])
+    omega = bearing["rpm"] * math.pi / 30.0
+    phi = np.linspace(0.0, 4 * math.pi, 144, endpoint=False)
+    peak = bearing["unit_load"] * bearing["bore"] * width
+    firing = np.exp(-(((phi + math.pi) % (4 * math.pi) - math.pi) / 0.3) ** 2)
+    loads = LoadCycle(phi, peak * firing - 0.3 * peak * np.cos(phi),
+                      -0.12 * peak * np.sin(phi), np.full(144, omega), np.zeros(144), omega,
+                      4 * math.pi)
+    return OrbitProblem(model(fed, n_theta=36, n_z=8, tolerance=1e-10), loads, viscosity,
+                        1.0, 1.0, 0.1, 0.05 * bearing["clearance"])

@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 
 from conrod.elastic.film import ElasticSettings
-from conrod.elastic.housing import Housing
 from conrod.elastic.mass_conserving_ehd import ElasticMassConservingFilm, elastic_film
 from conrod.film.capabilities import HasContentStep
 from conrod.film.mass_conserving import MassConservingFilm
 from conrod.film.reynolds import ReynoldsFilm
+from elastic_helpers import WINKLER_SETTINGS, winkler_housing
 from test_orbit_jfo import OMEGA, fed_bearing, orbit
 
 N_THETA = 24
@@ -24,10 +24,8 @@ BEDDING = 2e-9  # [m/N] Winkler bore: node j moves out by BEDDING × its nodal f
 def _film(bedding: float) -> ElasticMassConservingFilm:
     geometry = fed_bearing()
     base = MassConservingFilm(geometry, n_theta=N_THETA, n_z=4)
-    theta = 2 * np.pi * np.arange(N_THETA) / N_THETA
-    housing = Housing(theta, geometry.radius, bedding * np.eye(N_THETA),
-                      np.zeros((N_THETA, 4)), correction="none")
-    settings = ElasticSettings(cycle=2 * math.pi, rigid_start=0.0, ramp=math.radians(90))
+    housing = winkler_housing(geometry, N_THETA, bedding)
+    settings = ElasticSettings(cycle=2 * math.pi, **WINKLER_SETTINGS)
     return elastic_film(base, housing, OMEGA, settings)
 
 

@@ -8,8 +8,8 @@ import math
 import numpy as np
 
 from conrod.elastic.film import ElasticFilm, ElasticSettings
-from conrod.elastic.housing import Housing
 from conrod.film.mass_conserving import MassConservingFilm
+from elastic_helpers import WINKLER_SETTINGS, winkler_housing
 from test_orbit_jfo import OMEGA, fed_bearing, orbit
 
 N_THETA = 24
@@ -28,10 +28,8 @@ def test_jfo_on_a_deforming_bore_conserves_oil_like_the_rigid_film():
     2.95 vs 3.88 µm rigid."""
     geometry = fed_bearing()
     base = MassConservingFilm(geometry, n_theta=N_THETA, n_z=4)
-    theta = 2 * np.pi * np.arange(N_THETA) / N_THETA
-    housing = Housing(theta, geometry.radius, BEDDING * np.eye(N_THETA),
-                      np.zeros((N_THETA, 4)), correction="none")
-    settings = ElasticSettings(cycle=2 * math.pi, rigid_start=0.0, ramp=math.radians(90))
+    housing = winkler_housing(geometry, N_THETA, BEDDING)
+    settings = ElasticSettings(cycle=2 * math.pi, **WINKLER_SETTINGS)
     elastic, elastic_cycle, _ = orbit(ElasticFilm(base, housing, OMEGA, settings))
     rigid, rigid_cycle, _ = orbit(base)
     assert elastic.periodic and rigid.periodic

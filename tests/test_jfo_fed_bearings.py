@@ -4,8 +4,6 @@ naming the cause, within a step count tied to the case."""
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -16,9 +14,9 @@ from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import BearingGeometry, Groove
 from conrod.film.mass_conserving import MassConservingFilm
 from conrod.film.reynolds import ReynoldsFilm
-from conrod.loads.cycle import LoadCycle
 from conrod.orbit import OrbitProblem
 from conrod.orbit.periodic import periodic_orbit
+from orbit_helpers import fed_bearing_problem
 
 STEP_DEG = 2.0
 """Quasi-static step and largest step with mass [deg]."""
@@ -38,19 +36,8 @@ bearings = st.fixed_dictionaries({
 
 def _problem(b, film: str) -> OrbitProblem:
     """Four-stroke big-end-like load: firing pulse on a rotating inertia load."""
-    width = b["width_ratio"] * b["bore"]
-    geometry = BearingGeometry(diameter=b["bore"], width=width, radial_clearance=b["clearance"],
-                               grooves=(Groove(width=0.1 * width),), supply_pressure=b["supply"])
-    model = ReynoldsFilm if film == "reynolds" else MassConservingFilm
-    omega = b["rpm"] * math.pi / 30.0
-    phi = np.linspace(0.0, 4 * math.pi, 144, endpoint=False)
-    peak = b["unit_load"] * b["bore"] * width
-    firing = np.exp(-(((phi + math.pi) % (4 * math.pi) - math.pi) / 0.3) ** 2)
-    loads = LoadCycle(phi, peak * firing - 0.3 * peak * np.cos(phi),
-                      -0.12 * peak * np.sin(phi), np.full(144, omega), np.zeros(144), omega,
-                      4 * math.pi)
-    return OrbitProblem(model(geometry, n_theta=36, n_z=8, tolerance=1e-10), loads, 0.01,
-                        1.0, 1.0, 0.1, 0.05 * b["clearance"])
+    return fed_bearing_problem(b, ReynoldsFilm if film == "reynolds" else MassConservingFilm,
+                               0.01)
 
 
 def _orbit(b, film: str):

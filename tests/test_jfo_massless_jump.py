@@ -10,18 +10,15 @@ m/Δt² to every direction) and against plainly repeated cycles.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 
 from conrod.cases.solver import SolverSection
-from conrod.film.base import BearingGeometry, Groove
 from conrod.film.mass_conserving import MassConservingFilm
-from conrod.loads.cycle import LoadCycle
 from conrod.orbit import OrbitProblem
 from conrod.orbit.content_bracket import bracketed_balance
 from conrod.orbit.periodic import periodic_orbit
+from orbit_helpers import fed_bearing_problem
 
 FED_BEARING = {"bore": 0.1082, "width_ratio": 0.3679, "rpm": 3516.0, "clearance": 2.147e-05,
                "supply": 382100.0, "viscosity": 0.01905, "unit_load": 11.43e6}
@@ -33,18 +30,7 @@ SLOW_BEARING = {"bore": 0.1096, "width_ratio": 0.5174, "rpm": 2201.0, "clearance
 
 def _problem(b: dict) -> OrbitProblem:
     """Central groove fed at the supply pressure; firing pulse on a rotating inertia load."""
-    width = b["width_ratio"] * b["bore"]
-    geometry = BearingGeometry(diameter=b["bore"], width=width, radial_clearance=b["clearance"],
-                               grooves=(Groove(width=0.1 * width),), supply_pressure=b["supply"])
-    omega = b["rpm"] * math.pi / 30.0
-    phi = np.linspace(0.0, 4 * math.pi, 144, endpoint=False)
-    peak = b["unit_load"] * b["bore"] * width
-    firing = np.exp(-(((phi + math.pi) % (4 * math.pi) - math.pi) / 0.3) ** 2)
-    loads = LoadCycle(phi, peak * firing - 0.3 * peak * np.cos(phi),
-                      -0.12 * peak * np.sin(phi), np.full(144, omega), np.zeros(144), omega,
-                      4 * math.pi)
-    film = MassConservingFilm(geometry, n_theta=36, n_z=8, tolerance=1e-10)
-    return OrbitProblem(film, loads, b["viscosity"], 1.0, 1.0, 0.1, 0.05 * b["clearance"])
+    return fed_bearing_problem(b, MassConservingFilm, b["viscosity"])
 
 
 def _solver(integrator: str, **changes) -> SolverSection:
