@@ -314,13 +314,39 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
     return max_cycles, change
 
 
-def _half_with_padding(field: np.ndarray, padding: float | bool | None = None) -> np.ndarray:
-    """Rows z ≤ 0 (mid-plane included) plus one padding row (default: the mirror row)."""
-    mid = (field.shape[1] - 1) // 2
-    half = np.empty((field.shape[0], mid + 2), dtype=field.dtype)
-    half[:, : mid + 1] = field[:, : mid + 1]
-    half[:, -1] = field[:, mid + 1] if padding is None else padding
-    return half
+@nb.njit(cache=True)
+def _fold(pressure, h, source, fixed):
+    """Rows z ≤ 0 of the four fields plus the padding row of the symmetric layout
+    (pressure and source 0, h mirrored, fixed True), in one compiled call."""
+    n, m = pressure.shape
+    mid = (m - 1) // 2
+    p_half = np.empty((n, mid + 2))
+    h_half = np.empty((n, mid + 2))
+    s_half = np.empty((n, mid + 2))
+    f_half = np.empty((n, mid + 2), dtype=np.bool_)
+    for i in range(n):
+        for j in range(mid + 1):
+            p_half[i, j] = pressure[i, j]
+            h_half[i, j] = h[i, j]
+            s_half[i, j] = source[i, j]
+            f_half[i, j] = fixed[i, j]
+        p_half[i, mid + 1] = 0.0
+        h_half[i, mid + 1] = h[i, mid + 1]
+        s_half[i, mid + 1] = 0.0
+        f_half[i, mid + 1] = True
+    return p_half, h_half, s_half, f_half
+
+
+@nb.njit(cache=True)
+def _unfold(half, pressure):
+    """pressure := the z-symmetric field of the half ``half`` (mid-plane row included)."""
+    n, m = pressure.shape
+    mid = (m - 1) // 2
+    for i in range(n):
+        for j in range(mid + 1):
+            pressure[i, j] = half[i, j]
+        for j in range(mid + 1, m):
+            pressure[i, j] = half[i, m - 1 - j]
 
 
 def solve_on_grid(pressure, h, source, fixed, grid, cavitation_pressure, tolerance,
@@ -334,13 +360,10 @@ def solve_on_grid(pressure, h, source, fixed, grid, cavitation_pressure, toleran
         return multigrid_solve(pressure, h, source, fixed, grid.radius, grid.d_theta,
                                grid.d_z, cavitation_pressure, tolerance, max_cycles,
                                coarse_levels(grid.n_theta, grid.n_z), False)
-    mid = grid.n_z // 2
-    half = _half_with_padding(pressure, 0.0)
+    half, h_half, source_half, fixed_half = _fold(pressure, h, source, fixed)
     cycles, change = multigrid_solve(
-        half, _half_with_padding(h), _half_with_padding(source, 0.0),
-        _half_with_padding(fixed, True), grid.radius, grid.d_theta, grid.d_z,
-        cavitation_pressure, tolerance, max_cycles, coarse_levels(grid.n_theta, mid), True,
-)
-    pressure[:, : mid + 1] = half[:, : mid + 1]
-    pressure[:, mid + 1 :] = half[:, mid - 1 :: -1]
+        half, h_half, source_half, fixed_half, grid.radius, grid.d_theta, grid.d_z,
+        cavitation_pressure, tolerance, max_cycles, coarse_levels(grid.n_theta, grid.n_z // 2),
+        True)
+    _unfold(half, pressure)
     return cycles, change
