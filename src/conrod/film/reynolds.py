@@ -189,8 +189,9 @@ class ReynoldsFilm:
         problem = self._problem(state)
         reduced, _ = self._solve_pressure(problem, state, memory)
         pressure = self._physical(reduced, state)
-        fx, fy = chars.pressure_force(pressure, self.film_grid, self._force_weights)
-        return fx, fy, self._memory_after(memory, reduced, state)
+        w_x, w_y = self._force_weights
+        sum_x, sum_y, *_ = kernel.force_and_extremes(pressure, w_x, w_y, problem.h)
+        return -sum_x, -sum_y, self._memory_after(memory, reduced, state)
 
     def sensitivities(self, state: FilmState):
         """Force, stiffness K = −∂F/∂e [N/m] and damping C = −∂F/∂ė [N s/m] from one
@@ -396,9 +397,11 @@ class ReynoldsFilm:
                      else state.viscosity * law.viscosity_ratio(pressure, state.viscosity))
         torque_j, torque_b = chars.friction_torques(
             pressure, h, grid, state.journal_speed, state.shell_speed, viscosity, fraction)
-        fx, fy = chars.pressure_force(pressure, grid, self._force_weights)
-        h_min, h_angle = chars.minimum_film(h, grid)
-        p_max, p_angle = chars.peak_pressure(pressure, grid)
+        w_x, w_y = self._force_weights
+        sum_x, sum_y, i_p, j_p, i_h, j_h = kernel.force_and_extremes(pressure, w_x, w_y, h)
+        fx, fy = -sum_x, -sum_y
+        h_min, h_angle = chars.minimum_film_at(h, grid, i_h, j_h)
+        p_max, p_angle = chars.peak_pressure_at(pressure, grid, i_p, j_p)
         info = dict(info)
         info["cavitation_flow_m3_per_s"] = lost * to_flow
         info["friction_full_film"] = float(self.friction == "full_film")

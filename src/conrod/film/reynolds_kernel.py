@@ -289,3 +289,26 @@ def warm_field(last, previous, step, floor, fixed, fixed_values):
             value = last[i, j] + step * (last[i, j] - previous[i, j])
             out[i, j] = value if value > floor else floor
     return out
+
+
+@nb.njit(cache=True)
+def force_and_extremes(pressure, w_x, w_y, h):
+    """(Σ p w_x, Σ p w_y) [N] (summed per axial column, then over the columns) and the
+    first node (C order) of the largest pressure and of the smallest film thickness, in
+    one pass: (sum_x, sum_y, i_p, j_p, i_h, j_h)."""
+    n, m = pressure.shape
+    column_x = np.zeros(m)
+    column_y = np.zeros(m)
+    i_p = j_p = i_h = j_h = 0
+    p_best = pressure[0, 0]
+    h_best = h[0, 0]
+    for i in range(n):
+        for j in range(m):
+            value = pressure[i, j]
+            column_x[j] += value * w_x[i, j]
+            column_y[j] += value * w_y[i, j]
+            if value > p_best:
+                p_best, i_p, j_p = value, i, j
+            if h[i, j] < h_best:
+                h_best, i_h, j_h = h[i, j], i, j
+    return column_x.sum(), column_y.sum(), i_p, j_p, i_h, j_h
