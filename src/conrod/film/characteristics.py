@@ -145,6 +145,7 @@ def _shear_sums(pressure, h, fraction, axial_weights, stress_numerator, d_theta)
     full = fraction.shape[0] == 1
     couette = 0.0
     poiseuille = 0.0
+    half_inverse_step = 0.5 / d_theta  # a product, not a second division per node
     for i in range(n):
         ip = i + 1 if i + 1 < n else 0
         im = i - 1 if i > 0 else n - 1
@@ -153,7 +154,7 @@ def _shear_sums(pressure, h, fraction, axial_weights, stress_numerator, d_theta)
             if not full:
                 stress *= fraction[i, j]
             couette += axial_weights[j] * stress
-            slope = (h[ip, j] - h[im, j]) / (2.0 * d_theta)
+            slope = (h[ip, j] - h[im, j]) * half_inverse_step
             poiseuille += axial_weights[j] * pressure[i, j] * slope
     return couette, poiseuille
 
