@@ -145,6 +145,7 @@ def _shear_sums(pressure, h, fraction, axial_weights, stress_numerator, d_theta)
     full = fraction.shape[0] == 1
     couette = 0.0
     poiseuille = 0.0
+    half_inverse_step = 0.5 / d_theta  # a product, not a second division per node
     for i in range(n):
         ip = i + 1 if i + 1 < n else 0
         im = i - 1 if i > 0 else n - 1
@@ -153,7 +154,7 @@ def _shear_sums(pressure, h, fraction, axial_weights, stress_numerator, d_theta)
             if not full:
                 stress *= fraction[i, j]
             couette += axial_weights[j] * stress
-            slope = (h[ip, j] - h[im, j]) / (2.0 * d_theta)
+            slope = (h[ip, j] - h[im, j]) * half_inverse_step
             poiseuille += axial_weights[j] * pressure[i, j] * slope
     return couette, poiseuille
 
@@ -162,6 +163,11 @@ def peak_pressure(pressure: np.ndarray, grid: FilmGrid) -> tuple[float, float]:
     """Largest pressure [Pa] and its θ [rad], refined by a parabola through the
     largest node and its circumferential neighbours."""
     i, j = np.unravel_index(int(np.argmax(pressure)), pressure.shape)
+    return peak_pressure_at(pressure, grid, int(i), int(j))
+
+
+def peak_pressure_at(pressure: np.ndarray, grid: FilmGrid, i: int, j: int) -> tuple[float, float]:
+    """:func:`peak_pressure` [Pa, rad] refined around the known largest node (i, j)."""
     p_minus = pressure[(i - 1) % grid.n_theta, j]
     p_zero = pressure[i, j]
     p_plus = pressure[(i + 1) % grid.n_theta, j]
@@ -175,6 +181,11 @@ def peak_pressure(pressure: np.ndarray, grid: FilmGrid) -> tuple[float, float]:
 def minimum_film(h: np.ndarray, grid: FilmGrid) -> tuple[float, float]:
     """Smallest film thickness [m] and its θ [rad] (parabolic refinement in θ)."""
     i, j = np.unravel_index(int(np.argmin(h)), h.shape)
+    return minimum_film_at(h, grid, int(i), int(j))
+
+
+def minimum_film_at(h: np.ndarray, grid: FilmGrid, i: int, j: int) -> tuple[float, float]:
+    """:func:`minimum_film` [m, rad] refined around the known smallest node (i, j)."""
     h_minus = h[(i - 1) % grid.n_theta, j]
     h_zero = h[i, j]
     h_plus = h[(i + 1) % grid.n_theta, j]

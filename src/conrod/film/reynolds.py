@@ -136,10 +136,16 @@ class ReynoldsFilm:
 )
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
-        self._cos = np.cos(self.film_grid.theta)[:, None]
-        self._sin = np.sin(self.film_grid.theta)[:, None]
+        self._cos_nodes = np.cos(self.film_grid.theta)
+        self._sin_nodes = np.sin(self.film_grid.theta)
+        self._cos = self._cos_nodes[:, None]
+        self._sin = self._sin_nodes[:, None]
         self._supply = supply_mask(g, self.film_grid)
         self._edges = edge_mask(self.film_grid)
+        self._fixed = self._edges | self._supply
+        self._fixed.setflags(write=False)  # shared by every problem: never modified
+        self._supply_values = np.where(self._supply, g.supply_pressure, 0.0)
+        self._supply_values.setflags(write=False)
         self._force_weights = chars.force_weights(self.film_grid)
         self._symmetric = (self.use_symmetry and self.method == "multigrid"
                            and np.array_equal(self._supply, self._supply[:, ::-1]))
@@ -183,8 +189,9 @@ class ReynoldsFilm:
         problem = self._problem(state)
         reduced, _ = self._solve_pressure(problem, state, memory)
         pressure = self._physical(reduced, state)
-        fx, fy = chars.pressure_force(pressure, self.film_grid, self._force_weights)
-        return fx, fy, self._memory_after(memory, reduced, state)
+        w_x, w_y = self._force_weights
+        sum_x, sum_y, *_ = kernel.force_and_extremes(pressure, w_x, w_y, problem.h)
+        return -sum_x, -sum_y, self._memory_after(memory, reduced, state)
 
     def sensitivities(self, state: FilmState):
         """Force, stiffness K = −∂F/∂e [N/m] and damping C = −∂F/∂ė [N s/m] from one
@@ -266,8 +273,9 @@ class ReynoldsFilm:
     def _problem(self, state: FilmState) -> _Problem:
         """Film thickness, its rate and the Dirichlet regions for ``state``."""
         g = self.geometry
-        h = g.radial_clearance - state.eccentricity_x * self._cos - state.eccentricity_y * self._sin
-        h = np.repeat(h, self.n_z + 1, axis=1)
+        h, h_rate = kernel.film_gap(g.radial_clearance, state.eccentricity_x,
+                                    state.eccentricity_y, state.velocity_x, state.velocity_y,
+                                    self._cos_nodes, self._sin_nodes, self.n_z + 1)
         if state.deformation is not None:
             if np.shape(state.deformation) != h.shape:
                 raise CaseError(
@@ -281,11 +289,11 @@ class ReynoldsFilm:
                 f"film thickness min = {smallest:.3g} m (must stay > 0 m): the journal "
                 "touches the shell; the load is beyond what the film and the contact model "
                 "carry at this step (try a contact model, a finer step or a larger clearance)")
-        h_rate = -state.velocity_x * self._cos - state.velocity_y * self._sin
-        h_rate = np.repeat(h_rate, self.n_z + 1, axis=1)
-        fixed = self._edges | self._supply
-        values = np.where(self._supply, self._reduced(g.supply_pressure, state), 0.0)
+        fixed = self._fixed
+        values = (self._supply_values if self.pressure_viscosity is None
+                  else np.where(self._supply, self._reduced(g.supply_pressure, state), 0.0))
         if self.ambient_line_at_max_gap:
+            fixed, values = fixed.copy(), values.copy()
             psi = math.atan2(state.eccentricity_y, state.eccentricity_x)
             column = nearest_theta_index(psi + math.pi, self.film_grid)
             fixed[column, :] = True
@@ -306,7 +314,9 @@ class ReynoldsFilm:
         return levels[::-1]
 
     def _sweep(self, level: _Problem, pressure: np.ndarray, state: FilmState,
-               tolerance: float) -> tuple[int, float]:
+               tolerance: float, fixed_set: bool = False) -> tuple[int, float]:
+        """Solve ``level`` in place on ``pressure`` (its Dirichlet values already there
+        when ``fixed_set``); (sweeps, last relative change [-])."""
         symmetric = self._symmetric and state.deformation is None and level.grid.n_z % 4 == 0
         g = level.grid
         a_east, a_north, source = kernel.assemble_coefficients(
@@ -314,7 +324,8 @@ class ReynoldsFilm:
             state.journal_speed + state.shell_speed, state.viscosity,
 )
         level.coefficients = (a_east, a_north, source)
-        pressure[level.fixed] = level.fixed_values[level.fixed]
+        if not fixed_set:
+            pressure[level.fixed] = level.fixed_values[level.fixed]
         if self.method == "multigrid":
             cycles, change = multigrid.solve_on_grid(
                 pressure, level.h, source, level.fixed, g, level.cavitation,
@@ -339,15 +350,15 @@ class ReynoldsFilm:
     def _solve_pressure(self, problem: _Problem, state: FilmState,
                         memory: ReynoldsMemory) -> tuple[np.ndarray, dict]:
         """Converged pressure [Pa] on the fine grid and solver diagnostics."""
-        last = None
-        if self.warm_start and memory.pressure is not None:
-            last = (memory.start(scaled_state(state, self.geometry.radial_clearance))
-                    if isinstance(memory, ReynoldsMemory) else memory.pressure)
-        warm = last is not None
-        if last is not None:
-            pressure = np.maximum(last, problem.cavitation)
-            sweeps, change = self._sweep(problem, pressure, state, self.tolerance)
-            total = sweeps
+        warm = self.warm_start and memory.pressure is not None
+        if warm:
+            last, previous, step = memory.pressure, memory.pressure, 0.0
+            if isinstance(memory, ReynoldsMemory):
+                previous, step = memory.secant(
+                    scaled_state(state, self.geometry.radial_clearance))
+            pressure = kernel.warm_field(last, previous, step, problem.cavitation,
+                                         problem.fixed, problem.fixed_values)
+            total, change = self._sweep(problem, pressure, state, self.tolerance, True)
         else:
             levels = self._levels(problem)
             pressure = np.zeros(levels[0].h.shape)
@@ -386,9 +397,11 @@ class ReynoldsFilm:
                      else state.viscosity * law.viscosity_ratio(pressure, state.viscosity))
         torque_j, torque_b = chars.friction_torques(
             pressure, h, grid, state.journal_speed, state.shell_speed, viscosity, fraction)
-        fx, fy = chars.pressure_force(pressure, grid, self._force_weights)
-        h_min, h_angle = chars.minimum_film(h, grid)
-        p_max, p_angle = chars.peak_pressure(pressure, grid)
+        w_x, w_y = self._force_weights
+        sum_x, sum_y, i_p, j_p, i_h, j_h = kernel.force_and_extremes(pressure, w_x, w_y, h)
+        fx, fy = -sum_x, -sum_y
+        h_min, h_angle = chars.minimum_film_at(h, grid, i_h, j_h)
+        p_max, p_angle = chars.peak_pressure_at(pressure, grid, i_p, j_p)
         info = dict(info)
         info["cavitation_flow_m3_per_s"] = lost * to_flow
         info["friction_full_film"] = float(self.friction == "full_film")

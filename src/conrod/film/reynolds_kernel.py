@@ -255,3 +255,60 @@ def coefficient_derivatives(
                 dh_n = 0.5 * (dh[i, j] + dh[i, j + 1])
                 d_north[i, j] = 3.0 * h_n * h_n * dh_n * arc / d_z
     return d_east, d_north, d_source
+
+
+@nb.njit(cache=True)
+def film_gap(clearance, e_x, e_y, v_x, v_y, cos_theta, sin_theta, n_nodes):
+    """Rigid film thickness h = c − e_x cos θ − e_y sin θ [m] and its rate
+    ∂h/∂t = −ė_x cos θ − ė_y sin θ [m/s] on the (n_θ, ``n_nodes``) grid, in one pass
+    (``cos_theta``, ``sin_theta``: the node values, shape (n_θ,))."""
+    n = cos_theta.shape[0]
+    h = np.empty((n, n_nodes))
+    h_rate = np.empty((n, n_nodes))
+    for i in range(n):
+        gap = clearance - e_x * cos_theta[i] - e_y * sin_theta[i]
+        rate = -v_x * cos_theta[i] - v_y * sin_theta[i]
+        for j in range(n_nodes):
+            h[i, j] = gap
+            h_rate[i, j] = rate
+    return h, h_rate
+
+
+@nb.njit(cache=True)
+def warm_field(last, previous, step, floor, fixed, fixed_values):
+    """Warm-start field max(p + α(p − p_previous), floor) [Pa] (α = ``step``; pass
+    ``previous`` = ``last`` and α = 0 for the last field itself) with the Dirichlet
+    values on ``fixed`` nodes, as a new array."""
+    n, m = last.shape
+    out = np.empty((n, m))
+    for i in range(n):
+        for j in range(m):
+            if fixed[i, j]:
+                out[i, j] = fixed_values[i, j]
+                continue
+            value = last[i, j] + step * (last[i, j] - previous[i, j])
+            out[i, j] = value if value > floor else floor
+    return out
+
+
+@nb.njit(cache=True)
+def force_and_extremes(pressure, w_x, w_y, h):
+    """(Σ p w_x, Σ p w_y) [N] (summed per axial column, then over the columns) and the
+    first node (C order) of the largest pressure and of the smallest film thickness, in
+    one pass: (sum_x, sum_y, i_p, j_p, i_h, j_h)."""
+    n, m = pressure.shape
+    column_x = np.zeros(m)
+    column_y = np.zeros(m)
+    i_p = j_p = i_h = j_h = 0
+    p_best = pressure[0, 0]
+    h_best = h[0, 0]
+    for i in range(n):
+        for j in range(m):
+            value = pressure[i, j]
+            column_x[j] += value * w_x[i, j]
+            column_y[j] += value * w_y[i, j]
+            if value > p_best:
+                p_best, i_p, j_p = value, i, j
+            if h[i, j] < h_best:
+                h_best, i_h, j_h = h[i, j], i, j
+    return column_x.sum(), column_y.sum(), i_p, j_p, i_h, j_h

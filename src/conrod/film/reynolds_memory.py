@@ -42,15 +42,24 @@ class ReynoldsMemory:
         """Warm-start field for the scaled ``state`` [Pa] (a new array), None when cold."""
         if self.pressure is None:
             return None
-        if self.previous is None or self.state is None or self.previous_state is None:
+        previous, alpha = self.secant(state)
+        if alpha == 0.0:
             return self.pressure.copy()
+        return self.pressure + alpha * (self.pressure - previous)
+
+    def secant(self, state: np.ndarray) -> tuple[np.ndarray, float]:
+        """(field before the last [Pa], secant step α [-]) of :meth:`start` for the scaled
+        ``state``: the start is p + α(p − field); (p, 0.0) when there is no predictor.
+        Requires ``pressure``."""
+        if self.previous is None or self.state is None or self.previous_state is None:
+            return self.pressure, 0.0
         direction = self.state - self.previous_state
         length = float(direction @ direction)
         if not length > 0.0:
-            return self.pressure.copy()
+            return self.pressure, 0.0
         alpha = float((state - self.state) @ direction) / length
         alpha = min(max(alpha, PREDICTOR_RANGE[0]), PREDICTOR_RANGE[1])
-        return self.pressure + alpha * (self.pressure - self.previous)
+        return self.previous, alpha
 
     def after(self, pressure: np.ndarray, state: np.ndarray) -> ReynoldsMemory:
         """The memory after a solve of ``pressure`` at the scaled ``state``."""
