@@ -175,3 +175,57 @@ def test_vanishing_mass_approaches_the_massless_elastic_orbit():
     # steps with the backward rate), measured 0.4 % of the clearance
     assert abs(distances[2] - distances[1]) < 0.2 * distances[1]
     assert distances[2] < 1e-2
+
+
+def test_broyden_update_satisfies_the_secant_condition():
+    """Broyden's inverse update H⁺ maps the residual change y onto the update s (H⁺y = s)
+    and leaves directions orthogonal to Hᵀs unchanged (H⁺w = Hw for sᵀHw = 0)."""
+    from conrod.elastic.newton import _broyden
+
+    rng = np.random.default_rng(7)
+    inverse = np.eye(5) + 0.1 * rng.standard_normal((5, 5))
+    s, y = rng.standard_normal(5), rng.standard_normal(5)
+    updated = _broyden(inverse, s, y)
+    assert np.allclose(updated @ y, s, rtol=0.0, atol=1e-12)
+    w = rng.standard_normal(5)
+    w -= (s @ inverse @ w) / (s @ inverse @ (inverse.T @ s)) * (inverse.T @ s)
+    assert np.allclose(updated @ w, inverse @ w, rtol=0.0, atol=1e-12)
+
+
+def test_step_does_not_depend_on_the_coupling_algorithm():
+    """One implicit step on the compliant rod solved by the Broyden-improved Newton
+    iteration (the orbit's) and by plain Newton with a Jacobian rebuilt after every
+    update: the same end velocity and bore displacement to the iteration's tolerance
+    (1e-9 c on the bore)."""
+    problem = _problem(1.0)
+    film = problem.film
+    memory = film._static_memory()
+    c = problem.clearance
+    dt = np.radians(1.0) / problem.crank_speed
+    request = MassStepRequest(
+        position_reference=np.array([0.55 * c, -0.3 * c]),
+        velocity_reference=np.array([0.01, -0.02]), tau=2.0 * dt / 3.0, dt=dt,
+        mass=np.array([problem.mass_x, problem.mass_y]), load=np.array([-9e3, 4e3]),
+        journal_speed=float(problem.loads.speeds(np.array([0.3]))[0][0]),
+        shell_speed=float(problem.loads.speeds(np.array([0.3]))[1][0]),
+        viscosity=problem.viscosity, crank_angle=0.3, guess=np.array([0.02, 0.01]),
+        bdf2=True)
+    import conrod.elastic.mass_step as module
+    import conrod.elastic.newton as newton
+
+    broyden = mass_step(film, request, memory, memory)
+    original, contraction = module.newton_balance, newton.CONTRACTION
+
+    def plain(*args, **kwargs):
+        return original(*args, **{**kwargs, "broyden": False, "chord": None})
+
+    module.newton_balance, newton.CONTRACTION = plain, -1.0  # rebuild after every update
+    try:
+        newton_step = mass_step(film, request, memory, memory)
+    finally:
+        module.newton_balance, newton.CONTRACTION = original, contraction
+    assert broyden.converged and newton_step.converged
+    assert np.max(np.abs(broyden.memory.deformation - newton_step.memory.deformation)) \
+        <= 1e-8 * c
+    v_size = np.max(np.abs(newton_step.velocity))
+    assert np.max(np.abs(broyden.velocity - newton_step.velocity)) <= 1e-6 * v_size
