@@ -136,7 +136,7 @@ def mass_step(film, request: MassStepRequest, memory, previous=None,
         c * max(film.crank_speed, 1e-3), film._coupling.tolerance,
         5 * settings.max_iterations, settings.increment_share,
         chord=_chord(film, share > 0.0),
-        travel=-tau * _trig(film), broyden=True)
+        travel=-tau * _trig(film))
     payload: PressureEvaluation = outcome.payload
     after = dataclasses.replace(
         at_end, inner=payload.memory(), deformation=outcome.deformation,

@@ -11,8 +11,7 @@ quasi-Newton method with finite differences). Here the Jacobian is exact:
 with ∂f/∂u, ∂f/∂v, ∂F/∂u, ∂F/∂v from one sparse LU of the film on its converged active set
 (:mod:`conrod.elastic.response`). A Jacobian is reused while an update reduces the residual
 norm to at most :data:`CONTRACTION` of its value (chord steps, also across steps) and
-rebuilt otherwise — or, for the implicit step with mass, built fresh at the step's start
-and improved by Broyden's rank-one update while it contracts; each update is cut back (halving) until the residual norm decreases —
+rebuilt otherwise; each update is cut back (halving) until the residual norm decreases —
 across a switch of the cavitation set, where no cut may decrease it, the best trial is
 taken — and scaled so that max|Δu| stays below a share of the current h_min (Rodin 2004:
 the relaxation factor Δ of the deformation increment). With the velocity held
@@ -45,8 +44,7 @@ def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance
                    v_scale: float, tolerance: float, max_iterations: int, share: float,
                    with_velocity: bool = True,
                    chord: ChordJacobian | None = None,
-                   travel: np.ndarray | None = None,
-                   broyden: bool = False) -> BalanceOutcome:
+                   travel: np.ndarray | None = None) -> BalanceOutcome:
     """(u, v) with G = 0 (and F + W = 0 when ``with_velocity``) from (u0 [m], v0 [m/s]).
 
     evaluate : callable  (u, v) → (nodal forces f [N], film force F [N] (2,), h_min [m],
@@ -58,10 +56,6 @@ def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance
         velocity update [s] when the velocity also moves the journal (implicit step of the
         orbit with mass, −τ (cos θ_j, sin θ_j)): an update then keeps the whole change of the
         film thickness, max|Δu + travel Δv|, ≤ share h_min; None: no such limit.
-    broyden : bool  Start from a fresh Jacobian at (u0, v0) instead of the carried one and,
-        while an update contracts, improve it by Broyden's rank-one update of its inverse
-        (Broyden 1965) instead of keeping it fixed: the iterations converge superlinearly
-        rather than linearly at the contraction of an older state's Jacobian.
     """
     c, n = clearance, len(u0)
     w_scale = float(np.hypot(*load)) + 1.0
@@ -87,8 +81,6 @@ def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance
     inverse, increment = chord.inverse, 0.0
     if inverse is not None and inverse.shape[0] != z.size:
         inverse = None
-    if broyden:  # a fresh Jacobian at this state, improved by rank-one updates
-        inverse = None
     while solves < max_iterations and not _done(r, n, c, tolerance, with_velocity):
         if inverse is None:
             inverse = _inverse(respond(payload), operator, n, c, v_scale, w_scale,
@@ -113,29 +105,15 @@ def newton_balance(evaluate, respond, u0, v0, load, inertia, operator, clearance
         # film's cavitation set the residual is only piecewise smooth (semismooth Newton)
         z = z + best_lam * step
         increment = float(c * np.max(np.abs(best_lam * step[:n])))
-        r_old = r
         r, h_min, payload = best
         if _norm(best) > CONTRACTION * norm or best_lam < 1.0:
             inverse = None
-        elif broyden:
-            inverse = _broyden(inverse, step, r - r_old)
     chord.inverse = inverse
     bore = float(c * np.max(np.abs(r[:n])))
     force = float(np.max(np.abs(r[n:]))) if with_velocity else 0.0
     velocity = v_scale * z[n:] if with_velocity else v
     return BalanceOutcome(c * z[:n], velocity, payload, solves, bore, force, increment,
                           bore <= 1e3 * tolerance and force <= ACCEPTABLE)
-
-
-def _broyden(inverse: np.ndarray, s: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """Inverse Jacobian after Broyden's "good" rank-one update for the update s and the
-    residual change y (Sherman–Morrison): H + (s − Hy) sᵀH / (sᵀHy); H kept when sᵀHy
-    vanishes [-]."""
-    hy = inverse @ y
-    denominator = float(s @ hy)
-    if abs(denominator) <= 1e-12 * float(np.linalg.norm(s) * np.linalg.norm(hy)):
-        return inverse
-    return inverse + np.outer(s - hy, s @ inverse) / denominator
 
 
 def _norm(trial) -> float:
