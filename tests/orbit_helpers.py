@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from conrod.cases.solver import SolverSection
 from conrod.film.base import BearingGeometry
@@ -75,3 +76,31 @@ def fed_bearing_problem(bearing: dict, model, viscosity: float) -> OrbitProblem:
                       4 * math.pi)
     return OrbitProblem(model(fed, n_theta=36, n_z=8, tolerance=1e-10), loads, viscosity,
                         1.0, 1.0, 0.1, 0.05 * bearing["clearance"])
+
+
+def assert_settles_at_steady_point(orbit, film, load: float) -> None:
+    """The orbit under a constant load ``load`` [N] along −x ended at the static equilibrium
+    F(e, 0) + W = 0 of ``film`` (scipy fsolve on (ε, attitude)): ε and attitude within
+    0.5 %, periodic after at most three cycles."""
+    from scipy.optimize import fsolve
+
+    from conrod.film.base import FilmState
+
+    c = film.geometry.radial_clearance
+
+    def balance(polar):
+        eps, angle = polar
+        fx, fy = film.force(FilmState(eccentricity_x=eps * c * math.cos(angle),
+                                      eccentricity_y=eps * c * math.sin(angle),
+                                      velocity_x=0.0, velocity_y=0.0, journal_speed=SPEED,
+                                      shell_speed=0.0, viscosity=0.01))
+        return [(fx + load) / load, fy / load]
+
+    eps_ref, angle_ref = fsolve(balance, [0.5, 1.0], xtol=1e-12)
+    eps = math.hypot(orbit.last.x[-1], orbit.last.y[-1]) / c
+    angle = math.atan2(orbit.last.y[-1], orbit.last.x[-1])
+    print(f"orbit eps {eps:.5f} angle {angle:.5f}; equilibrium {eps_ref:.5f} "
+          f"{angle_ref:.5f}; cycles {orbit.cycles}")
+    assert orbit.periodic and orbit.cycles <= 3
+    assert eps == pytest.approx(eps_ref, rel=5e-3)
+    assert angle == pytest.approx(angle_ref, rel=5e-3)

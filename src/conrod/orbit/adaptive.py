@@ -22,7 +22,13 @@ from scipy.integrate import solve_ivp
 from conrod.errors import ConvergenceError
 from conrod.io.interrupts import raise_if_interrupted
 from conrod.orbit.contact import contact_acceleration, contact_normal_force
-from conrod.orbit.problem import OrbitProblem, OrbitState, load_table, periodic_sample
+from conrod.orbit.problem import (
+    OrbitProblem,
+    OrbitState,
+    load_table,
+    periodic_sample,
+    scaled_free_rhs,
+)
 from conrod.orbit.trajectory import CycleTrajectory
 
 FALLBACK_METHODS = ("Radau", "BDF", "LSODA")
@@ -74,12 +80,7 @@ def _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance,
     c_omega = clearance * omega
     fx, fy = force(u[0] * clearance, u[1] * clearance, u[2] * c_omega, u[3] * c_omega,
                    row[2] + row[3], viscosity, params)
-    scale = c_omega * omega
-    out = np.empty(4)
-    out[0], out[1] = u[2], u[3]
-    out[2] = (row[0] + fx) / (mass_x * scale)
-    out[3] = (row[1] + fy) / (mass_y * scale)
-    return out
+    return scaled_free_rhs(u, row, fx, fy, c_omega, omega, mass_x, mass_y)
 
 
 class _Phases:

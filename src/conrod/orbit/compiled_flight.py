@@ -23,7 +23,7 @@ import sys
 import numba as nb
 import numpy as np
 
-from conrod.orbit.problem import periodic_sample
+from conrod.orbit.problem import periodic_sample, scaled_free_rhs
 from conrod.orbit.tr_bdf2 import UNBOUND, _bind, specialise
 
 
@@ -44,12 +44,7 @@ def _rhs(phi, u, params, data):
     c_omega = c * omega
     fx, fy = force(u[0] * c, u[1] * c, u[2] * c_omega, u[3] * c_omega, row[2] + row[3],
                    mu, params)
-    scale = c_omega * omega
-    out = np.empty(4)
-    out[0], out[1] = u[2], u[3]
-    out[2] = (row[0] + fx) / (mass_x * scale)
-    out[3] = (row[1] + fy) / (mass_y * scale)
-    return out
+    return scaled_free_rhs(u, row, fx, fy, c_omega, omega, mass_x, mass_y)
 
 
 def _jacobian(phi, u, f0, params, data):

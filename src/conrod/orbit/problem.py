@@ -193,6 +193,19 @@ def periodic_sample(phi: float, angles: np.ndarray, table: np.ndarray, cycle: fl
     return table[k] + t * (table[k + 1] - table[k])
 
 
+@nb.njit(cache=True)
+def scaled_free_rhs(u: np.ndarray, row: np.ndarray, fx: float, fy: float, c_omega: float,
+                    omega: float, mass_x: float, mass_y: float) -> np.ndarray:
+    """du/dφ [-] of the free journal on the scaled state u = (x/c, y/c, ẋ/(cω), ẏ/(cω)):
+    load row (W_x, W_y, …) [N] plus film force (``fx``, ``fy``) [N] over the masses [kg]."""
+    scale = c_omega * omega
+    out = np.empty(4)
+    out[0], out[1] = u[2], u[3]
+    out[2] = (row[0] + fx) / (mass_x * scale)
+    out[3] = (row[1] + fy) / (mass_y * scale)
+    return out
+
+
 def load_table(loads: LoadCycle) -> tuple[np.ndarray, np.ndarray]:
     """Closed (angles [rad], rows W_x, W_y [N], ω_j, ω_b [rad/s]) for :func:`periodic_sample`."""
     angles = np.append(loads.crank_angle, loads.crank_angle[0] + loads.cycle)
