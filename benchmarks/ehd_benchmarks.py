@@ -64,6 +64,7 @@ def run(n_theta: int, n_z: int, stiffening: float, step: float, film: str,
     return {"grid": f"{n_theta}x{n_z}", "film": film, "elastic_s": elastic_time,
             "rigid_s": total - elastic_time, "cycles": results.summary.cycles,
             "solves": float(np.mean(results.columns["coupling_iterations"])),
+            "updates": float(np.mean(results.columns.get("newton_updates", np.nan))),
             "h_min": (companion.h_min * 1e6, results.summary.h_min * 1e6),
             "p_max": (companion.p_max * 1e-6, results.summary.p_max * 1e-6),
             "h_min_angle": results.summary.h_min_angle_deg
@@ -130,14 +131,15 @@ def with_mass(args) -> None:
              f"together, {min(args.step, 1.0):g} deg); rigid companion: the same integrator "
              "on the rigid bore (TR-BDF2 with mass); massless: `quasi_static`, 0.5 deg, no "
              "companion. One invocation, same machine state.", "",
-             "| grid | with mass: elastic [s] | rigid [s] | cycles | film solves / step | "
+             "| grid | with mass: elastic [s] | rigid [s] | cycles | film solves / Newton "
+             "updates per step | "
              "h_min rigid / elastic [µm] | p_max rigid / elastic [MPa] | massless elastic "
              "[s] | massless h_min [µm] | massless p_max [MPa] |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for grid, m, q in rows:
         lines.append(
             f"| {grid} | {m['elastic_s']:.1f} | {m['rigid_s']:.1f} | {m['cycles']} | "
-            f"{m['solves']:.1f} | {m['h_min'][0]:.3f} / {m['h_min'][1]:.3f} | "
+            f"{m['solves']:.2f} / {m['updates']:.2f} | {m['h_min'][0]:.3f} / {m['h_min'][1]:.3f} | "
             f"{m['p_max'][0]:.1f} / {m['p_max'][1]:.1f} | {q['elastic_s']:.1f} | "
             f"{q['h_min'][1]:.3f} | {q['p_max'][1]:.1f} |")
     (ROOT / "benchmarks" / "ehd_benchmarks_with_mass.md").write_text("\n".join(lines) + "\n")

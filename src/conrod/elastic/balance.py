@@ -45,6 +45,8 @@ class BalanceOutcome:
     payload : object  Film payload at the answer.  iterations : int  Film solves [-].
     residual : float  max|G| [m].  force_residual : float  |F + W| / W_s [-].
     increment : float  Last max|Δu| [m].  converged : bool.
+    updates : int  Newton (or quasi-Newton) updates taken; ``iterations`` also counts the
+        start value's solve and the line-search trials [-].
     """
 
     deformation: np.ndarray
@@ -55,6 +57,7 @@ class BalanceOutcome:
     force_residual: float
     increment: float
     converged: bool
+    updates: int = 0
 
 
 class BalanceJacobian:
@@ -120,7 +123,7 @@ def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJa
 
     z = np.concatenate([np.asarray(u0, dtype=float) / c, np.asarray(v0, dtype=float) / v_scale])
     r, forces, film_force, h_min, payload = residual(z)
-    fresh, increment, since = False, 0.0, 0
+    fresh, increment, since, updates = False, 0.0, 0, 0
     for _ in range(max_iterations):
         since += 1
         if since > 8:  # slow contraction: a new Jacobian is allowed again
@@ -146,12 +149,13 @@ def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJa
             continue
         jacobian.broyden(lam * step, trial[0] - r)
         z = z + lam * step
+        updates += 1
         r, forces, film_force, h_min, payload = trial
         increment = float(c * np.max(np.abs(lam * step[:n]))) if n else 0.0
     bore = float(c * np.max(np.abs(r[:n]))) if n else 0.0
     force = float(np.max(np.abs(r[n:])))
     return BalanceOutcome(c * z[:n], v_scale * z[n:], payload, solves, bore, force,
-                          increment, bore <= 1e3 * tolerance and force <= ACCEPTABLE)
+                          increment, bore <= 1e3 * tolerance and force <= ACCEPTABLE, updates)
 
 
 def _converged(r: np.ndarray, n: int, c: float, tolerance: float) -> bool:

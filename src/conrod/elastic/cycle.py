@@ -5,6 +5,9 @@ there (the coupling is already converged, so this is one film solve) and gives:
 
 * ``coupling_iterations`` — film solves of the couplings on the accepted path of that step
   (the orbit's own trial solves for its Jacobian are not counted) [-];
+* ``newton_updates`` — Newton updates of those couplings (the film solves less each
+  coupling's solve at its start value and the line-search trials); written when the
+  couplings are Newton iterations (not for the mass-conserving film's content step) [-];
 * ``force_residual_N`` — |F + W| of the massless force balance (the normal component taken
   by the contact circle removed); with a moving mass, |F + W − m a| with a of the
   implicit step that ended there (orbit with mass on the elastic bore), else from the
@@ -46,6 +49,7 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
              "bore_displacement_min_m", "bore_displacement_max_m")
     columns = {name: np.zeros(len(cycle.crank_angle)) for name in names}
     force = np.zeros((len(cycle.crank_angle), 2))
+    updates = np.zeros(len(cycle.crank_angle))
     deformation = np.zeros((len(cycle.crank_angle), len(film.housing.angles)))
     peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
     peak_pressure = None
@@ -63,10 +67,13 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
         force[i] = result.force_x, result.force_y
         deformation[i] = after.deformation
         columns["coupling_iterations"][i] = memory.iterations
+        updates[i] = memory.updates
         columns["coupling_residual_m"][i] = after.residual
         columns["deformation_increment_m"][i] = memory.increment
         columns["bore_displacement_min_m"][i] = after.deformation.min()
         columns["bore_displacement_max_m"][i] = after.deformation.max()
+    if updates.any():
+        columns["newton_updates"] = updates
     columns["force_residual_N"] = _force_residual(problem, cycle, force, massless,
                                                   _step_accelerations(film_memory))
     return ElasticCycle(deformation, np.asarray(film.housing.angles), columns, peak,

@@ -82,6 +82,8 @@ class ElasticMemory:
     crank_angle : float  Crank angle φ of the current step [rad].
     elapsed : float  Crank angle turned since the orbit started [rad].
     iterations : int  Film solves of the couplings since the last step [-].
+    updates : int  Newton updates of the couplings since the last step (the film solves
+        less the start values' solves and the line-search trials) [-].
     residual : float  max|G(u)| of the last coupling [m].
     increment : float  Last deformation increment max|Δu| [m].
     deformation_rate : float  max|u_new − u_old| / dt over the last step [m/s].
@@ -99,6 +101,7 @@ class ElasticMemory:
     crank_angle: float
     elapsed: float = 0.0
     iterations: int = 0
+    updates: int = 0
     residual: float = 0.0
     increment: float = 0.0
     deformation_rate: float = 0.0
@@ -251,7 +254,7 @@ class ElasticFilm(FilmWrapper):
         turned = self.crank_speed * dt
         return dataclasses.replace(
             memory, inner=inner, crank_angle=memory.crank_angle + turned,
-            elapsed=memory.elapsed + turned, iterations=0, deformation_rate=rate,
+            elapsed=memory.elapsed + turned, iterations=0, updates=0, deformation_rate=rate,
             step_start=memory.deformation, reference=memory.deformation, reference_dt=dt)
 
     def force(self, state: FilmState) -> tuple[float, float]:
@@ -314,7 +317,8 @@ class ElasticFilm(FilmWrapper):
         result, inner = self._finish(outcome.payload)
         after = dataclasses.replace(
             memory, inner=inner, deformation=outcome.deformation,
-            iterations=memory.iterations + outcome.iterations, residual=outcome.residual,
+            iterations=memory.iterations + outcome.iterations,
+            updates=memory.updates + outcome.updates, residual=outcome.residual,
             increment=outcome.increment)
         return (float(outcome.velocity[0]), float(outcome.velocity[1]),
                 outcome.force_residual, after)
@@ -362,6 +366,7 @@ class ElasticFilm(FilmWrapper):
             memory.reference is not None) else 0.0
         return dataclasses.replace(
             memory, crank_angle=crank_angle, elapsed=memory.elapsed + turned, iterations=0,
+            updates=0,
             reference=memory.deformation, reference_dt=dt, deformation_rate=rate)
 
     def evaluator(self, state: FilmState, memory: ElasticMemory):

@@ -99,7 +99,8 @@ ElasticMassConservingFilm`) from ``memory`` (``previous``: one step earlier, BDF
     film.joint_solves += outcome.iterations
     after = dataclasses.replace(
         memory, inner=inner, deformation=outcome.deformation, crank_angle=angle,
-        elapsed=elapsed, iterations=outcome.iterations, residual=outcome.residual,
+        elapsed=elapsed, iterations=outcome.iterations, updates=outcome.updates,
+        residual=outcome.residual,
         increment=outcome.increment,
         deformation_rate=float(np.max(np.abs(outcome.deformation - memory.deformation)))
         / dt, reference=memory.deformation, reference_dt=dt)

@@ -109,7 +109,7 @@ def mass_step(film, request: MassStepRequest, memory, previous=None,
     at_end = dataclasses.replace(
         memory, crank_angle=request.crank_angle, elapsed=memory.elapsed + turned,
         clocked=True, reference=bore_reference(memory, previous, request.bdf2),
-        reference_dt=request.tau, iterations=0)
+        reference_dt=request.tau, iterations=0, updates=0)
     share = settings.share(at_end.elapsed)
     operator = share * film.housing.corrected_compliance
     inertia = share * film.inertia_deformation(request.crank_angle)
@@ -136,11 +136,11 @@ def mass_step(film, request: MassStepRequest, memory, previous=None,
         c * max(film.crank_speed, 1e-3), film._coupling.tolerance,
         5 * settings.max_iterations, settings.increment_share,
         chord=_chord(film, share > 0.0),
-        travel=-tau * _trig(film))
+        travel=-tau * _trig(film), refresh_after_first=True)
     payload: PressureEvaluation = outcome.payload
     after = dataclasses.replace(
         at_end, inner=payload.memory(), deformation=outcome.deformation,
-        iterations=outcome.iterations, residual=outcome.residual,
+        iterations=outcome.iterations, updates=outcome.updates, residual=outcome.residual,
         increment=outcome.increment,
         deformation_rate=float(np.max(np.abs(outcome.deformation - memory.deformation)))
         / request.dt)

@@ -112,8 +112,11 @@ class ElasticRunResults:
                 f"({100.0 * (e.p_max - r.p_max) / r.p_max:+.1f} %)")
         iterations = self.columns.get("coupling_iterations")
         if iterations is not None and len(iterations):
-            lines["coupling"] = (f"{float(np.mean(iterations)):.1f} film solves per step "
-                                 "(mean, all force balances of the step)")
+            updates = self.columns.get("newton_updates")
+            newton = ("" if updates is None else
+                      f", {float(np.mean(updates)):.1f} Newton updates")
+            lines["coupling"] = (f"{float(np.mean(iterations)):.1f} film solves{newton} per "
+                                 "step (mean, all force balances of the step)")
         return lines
 
 
@@ -142,6 +145,8 @@ def elastic_summary_items(results: ElasticRunResults) -> dict:
     items["elastic"] = {
         **(results.info or {}),
         "mean_coupling_iterations": float(np.mean(columns["coupling_iterations"])),
+        **({"mean_newton_updates": float(np.mean(columns["newton_updates"]))}
+           if "newton_updates" in columns else {}),
         "max_force_residual_N": float(np.max(columns["force_residual_N"])),
         "max_coupling_residual_m": float(np.max(columns["coupling_residual_m"])),
         "bore_displacement_min_m": float(np.min(columns["bore_displacement_min_m"])),
