@@ -142,7 +142,9 @@ def _failure(problem: OrbitProblem, phi: float, outcome) -> ConvergenceError:
                 f"{outcome.memory.residual:.3g} m")
     return ConvergenceError(
         f"orbit with mass on the elastic bore: the step did not balance the load after "
-        f"{MAX_HALVINGS} halvings ({what}); reduce solver.max_step_deg or "
+        f"{MAX_HALVINGS} halvings ({what}); change solver.max_step_deg (steps of "
+        "0.25-2 deg run on the shipped rods; much shorter steps stiffen the bore's squeeze "
+        "term, across whose cavitation boundary the iteration can cycle), lower "
         "housing.increment_share, or run the massless orbit (solver.integrator = "
         "'quasi_static')", where=f"crank angle {math.degrees(phi) % 720.0:.2f} deg",
         residual=residual)
