@@ -292,8 +292,7 @@ def test_compliant_rod_under_heavy_load_lowers_h_min(shipped, tmp_path):
     with the rod's compliance and with the load): below the shipped modulus h_min falls as
     the rod softens at every load, the fall at E/4 grows with the load, and the bore that
     gives way under the film lowers p_max (Oh & Huebner 1973). Not asserted: the step from
-    the rigid bore to E, whose sign depends on the load (+5.9 % at 8 kN): the bore first
-    widens the conjunction before it pinches the film at its edge."""
+    the rigid bore to E, whose sign depends on the load (+5.9 % at 8 kN)."""
     falls = []
     for size in (2_500.0, 8_000.0, 26_000.0):
         load = np.array([-size, 0.0])
