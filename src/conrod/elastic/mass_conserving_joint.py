@@ -89,7 +89,7 @@ ElasticMassConservingFilm`) from ``memory`` (``previous``: one step earlier, BDF
             np.asarray(guess, dtype=float), np.asarray(load, dtype=float), inertia, operator,
             c, c * max(film.crank_speed, 1e-3), film._coupling.tolerance, JOINT_SOLVES,
             film.settings.increment_share, chord=_chord(film, share > 0.0, bdf2),
-            travel=-tau * _trig(film))
+            travel=-tau * _trig(film), refresh_after_first=True)
     except (CaseError, ConvergenceError):
         return None
     fx, fy, inner = outcome.payload.step
