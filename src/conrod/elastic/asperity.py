@@ -72,6 +72,35 @@ def asperity_field(h: np.ndarray, roughness: float, scale: float
     return pressure, slope
 
 
+OPEN_GAP_SHARE = 1e-3
+"""Film thickness, as a share of the radial clearance, that the contact circle on the
+deformed bore keeps open (:func:`open_radius`) [-]."""
+
+
+def deformed_min_gap(angles: np.ndarray, clearance: float, deformation: np.ndarray,
+                     position) -> float:
+    """min_j (c − x cos θ_j − y sin θ_j + u_j) [m]: h_min on the deformed bore (a 2-D
+    housing deforms alike at every z) for the journal at ``position`` (x, y) [m], bore-node
+    angles θ [rad], corrected displacement u [m]; ≤ 0 where the film is closed."""
+    gap = (clearance - position[0] * np.cos(angles) - position[1] * np.sin(angles)
+           + deformation)
+    return float(np.min(gap))
+
+
+def open_radius(angles: np.ndarray, clearance: float, deformation: np.ndarray, x: float,
+                y: float) -> float:
+    """Largest |e| [m] along the direction of (x, y) [m] at which the deformed film keeps
+    h ≥ :data:`OPEN_GAP_SHARE` c at every bore node: the contact circle is no longer
+    rigid, min over cos(θ_j − ψ) > 0 of (c + u_j − h_c)/cos(θ_j − ψ)."""
+    e = float(np.hypot(x, y))
+    if e <= 0.0:
+        return clearance
+    cosine = (x * np.cos(angles) + y * np.sin(angles)) / e
+    facing = cosine > 1e-12
+    room = clearance * (1.0 - OPEN_GAP_SHARE) + deformation[facing]
+    return float(max(np.min(room / cosine[facing]), 0.0))
+
+
 @dataclass(frozen=True)
 class DeformedAsperity:
     """Asperity contact on the film nodes of an elastic film.

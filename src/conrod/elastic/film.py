@@ -49,7 +49,7 @@ from typing import Any
 
 import numpy as np
 
-from conrod.elastic.asperity import DeformedAsperity
+from conrod.elastic.asperity import DeformedAsperity, deformed_min_gap, open_radius
 from conrod.elastic.balance import BalanceJacobian, solve_balance
 from conrod.elastic.coupling import (
     CouplingOutcome,
@@ -414,12 +414,17 @@ class ElasticFilm(FilmWrapper):
         return respond
 
     def deformed_min_film_thickness(self, position, memory: ElasticMemory) -> float:
-        """Smallest film thickness on the bore deformed by ``memory`` with the journal at
-        ``position`` (x, y) [m], min_j (c − x cos θ_j − y sin θ_j + u_j) [m] (≤ 0: closed)."""
-        angles = self.housing.angles
-        gap = (self.base.geometry.radial_clearance - position[0] * np.cos(angles)
-               - position[1] * np.sin(angles) + memory.deformation)
-        return float(np.min(gap))
+        """h_min [m] on the bore deformed by ``memory``, journal at ``position`` (x, y) [m]
+        (:func:`conrod.elastic.asperity.deformed_min_gap`; ≤ 0: closed)."""
+        return deformed_min_gap(self.housing.angles, self.base.geometry.radial_clearance,
+                                memory.deformation, position)
+
+    def open_radius(self, x: float, y: float, memory: ElasticMemory) -> float:
+        """Largest |e| [m] along the direction of (x, y) [m] at which the film on the bore
+        deformed by ``memory`` stays open (:func:`conrod.elastic.asperity.open_radius`):
+        the contact circle of the massless orbit on the deformed bore."""
+        return open_radius(self.housing.angles, self.base.geometry.radial_clearance,
+                           memory.deformation, x, y)
 
     def with_contact_response(self, response, payload: PressureEvaluation):
         """``response`` of the film plus the asperity contact's local terms at ``payload``
