@@ -139,7 +139,7 @@ def _failure(problem: OrbitProblem, phi: float, outcome, start: _Point) -> Conve
     """What stopped the orbit, where, by how much [N], h_min on the deformed film at the
     last accepted state [m], and what to change."""
     size = float(np.hypot(*_load(problem, phi)))
-    h_min = problem.film.deformed_min_film_thickness(start.position, start.memory)
+    h_min = _deformed_h_min(problem, start)
     if outcome is None:
         what = (f"the deformed film closed at every trial end state; h_min = {h_min:.3g} m "
                 "on the deformed film at the last accepted step")
@@ -153,6 +153,12 @@ def _failure(problem: OrbitProblem, phi: float, outcome, start: _Point) -> Conve
         f"orbit with mass on the elastic bore: the step did not balance the load after "
         f"{MAX_HALVINGS} halvings ({what}); {_advice(problem)}",
         where=f"crank angle {math.degrees(phi) % 720.0:.2f} deg", residual=residual)
+
+
+def _deformed_h_min(problem: OrbitProblem, point: _Point) -> float:
+    """h_min on the deformed film at ``point`` [m] (NaN for a film that does not say)."""
+    measure = getattr(problem.film, "deformed_min_film_thickness", None)
+    return float("nan") if measure is None else measure(point.position, point.memory)
 
 
 def _advice(problem: OrbitProblem) -> str:
@@ -221,7 +227,7 @@ def _check_circle(problem: OrbitProblem, point: _Point, phi: float) -> None:
         return
     e = float(np.hypot(*point.position))
     if e > problem.contact_radius:
-        h_min = film.deformed_min_film_thickness(point.position, point.memory)
+        h_min = _deformed_h_min(problem, point)
         raise ConvergenceError(
             f"orbit with mass on the elastic bore: the journal centre left the contact "
             f"circle (e = {e:.3g} m > {problem.contact_radius:.3g} m; h_min = {h_min:.3g} m "
