@@ -147,7 +147,8 @@ class Simulation:
 
         loads = self.load_cycle()
         settings = dataclasses.replace(coupling_settings(self.case), cycle=loads.cycle)
-        return elastic_film(film, housing, loads.crank_speed, settings)
+        return elastic_film(film, housing, loads.crank_speed, settings,
+                            _asperity_parameters(self.case))
 
     def _named_film(self) -> FilmModel:
         """The film of ``[solver] film`` with the case's pressure–viscosity law."""

@@ -162,7 +162,13 @@ class ContactResults:
         }
 
 
-def _contact_from_asperity(case, cycle) -> tuple[np.ndarray, np.ndarray]:
+def _contact_from_asperity(case, cycle, asperity_force=None) -> tuple[np.ndarray, np.ndarray]:
+    """(asperity force [N], line-of-centres angle [rad]); ``asperity_force`` [N] when the
+    film computed it on its own (deformed) film, else on the rigid shell from the orbit."""
+    angle = np.arctan2(np.asarray(cycle.eccentricity_y, dtype=float),
+                       np.asarray(cycle.eccentricity_x, dtype=float))
+    if asperity_force is not None:
+        return np.asarray(asperity_force, dtype=float), angle
     bearing = case.bearing
     params = AsperityParameters.from_case(case).kernel_parameters(
         0.5 * bearing.diameter, bearing.width
@@ -173,19 +179,20 @@ def _contact_from_asperity(case, cycle) -> tuple[np.ndarray, np.ndarray]:
     return np.hypot(fx, fy), np.arctan2(ey, ex)
 
 
-def _contact_force_and_angle(case, cycle) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _contact_force_and_angle(case, cycle, asperity_force=None
+                             ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(P_c [N], friction force [N], contact angle [rad]) per output angle: the orbit's hard
     contact, plus under Greenwood–Tripp the asperity force with μ_dry boundary friction."""
     force = np.maximum(np.asarray(cycle.contact_force, dtype=float), 0.0)
     friction = np.abs(np.asarray(cycle.friction_force, dtype=float))  # magnitude, any sign
     if case.contact.model == "greenwood_tripp":
-        asperity, angle = _contact_from_asperity(case, cycle)
+        asperity, angle = _contact_from_asperity(case, cycle, asperity_force)
         mu = case.contact.dry_friction_coefficient
         return force + asperity, friction + mu * asperity, angle
     return force, friction, np.asarray(cycle.contact_angle, dtype=float)
 
 
-def analyse_contact(case, cycle) -> ContactResults:
+def analyse_contact(case, cycle, asperity_force=None) -> ContactResults:
     """Contact, Hertz stress, friction work and wear for the periodic cycle of an orbit.
 
     case : :class:`conrod.cases.case.Case` with ``[bearing]`` (radial clearance set) and
@@ -193,6 +200,8 @@ def analyse_contact(case, cycle) -> ContactResults:
     cycle : per-angle results with the fields of :class:`conrod.results.CycleResults`
         (crank_angle, contact_force, friction_force, contact_angle, journal_rotation,
         eccentricity_x/_y, load_x/_y, h_min, p_max).
+    asperity_force : ndarray or None  Asperity force per output angle [N] as the film
+        computed it (on the deformed bore of an elastic big end); None: on the rigid shell.
     """
     bearing, section = case.bearing, case.contact
     if bearing is None or bearing.radial_clearance is None:
@@ -202,7 +211,7 @@ def analyse_contact(case, cycle) -> ContactResults:
     if crank_angle.size < 3:
         raise CaseError(f"contact analysis needs at least 3 output angles, got {crank_angle.size}")
     cycle_rad = cycle_length(crank_angle)
-    force, friction, angle = _contact_force_and_angle(case, cycle)
+    force, friction, angle = _contact_force_and_angle(case, cycle, asperity_force)
     modulus = contact_modulus(
         section.journal_elastic_modulus, section.journal_poisson_ratio,
         section.shell_elastic_modulus, section.shell_poisson_ratio,

@@ -14,7 +14,9 @@ there (the coupling is already converged, so this is one film solve) and gives:
   periodic central difference of the output velocities [N];
 * ``deformation_increment_m`` — the last deformation increment max|Δu| of the coupling [m];
 * ``bore_displacement_min_m`` / ``_max_m`` — range of the corrected bore displacement [m];
-* ``coupling_residual_m`` — max|G(u)| of the coupling [m].
+* ``coupling_residual_m`` — max|G(u)| of the coupling [m];
+* ``asperity_force_N`` — with mixed lubrication carried by the film, the Greenwood–Tripp
+  asperity force on the deformed film [N] (:mod:`conrod.elastic.asperity`).
 """
 
 from __future__ import annotations
@@ -72,6 +74,9 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
         columns["deformation_increment_m"][i] = memory.increment
         columns["bore_displacement_min_m"][i] = after.deformation.min()
         columns["bore_displacement_max_m"][i] = after.deformation.max()
+        if "asperity_force_N" in result.extra:
+            columns.setdefault("asperity_force_N", np.zeros(len(cycle.crank_angle)))
+            columns["asperity_force_N"][i] = result.extra["asperity_force_N"]
     if updates.any():
         columns["newton_updates"] = updates
     columns["force_residual_N"] = _force_residual(problem, cycle, force, massless,

@@ -49,6 +49,7 @@ from typing import Any
 
 import numpy as np
 
+from conrod.elastic.asperity import DeformedAsperity, deformed_min_gap, open_radius
 from conrod.elastic.balance import BalanceJacobian, solve_balance
 from conrod.elastic.coupling import (
     CouplingOutcome,
@@ -163,10 +164,16 @@ class ElasticFilm(FilmWrapper):
         (:class:`conrod.elastic.housing.Housing`).
     crank_speed : float  Crank angular velocity ω [rad/s] (advances φ by ω dt).
     settings : ElasticSettings  Coupling controls.
+    asperity : tuple or None  Greenwood–Tripp parameters (R [m], L [m], σ [m], K E' [Pa]) of
+        :func:`conrod.contact.asperity.kernel_parameters` (mixed lubrication). With the
+        exact film response the asperity pressure is taken on the deformed film, loads the
+        bore and is part of the journal force (:mod:`conrod.elastic.asperity`,
+        :meth:`carries_asperity`); otherwise the orbit adds the rigid asperity force.
     """
 
     def __init__(self, base: Any, housing: Any, crank_speed: float,
-                 settings: ElasticSettings | None = None):
+                 settings: ElasticSettings | None = None,
+                 asperity: tuple[float, float, float, float] | None = None):
         if not isinstance(base, SupportsDeformation):
             raise CaseError(f"film = {base.name!r} cannot take the bore deformation of an "
                             "elastic housing (allowed: 'reynolds' or 'mass_conserving')")
@@ -194,6 +201,14 @@ class ElasticFilm(FilmWrapper):
         self.exact = has_exact_response(self.base) and self.settings.method == "quasi_newton"
         self._nodal = (nodal_force_weights(self.base, housing.angles, housing.radius)
                        if self.exact else None)
+        self.contact = (DeformedAsperity.from_parameters(asperity, self._nodal,
+                                                         self.base._force_weights)
+                        if asperity is not None and self.exact else None)
+
+    def carries_asperity(self) -> bool:
+        """True when the asperity contact is part of this film's force, taken on the
+        deformed film (the orbit then adds no rigid asperity force) [-]."""
+        return self.contact is not None
 
     # ----------------------------------------------------------- capabilities
     def initial_history(self) -> np.ndarray:
@@ -381,7 +396,9 @@ class ElasticFilm(FilmWrapper):
             deformed = rated(state, self._field(u), rate)
             if self.exact:  # pressure only; the characteristics once, for the answer
                 solved = evaluate_pressure(self.base, deformed, inner)
-                forces = np.sum(self._nodal * solved.pressure, axis=1)
+                if self.contact is not None:  # asperity pressure on the deformed film
+                    solved = self.contact.attach(solved)
+                forces = np.sum(self._nodal * solved.load_pressure, axis=1)
                 return forces, solved.min_film_thickness(), solved
             result, after = solve_film(self.base, deformed, inner, with_pressure=True)
             forces = self.housing.nodal_forces(result.pressure, self._z)
@@ -396,9 +413,30 @@ class ElasticFilm(FilmWrapper):
         step = memory.reference_dt if use_rate else None
 
         def respond(payload: PressureEvaluation):
-            return film_response(self.base, payload.state, payload.pressure, self._nodal,
-                                 step)
+            return self.with_contact_response(
+                film_response(self.base, payload.state, payload.pressure, self._nodal, step),
+                payload)
         return respond
+
+    def deformed_min_film_thickness(self, position, memory: ElasticMemory) -> float:
+        """h_min [m] on the bore deformed by ``memory``, journal at ``position`` (x, y) [m]
+        (:func:`conrod.elastic.asperity.deformed_min_gap`; ≤ 0: closed)."""
+        return deformed_min_gap(self.housing.angles, self.base.geometry.radial_clearance,
+                                memory.deformation, position)
+
+    def open_radius(self, x: float, y: float, memory: ElasticMemory) -> float:
+        """Largest |e| [m] along the direction of (x, y) [m] at which the film on the bore
+        deformed by ``memory`` stays open (:func:`conrod.elastic.asperity.open_radius`):
+        the contact circle of the massless orbit on the deformed bore."""
+        return open_radius(self.housing.angles, self.base.geometry.radial_clearance,
+                           memory.deformation, x, y)
+
+    def with_contact_response(self, response, payload: PressureEvaluation):
+        """``response`` of the film plus the asperity contact's local terms at ``payload``
+        (:meth:`conrod.elastic.asperity.DeformedAsperity.add_response`)."""
+        if self.contact is None or payload.contact_slope is None:
+            return response
+        return self.contact.add_response(response, payload.contact_slope)
 
     def _finish(self, payload) -> tuple[FilmResult, Any]:
         """(film result, inner memory) of an evaluation's payload."""

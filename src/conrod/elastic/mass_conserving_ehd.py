@@ -250,9 +250,12 @@ def _rigid(evaluate, nodes: int) -> CouplingOutcome:
 
 
 def elastic_film(base: Any, housing: Any, crank_speed: float,
-                 settings: ElasticSettings | None = None) -> ElasticFilm:
+                 settings: ElasticSettings | None = None,
+                 asperity: tuple[float, float, float, float] | None = None) -> ElasticFilm:
     """The film ``base`` on the deforming bore of ``housing``: the implicit content step for
-    an isoviscous mass-conserving film, :class:`ElasticFilm` otherwise."""
+    an isoviscous mass-conserving film, :class:`ElasticFilm` otherwise; ``asperity``: the
+    Greenwood–Tripp parameters of mixed lubrication (taken on the deformed film by the
+    isoviscous Reynolds film, else added by the orbit on the rigid shell)."""
     if isinstance(base, MassConservingFilm) and base.pressure_viscosity is None:
         return ElasticMassConservingFilm(base, housing, crank_speed, settings)
-    return ElasticFilm(base, housing, crank_speed, settings)
+    return ElasticFilm(base, housing, crank_speed, settings, asperity)

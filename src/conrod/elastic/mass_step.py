@@ -103,7 +103,9 @@ def mass_step(film, request: MassStepRequest, memory, previous=None,
               extra_force=None, earlier=None) -> MassStepOutcome:
     """The step of ``request`` from the elastic ``film``'s ``memory`` (at the start of the
     step; ``previous``: one step earlier); ``extra_force(x, y)`` an additional force on
-    the journal (asperity contact) [N], left out of the Jacobian."""
+    the journal [N], left out of the Jacobian (the rigid asperity force, which the orbit
+    passes only for a film that does not carry the asperity contact on its deformed film
+    itself — :meth:`conrod.elastic.film.ElasticFilm.carries_asperity`)."""
     settings = film.settings
     turned = film.crank_speed * request.dt
     at_end = dataclasses.replace(
@@ -172,8 +174,9 @@ def _responder(film, tau: float, mass: np.ndarray):
     trig = _trig(film)
 
     def respond(payload: PressureEvaluation) -> FilmResponse:
-        response = film_response(film.base, payload.state, payload.pressure, film._nodal,
-                                 tau if film.settings.deformation_rate else None)
+        response = film.with_contact_response(  # asperity terms with the bore's
+            film_response(film.base, payload.state, payload.pressure, film._nodal,
+                          tau if film.settings.deformation_rate else None), payload)
         nodal_by_velocity = -tau * response.nodal_by_bore @ trig
         force_by_velocity = -tau * response.force_by_bore @ trig - np.diag(mass) / tau
         if not film.settings.deformation_rate:  # the journal's own squeeze term

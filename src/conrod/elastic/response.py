@@ -122,27 +122,55 @@ class PressureEvaluation:
 
     state : FilmState  The deformed (rated) state.  problem : the film's discrete problem.
     pressure : ndarray  Converged p(θ, z) [Pa].  info : dict  Solver diagnostics.
+    contact_pressure : ndarray or None  Greenwood–Tripp asperity pressure p_a(h) on the
+        deformed film [Pa] (:mod:`conrod.elastic.asperity`); None without mixed lubrication.
+    contact_slope : ndarray or None  dp_a/dh there [Pa/m].
     """
 
     state: Any
     problem: Any
     pressure: np.ndarray
     info: dict
+    contact_pressure: np.ndarray | None = None
+    contact_slope: np.ndarray | None = None
+
+    @property
+    def load_pressure(self) -> np.ndarray:
+        """Film plus asperity pressure, the load on bore and journal [Pa]."""
+        if self.contact_pressure is None:
+            return self.pressure
+        return self.pressure + self.contact_pressure
 
     def force(self, film: ReynoldsFilm) -> np.ndarray:
-        """Film force on the journal (F_x, F_y) [N]."""
+        """Film force on the journal, asperity force included (F_x, F_y) [N]."""
         w_x, w_y = film._force_weights
-        return -np.array([np.sum(self.pressure * w_x), np.sum(self.pressure * w_y)])
+        load = self.load_pressure
+        return -np.array([np.sum(load * w_x), np.sum(load * w_y)])
+
+    def contact_force(self, film: ReynoldsFilm) -> np.ndarray:
+        """Asperity force on the journal (A_x, A_y) [N]; zero without mixed lubrication."""
+        if self.contact_pressure is None:
+            return np.zeros(2)
+        w_x, w_y = film._force_weights
+        return -np.array([np.sum(self.contact_pressure * w_x),
+                          np.sum(self.contact_pressure * w_y)])
 
     def min_film_thickness(self) -> float:
         """Smallest nodal film thickness [m]."""
         return float(self.problem.h.min())
 
     def finish(self, film: ReynoldsFilm) -> tuple[FilmResult, ReynoldsMemory]:
-        """All characteristics, pressure included, and the film memory after the solve."""
+        """All characteristics, pressure included, and the film memory after the solve; with
+        asperity contact its force is in the journal force and its size in
+        ``extra['asperity_force_N']`` [N]."""
         result = film._characteristics(self.problem, self.pressure, self.pressure, self.state,
                                        self.info)
         result.pressure = self.pressure
+        if self.contact_pressure is not None:  # the journal force holds the asperity force
+            contact = self.contact_force(film)
+            result.force_x += float(contact[0])
+            result.force_y += float(contact[1])
+            result.extra["asperity_force_N"] = float(np.hypot(*contact))
         return result, ReynoldsMemory(self.pressure)
 
     def memory(self) -> ReynoldsMemory:

@@ -9,6 +9,7 @@ import time
 import numpy as np
 
 from conrod import registry
+from conrod.contact.analysis import analyse_contact
 from conrod.elastic.cycle import elastic_cycle
 from conrod.errors import CaseError
 from conrod.film.capabilities import HasContentStep
@@ -64,6 +65,10 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     diagnostics = elastic_cycle(problem, results.cycle, orbit.last.film_memory,
                                 massless=name == "quasi_static")
     film = problem.film
+    if film.carries_asperity():  # contact columns from the asperity on the deformed film
+        results = dataclasses.replace(results, contact=analyse_contact(
+            simulation.case, results.cycle, diagnostics.columns.get(
+                "asperity_force_N", np.zeros(len(results.cycle.crank_angle)))))
     elastic_seconds = time.perf_counter() - start
     companion = simulation.rigid_companion(integrator=name)  # same journal model as above
     rigid = None

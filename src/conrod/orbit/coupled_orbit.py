@@ -16,9 +16,13 @@ cycle and after a halved step, BDF2 otherwise,
 (backward Euler) down to 1/2^:data:`MAX_HALVINGS`; then the orbit stops with
 :class:`~conrod.errors.ConvergenceError` naming the crank angle and the force residual [N].
 
-The journal has no contact phase here: a step whose end position leaves the contact
-circle stops the orbit with the crank angle and the advice to run the massless orbit, whose
-contact treatment works on the deformed bore.
+Contact. With mixed lubrication the elastic film carries the Greenwood–Tripp asperity
+pressure on its deformed film (:mod:`conrod.elastic.asperity`): film and asperities hold
+the journal while the deformed film is open (h_min > 0), with no contact circle. Without an
+asperity model the journal has no contact phase here: a step whose end leaves the contact
+circle widened by one clearance, or whose deformed film closes, stops the orbit with
+:class:`~conrod.errors.ConvergenceError` naming the crank angle, h_min on the deformed film
+[m] and the fix (mixed lubrication in ``[contact]``, or the massless orbit).
 """
 
 from __future__ import annotations
@@ -29,7 +33,7 @@ from typing import Any, Protocol, runtime_checkable
 import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
-from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.problem import CarriesAsperityContact, OrbitProblem, OrbitState
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -114,14 +118,15 @@ def _advance(problem: OrbitProblem, phi0: float, phi1: float, start: _Point,
     except (CaseError, ConvergenceError):  # the film closed at a trial end state
         outcome = None
     if outcome is not None and outcome.converged:
-        _check_circle(problem, outcome.position, phi1)
+        _check_circle(problem, _Point(outcome.position, outcome.velocity, outcome.memory),
+                      phi1)
         older = start.before
         behind = _Point(start.position, start.velocity, start.memory,  # two points kept
                         None if older is None else _Point(older.position, older.velocity,
                                                           older.memory))
         return _Point(outcome.position, outcome.velocity, outcome.memory, behind), 1, True
     if depth >= MAX_HALVINGS:
-        raise _failure(problem, phi1, outcome)
+        raise _failure(problem, phi1, outcome, start)
     middle = 0.5 * (phi0 + phi1)
     first = _Point(start.position, start.velocity, start.memory)
     half, count, _ = _advance(problem, phi0, middle, first, depth + 1)
@@ -130,24 +135,42 @@ def _advance(problem: OrbitProblem, phi0: float, phi1: float, start: _Point,
     return end, count + more, False
 
 
-def _failure(problem: OrbitProblem, phi: float, outcome) -> ConvergenceError:
-    """What stopped the orbit, where, by how much [N], and what to change."""
+def _failure(problem: OrbitProblem, phi: float, outcome, start: _Point) -> ConvergenceError:
+    """What stopped the orbit, where, by how much [N], h_min on the deformed film at the
+    last accepted state [m], and what to change."""
     size = float(np.hypot(*_load(problem, phi)))
+    h_min = _deformed_h_min(problem, start)
     if outcome is None:
-        what = "the film closed at every trial end state"
+        what = (f"the deformed film closed at every trial end state; h_min = {h_min:.3g} m "
+                "on the deformed film at the last accepted step")
         residual = float("nan")
     else:
         residual = outcome.force_residual
         what = (f"force residual {residual:.3g} N of a {size:.3g} N load, bore residual "
-                f"{outcome.memory.residual:.3g} m")
+                f"{outcome.memory.residual:.3g} m, h_min = {h_min:.3g} m on the deformed "
+                "film at the last accepted step")
     return ConvergenceError(
         f"orbit with mass on the elastic bore: the step did not balance the load after "
-        f"{MAX_HALVINGS} halvings ({what}); change solver.max_step_deg (steps of "
-        "0.25-2 deg run on the shipped rods; much shorter steps stiffen the bore's squeeze "
-        "term, across whose cavitation boundary the iteration can cycle), lower "
-        "housing.increment_share, or run the massless orbit (solver.integrator = "
-        "'quasi_static')", where=f"crank angle {math.degrees(phi) % 720.0:.2f} deg",
-        residual=residual)
+        f"{MAX_HALVINGS} halvings ({what}); {_advice(problem)}",
+        where=f"crank angle {math.degrees(phi) % 720.0:.2f} deg", residual=residual)
+
+
+def _deformed_h_min(problem: OrbitProblem, point: _Point) -> float:
+    """h_min on the deformed film at ``point`` [m] (NaN for a film that does not say)."""
+    measure = getattr(problem.film, "deformed_min_film_thickness", None)
+    return float("nan") if measure is None else measure(point.position, point.memory)
+
+
+def _advice(problem: OrbitProblem) -> str:
+    """What to change when the journal with mass cannot go on: without an asperity model
+    nothing carries the load once the deformed film closes."""
+    massless = "run the massless orbit (solver.integrator = 'quasi_static')"
+    if problem.asperity is None:
+        return ("enable mixed lubrication ([contact] model = 'greenwood_tripp') so that "
+                f"asperity contact carries the load on the deformed film, or {massless}")
+    return ("change solver.max_step_deg (steps of 0.25-2 deg run on the shipped rods; much "
+            "shorter steps stiffen the bore's squeeze term, across whose cavitation boundary "
+            f"the iteration can cycle), lower housing.increment_share, or {massless}")
 
 
 def _step(problem: OrbitProblem, phi1: float, dt: float, start: _Point):
@@ -183,22 +206,32 @@ def _load(problem: OrbitProblem, phi: float) -> np.ndarray:
 
 
 def _asperity(problem: OrbitProblem):
-    """(x, y) → Greenwood–Tripp asperity force [N], None without mixed lubrication."""
-    if problem.asperity is None:
+    """(x, y) → Greenwood–Tripp asperity force on the rigid shell [N]; None without mixed
+    lubrication or when the film carries it on the deformed film
+    (:attr:`~conrod.orbit.problem.OrbitProblem.rigid_asperity`)."""
+    params = problem.rigid_asperity
+    if params is None:
         return None
     from conrod.contact.asperity import asperity_force
 
     def force(x: float, y: float):
-        return asperity_force(x, y, problem.clearance, problem.asperity)
+        return asperity_force(x, y, problem.clearance, params)
     return force
 
 
-def _check_circle(problem: OrbitProblem, position: np.ndarray, phi: float) -> None:
-    """ConvergenceError when the journal centre leaves the contact circle."""
-    e = float(np.hypot(*position))
+def _check_circle(problem: OrbitProblem, point: _Point, phi: float) -> None:
+    """ConvergenceError when the journal centre leaves the (widened) contact circle and no
+    asperity contact on the deformed film carries the load there; with it the journal is
+    held by film and asperities while the deformed film is open (h_min > 0), and a closed
+    film stops the step itself."""
+    film = problem.film
+    if isinstance(film, CarriesAsperityContact) and film.carries_asperity():
+        return
+    e = float(np.hypot(*point.position))
     if e > problem.contact_radius:
+        h_min = _deformed_h_min(problem, point)
         raise ConvergenceError(
-            f"orbit with mass on the elastic bore: the journal centre reached the contact "
-            f"circle (e = {e:.3g} m > {problem.contact_radius:.3g} m), which this orbit does "
-            "not treat; run the massless orbit (solver.integrator = 'quasi_static')",
+            f"orbit with mass on the elastic bore: the journal centre left the contact "
+            f"circle (e = {e:.3g} m > {problem.contact_radius:.3g} m; h_min = {h_min:.3g} m "
+            f"on the deformed film), which this orbit does not treat; {_advice(problem)}",
             where=f"crank angle {math.degrees(phi) % 720.0:.2f} deg")

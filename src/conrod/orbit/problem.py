@@ -17,7 +17,7 @@ import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any
+from typing import Any, Protocol, runtime_checkable
 
 import numba as nb
 import numpy as np
@@ -28,6 +28,16 @@ from conrod.loads.cycle import LoadCycle
 from conrod.orbit.memory import FilmSession
 
 ForceFunction = Callable[[float, float, float, float, float, float], tuple[float, float]]
+
+
+@runtime_checkable
+class CarriesAsperityContact(Protocol):
+    """A film whose force already holds the Greenwood–Tripp asperity contact, taken on its
+    own (deformed) film thickness (:class:`conrod.elastic.film.ElasticFilm`)."""
+
+    def carries_asperity(self) -> bool:
+        """True when this configuration of the film carries the asperity force [-]."""
+        ...
 
 
 @dataclass(frozen=True)
@@ -61,7 +71,9 @@ class OrbitProblem:
     dry_friction : float  Dry friction coefficient μ_dry [-].
     contact_film_thickness : float  h at which hard contact starts [m].
     asperity : tuple or None  Greenwood–Tripp parameters (R [m], L [m], σ [m], K E' [Pa]) of
-        :func:`conrod.contact.asperity.asperity_force`, added to the film force when given.
+        :func:`conrod.contact.asperity.asperity_force`: mixed lubrication; the rigid asperity
+        force is added to the film force unless the film carries it
+        (:attr:`rigid_asperity`).
     """
 
     film: FilmModel
@@ -82,6 +94,16 @@ class OrbitProblem:
     def contact_radius(self) -> float:
         """Radius of the contact circle r_c = c − h_c [m]."""
         return self.clearance - self.contact_film_thickness
+
+    @property
+    def rigid_asperity(self) -> tuple[float, float, float, float] | None:
+        """The asperity parameters when the orbit adds the rigid-shell asperity force to the
+        film force; None without mixed lubrication or when the film carries the asperity
+        contact on its deformed film (the one place that decides) [-]."""
+        film = self.film
+        if isinstance(film, CarriesAsperityContact) and film.carries_asperity():
+            return None
+        return self.asperity
 
     @property
     def crank_speed(self) -> float:
@@ -122,8 +144,9 @@ class OrbitProblem:
     def force_function(self, session: FilmSession | None = None) -> ForceFunction:
         """(x, y, vx, vy, ω_j, ω_b) → film force (F_x, F_y) [N] for this film and viscosity;
         a film with memory reads and updates ``session`` (a fresh one when None)."""
-        if self.asperity is not None:
-            return _with_asperity(self._film_force(session), self.clearance, self.asperity)
+        asperity = self.rigid_asperity
+        if asperity is not None:
+            return _with_asperity(self._film_force(session), self.clearance, asperity)
         return self._film_force(session)
 
     def _film_force(self, session: FilmSession | None) -> ForceFunction:
@@ -170,8 +193,9 @@ def _frozen_force(force, params):
 
 
 def _with_asperity(film_force: ForceFunction, clearance: float, params) -> ForceFunction:
-    """Film force plus the Greenwood–Tripp asperity force (compiled kernel of
-    :mod:`conrod.contact.asperity`)."""
+    """Film force plus the Greenwood–Tripp asperity force on the rigid shell (compiled
+    kernel of :mod:`conrod.contact.asperity`); a film that carries the asperity contact on
+    its deformed film does not get it (:attr:`OrbitProblem.rigid_asperity`)."""
     from conrod.contact.asperity import asperity_force
 
     def total(x: float, y: float, vx: float, vy: float, wj: float, wb: float):

@@ -134,18 +134,19 @@ def quasi_static_cycle(
     for k in range(len(phi) - 1):
         reports.reached(phi[k])
         vx, vy, r1 = velocity(x, y, load_x[k], load_y[k], wj[k], wb[k], guess, phi[k])
-        contact = math.hypot(x, y) >= rc * (1.0 - 1e-9)
+        contact = math.hypot(x, y) >= _radius(problem, session, x, y, rc) * (1.0 - 1e-9)
         if contact:
             vx, vy = _inward_only(x, y, vx, vy)
         if k % record_every == 0:
             table[k // record_every] = (x, y, vx, vy, 0.0, 0.0, float(contact))
             if memory is not None:
                 memory[k // record_every] = session.snapshot()
-        xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, rc)
+        xp, yp = _project(problem, session, x + dt * vx, y + dt * vy, rc)
         k1 = k + 1
         vx2, vy2, r2 = velocity(xp, yp, load_x[k1], load_y[k1], wj[k1], wb[k1], (vx, vy),
                                 phi[k1])
-        x, y, _ = project_onto_circle(x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), rc)
+        x, y = _project(problem, session, x + 0.5 * dt * (vx + vx2),
+                        y + 0.5 * dt * (vy + vy2), rc)
         guess = (vx2, vy2)
         if max(r1, r2) > worst:
             worst, worst_k = max(r1, r2), k
@@ -208,6 +209,24 @@ def _compiled(problem: OrbitProblem, kernel: CompiledKernel, request: QuasiStati
     end_state = OrbitState(end[0], end[1], end[2], end[3], False)
     return CycleTrajectory.from_table(phi[::every][:n_out], table, end_state,
                                       2 * (len(phi) - 1))
+
+
+def _radius(problem: OrbitProblem, session: FilmSession, x: float, y: float,
+            rc: float) -> float:
+    """Radius of the contact circle along (x, y) [m]: r_c, or less where the film on a
+    deformed bore closes first (a film with ``open_radius``, the elastic big end: the
+    contact circle is not rigid there)."""
+    film = problem.film
+    if hasattr(film, "open_radius") and session.memory is not None:
+        return min(rc, film.open_radius(x, y, session.memory) * (1.0 - 1e-9))
+    return rc
+
+
+def _project(problem: OrbitProblem, session: FilmSession, x: float, y: float,
+             rc: float) -> tuple[float, float]:
+    """(x, y) [m] projected onto the contact circle along its direction when outside."""
+    px, py, _ = project_onto_circle(x, y, _radius(problem, session, x, y, rc))
+    return px, py
 
 
 def _inward_only(x: float, y: float, vx: float, vy: float) -> tuple[float, float]:
