@@ -65,6 +65,7 @@ def test_mixed_lubrication_orbit_shares_the_load_smoothly(repo):
     asperities carry part of the combustion load, the asperity force rises and falls
     smoothly, and contact (asperity force > 1 % of the peak load) sits around combustion.
     The same surfaces inside a MixedLubricationFilm (with boundary friction) agree."""
+    from conrod.results.summary import headline
     from conrod.simulation import Simulation
 
     class MixedSimulation(Simulation):
@@ -92,5 +93,8 @@ def test_mixed_lubrication_orbit_shares_the_load_smoothly(repo):
     (start, end), = contact.intervals
     assert 0.0 < math.degrees(start) < 40.0 and 40.0 < math.degrees(end) < 100.0
     assert float(np.max(results.cycle.contact_force)) == 0.0  # no hard contact needed
+    line = headline(results)["contact"]  # the engineer is told the asperities carry load
+    assert line.startswith("asperities (Greenwood–Tripp) carry up to ")
+    assert f"{np.max(force):.3g} N" in line
     wrapped = MixedSimulation(case).run().contact
     assert np.max(wrapped.contact_force) == pytest.approx(np.max(force), rel=0.05)

@@ -100,11 +100,12 @@ def headline(results: RunResults) -> dict[str, str]:
         f"{s.film_model} film", f"{s.integrator} integrator", model.get("housing"),
         model.get("viscosity"))))}
     lines["film h_min"] = _film_h_min_text(cycle)
-    lines["contact"] = _contact_text(cycle)
+    lines["contact"] = _contact_text(cycle, results.contact)
     lines["p_max"] = f"{s.p_max / 1e6:.2f} MPa at {math.degrees(s.p_max_crank_angle):.0f}°"
     lines["friction power"] = (f"{s.mean_total_friction_power:.1f} W = film "
                                f"{s.mean_friction_power:.1f} W + contact "
-                               f"{s.mean_contact_friction_power:.1f} W (cycle means)")
+                               f"{s.mean_contact_friction_power:.1f} W (cycle means)"
+                               + _boundary_friction_note(results.contact))
     lines["oil flow"] = (f"side {s.mean_side_flow * 6e4:.3g} l/min, supply "
                          f"{s.mean_supply_flow * 6e4:.3g} l/min (cycle means)")
     lines["temperature"] = ("no heat balance (no oil flow)" if s.effective_temperature is None
@@ -125,14 +126,47 @@ def _film_h_min_text(cycle: CycleResults) -> str:
     return f"{cycle.h_min[i] * 1e6:.3f} µm at {cycle.crank_angle_deg[i]:.0f}° (outside contact)"
 
 
-def _contact_text(cycle: CycleResults) -> str:
+def _contact_text(cycle: CycleResults, contact=None) -> str:
+    """Hard contact (intervals, load share) and, under mixed lubrication, the asperity
+    contact the film shares the load with."""
+    parts = []
     touching = np.asarray(cycle.in_contact, dtype=bool)
-    if not np.any(touching):
-        return "none"
-    share = contact_load_share(cycle)
-    i = int(np.argmax(share))
-    return (f"{_intervals_text(cycle)} ({touching.mean():.0%} of the cycle); carries up to "
-            f"{share[i]:.0%} of the load at {cycle.crank_angle_deg[i]:.0f}°")
+    if np.any(touching):
+        share = contact_load_share(cycle)
+        i = int(np.argmax(share))
+        parts.append(f"{_intervals_text(cycle)} ({touching.mean():.0%} of the cycle); carries "
+                     f"up to {share[i]:.0%} of the load at {cycle.crank_angle_deg[i]:.0f}°")
+    asperity = _asperity_text(cycle, contact)
+    if asperity:
+        parts.append(asperity)
+    return "; ".join(parts) if parts else "none"
+
+
+def _boundary_friction_note(contact) -> str:
+    """Under Greenwood–Tripp contact: that its boundary friction (on the contact line) is
+    not in this sum nor in the heat balance, which take film and hard-contact friction."""
+    if contact is None or contact.model != "greenwood_tripp":
+        return ""
+    if not np.any(np.asarray(contact.contact_force) > 0.0):
+        return ""
+    return "; the asperities' boundary friction is not in this sum or the heat balance"
+
+
+def _asperity_text(cycle: CycleResults, contact) -> str:
+    """Greenwood–Tripp asperity contact: its largest force [N] and load share, and the
+    cycle mean of its boundary friction power μ F_a |V_slide| [W]; '' without it."""
+    if contact is None or contact.model != "greenwood_tripp":
+        return ""
+    force = np.asarray(contact.contact_force, dtype=float)
+    if not np.any(force > 0.0):
+        return ""
+    load = np.hypot(cycle.load_x, cycle.load_y)
+    i = int(np.argmax(force))
+    share = force[i] / load[i] if load[i] > 0.0 else float("inf")
+    power = float(np.mean(np.abs(contact.friction_force * cycle.sliding_speed)))
+    return (f"asperities (Greenwood–Tripp) carry up to {force[i]:.3g} N ({share:.1%} of the "
+            f"load) at {cycle.crank_angle_deg[i]:.0f}°, boundary friction {power:.3g} W "
+            "(cycle mean)")
 
 
 STEP_STUDY_TOLERANCE = 0.02
