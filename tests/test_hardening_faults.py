@@ -135,6 +135,19 @@ def test_plausible_run_has_no_warning():
     assert plausibility.check_run(_fake_run(), _case()) == []
 
 
+def test_centre_excursion_is_measured_from_the_orbit_contact_circle():
+    """0.66 c beyond the clearance: a warning on a rigid bore (allowed 0.5 c), none on a
+    deforming bore whose contact circle is widened by one clearance (allowed 1.5 c)."""
+    run = _fake_run(eccentricity_ratio=(5, 1.66))
+    rigid = plausibility.check_run(run, _case())
+    assert rigid == ["journal centre 0.66 c beyond the clearance circle at crank angle "
+                     "450.0 deg (allowed: <= 0.5 c)"]
+    assert plausibility.check_run(run, _case(), contact_radius=2.0 * 20e-6) == []
+    far = _fake_run(eccentricity_ratio=(5, 2.6))
+    assert "allowed: <= 1.5 c" in plausibility.check_run(far, _case(),
+                                                          contact_radius=2.0 * 20e-6)[0]
+
+
 def test_table_film_past_capacity_is_an_error_naming_the_crank_angle():
     # the fuzzed table film returned p_max -5.2e24 Pa and a 66 MN contact force (25 kN load)
     with pytest.raises(ConvergenceError, match=r"p_max = -5.2e\+24 Pa .* at crank angle "

@@ -234,7 +234,8 @@ class Simulation:
             previous_cycle_eccentricity=_previous(orbit),
             contact=analyse_contact(self.case, cycle),
         )
-        warnings = (summary.warnings + tuple(check_run(results, self.case))  # or ConvergenceError
+        warnings = (summary.warnings  # check_run: or ConvergenceError
+                    + tuple(check_run(results, self.case, problem.contact_radius))
                     + tuple(contact_warnings(cycle)))
         wall_time = time.perf_counter() - start
         summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)

@@ -13,7 +13,9 @@ Orbit (``conrod run``):
   :data:`CONTACT_FORCE_WARNING_FACTOR` × → warning (a rigid journal cannot press harder
   than load plus inertia);
 * journal-centre displacement beyond the clearance by more than
-  :data:`PENETRATION_SHARE` of it → warning;
+  :data:`PENETRATION_SHARE` of it → warning; on a deforming bore beyond the orbit's
+  contact circle (widened by one clearance: the bore gives way, the deformed film is what
+  stops the journal) by more than that share;
 * minimum film thickness below the combined roughness σ while hard contact is not active
   (the asperities would touch: mixed lubrication not modelled) → warning;
 * heat-balance temperature above ``lubricant.max_temperature`` → warning;
@@ -79,21 +81,26 @@ def check_finite(record: Any, crank_angle: np.ndarray, what: str) -> None:
                 raise ConvergenceError(f"{what}: {name} is not finite", where=where)
 
 
-def check_run(results: Any, case: Any) -> list[str]:
+def check_run(results: Any, case: Any, contact_radius: float | None = None) -> list[str]:
     """Warnings for an orbit run; ConvergenceError where the result is meaningless.
 
-    results : RunResults; case : Case (``[contact]``, ``[lubricant]`` are read).
+    results : RunResults; case : Case (``[contact]``, ``[lubricant]`` are read);
+    contact_radius : the orbit's contact circle [m] (None: the clearance), beyond which
+        the centre may go by :data:`PENETRATION_SHARE` of the clearance.
     """
     cycle, c = results.cycle, results.clearance
     angle = cycle.crank_angle
     check_finite(cycle, angle, "orbit result")
     _check_film_range(cycle, c)
     warnings = _contact_force_warnings(cycle)
+    widening = 0.0 if contact_radius is None else max(contact_radius / c - 1.0, 0.0)
+    allowed = PENETRATION_SHARE + widening
     excursion = float(np.max(cycle.eccentricity_ratio)) - 1.0
-    if excursion > PENETRATION_SHARE:
+    if excursion > allowed:
         i = int(np.argmax(cycle.eccentricity_ratio))
-        warnings.append(f"journal centre {excursion:.2g} c beyond the clearance circle at "
-                        f"{_angle(angle, i)} (allowed: <= {PENETRATION_SHARE:g} c)")
+        circle = "clearance circle" if widening == 0.0 else "clearance circle of the rigid bore"
+        warnings.append(f"journal centre {excursion:.2g} c beyond the {circle} at "
+                        f"{_angle(angle, i)} (allowed: <= {allowed:g} c)")
     warnings += _roughness_warnings(cycle, case)
     warnings += _film_pressure_warnings(cycle)
     temperature = results.summary.effective_temperature
