@@ -244,7 +244,8 @@ class ElasticFilm(FilmWrapper):
         if not outcome.converged:
             raise ConvergenceError(
                 "elastohydrodynamic force balance did not converge (residual: film force + "
-                f"load, N; bore displacement residual {outcome.residual:.3g} m)",
+                f"load, N; bore displacement residual {outcome.residual:.3g} m"
+                f"{_film_closing(outcome.payload, self.carries_asperity())})",
                 where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
                 residual=outcome.force_residual * (float(np.hypot(*load)) + 1.0))
         result, inner = self._finish(outcome.payload)
@@ -403,6 +404,17 @@ class ElasticFilm(FilmWrapper):
         return CouplingOutcome(outcome.deformation, outcome.payload, outcome.iterations,
                                outcome.residual, outcome.increment,
                                outcome.residual <= self._coupling.tolerance)
+
+
+def _film_closing(payload, carries_asperity: bool) -> str:
+    """h_min on the deformed film of the last trial [m] and, without asperity contact,
+    the fix for a film too thin to carry the load ('' when the payload does not say)."""
+    if not isinstance(payload, PressureEvaluation):
+        return ""
+    h_min = payload.min_film_thickness()
+    advice = ("" if carries_asperity else "; if the film closes, enable mixed lubrication "
+              "([contact] model = 'greenwood_tripp') so that asperity contact carries the load")
+    return f"; h_min {h_min:.3g} m on the deformed film{advice}"
 
 
 def _extrapolated(before: ElasticMemory, after: ElasticMemory) -> np.ndarray:
