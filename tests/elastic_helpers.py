@@ -59,3 +59,62 @@ def winkler_housing(geometry, n_theta: int, bedding: float):
     theta = 2 * np.pi * np.arange(n_theta) / n_theta
     return Housing(theta, geometry.radius, bedding * np.eye(n_theta), np.zeros((n_theta, 4)),
                    correction="none")
+
+
+def captured_mass_step(film, request, memory):
+    """One implicit step of the journal with mass (:func:`conrod.elastic.mass_step.
+    mass_step` from ``memory``, BDF2 with ``memory`` as the previous one too) and the
+    residual parts its Newton iteration was given: (outcome, captured dict)."""
+    import conrod.elastic.mass_step as module
+
+    captured = {}
+    original = module.newton_balance
+
+    def capture(evaluate, respond, u0, v0, load, inertia, operator, clearance, v_scale,
+                *args, **kwargs):
+        captured.update(evaluate=evaluate, respond=respond, load=load, inertia=inertia,
+                        operator=operator, clearance=clearance, v_scale=v_scale)
+        return original(evaluate, respond, u0, v0, load, inertia, operator, clearance,
+                        v_scale, *args, **kwargs)
+
+    module.newton_balance = capture
+    try:
+        outcome = module.mass_step(film, request, memory, memory)
+    finally:
+        module.newton_balance = original
+    return outcome, captured
+
+
+def step_jacobian_and_residual(outcome, captured):
+    """At the converged step: the exact Jacobian of the scaled residual (G/c, (F + W −
+    m a)/|W|) from the film response, the residual function of z = (u/c, v/v_s), z there
+    and the film payload: (jacobian, residual, z0, payload)."""
+    from conrod.elastic.newton import _inverse
+
+    c, v_scale = captured["clearance"], captured["v_scale"]
+    n = len(outcome.memory.deformation)
+    w_scale = float(np.hypot(*captured["load"])) + 1.0
+
+    def residual(z):
+        u, v = c * z[:n], v_scale * z[n:]
+        forces, force, _, _ = captured["evaluate"](u, v)
+        g = (u - captured["operator"] @ forces - captured["inertia"]) / c
+        return np.concatenate([g, (force + captured["load"]) / w_scale])
+
+    payload = captured["evaluate"](outcome.memory.deformation, outcome.velocity)[3]
+    jac = np.linalg.inv(_inverse(captured["respond"](payload), captured["operator"], n, c,
+                                 v_scale, w_scale, True))
+    z0 = np.concatenate([outcome.memory.deformation / c, outcome.velocity / v_scale])
+    return jac, residual, z0, payload
+
+
+def assert_jacobian_columns(jac, residual, z0, columns, step: float = 1e-6,
+                            tolerance: float = 1e-5) -> None:
+    """Central differences of ``residual`` at ``z0`` equal the ``columns`` of ``jac``
+    within ``tolerance`` of each column's largest entry."""
+    for column in columns:
+        delta = np.zeros(len(z0))
+        delta[column] = step
+        numeric = (residual(z0 + delta) - residual(z0 - delta)) / (2.0 * step)
+        scale = np.max(np.abs(jac[:, column]))
+        assert np.max(np.abs(numeric - jac[:, column])) <= tolerance * scale
