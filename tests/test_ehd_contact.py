@@ -328,3 +328,20 @@ def test_massless_orbit_without_asperity_contact_names_the_closing_film_and_the_
                        r"film closes, enable mixed lubrication \(\[contact\] model = "
                        r"'greenwood_tripp'\).* at crank angle"):
         Simulation(case, rigid_companion=False).run()
+
+
+def test_failure_advice_follows_the_deformed_film():
+    """A step of the orbit with mass that fails on an open film (the KamAZ-740 rod at
+    0.125° steps stalls with h_min 5 µm, 0.1 c) is told to change the step, not to add
+    asperity contact; a closing film without an asperity model is told to add it."""
+    import types
+
+    from conrod.orbit.coupled_orbit import _advice
+
+    c = 50e-6
+    film_only = types.SimpleNamespace(asperity=None, clearance=c)
+    assert _advice(film_only, 5e-6).startswith("change solver.max_step_deg")
+    assert _advice(film_only, 3.2e-9).startswith("enable mixed lubrication")
+    assert _advice(film_only, float("nan")).startswith("enable mixed lubrication")
+    mixed = types.SimpleNamespace(asperity=(0.04, 0.03, 0.4e-6, 1e5), clearance=c)
+    assert _advice(mixed, 3.2e-9).startswith("change solver.max_step_deg")

@@ -151,7 +151,7 @@ def _failure(problem: OrbitProblem, phi: float, outcome, start: _Point) -> Conve
                 "film at the last accepted step")
     return ConvergenceError(
         f"orbit with mass on the elastic bore: the step did not balance the load after "
-        f"{MAX_HALVINGS} halvings ({what}); {_advice(problem)}",
+        f"{MAX_HALVINGS} halvings ({what}); {_advice(problem, h_min)}",
         where=f"crank angle {math.degrees(phi) % 720.0:.2f} deg", residual=residual)
 
 
@@ -161,11 +161,18 @@ def _deformed_h_min(problem: OrbitProblem, point: _Point) -> float:
     return float("nan") if measure is None else measure(point.position, point.memory)
 
 
-def _advice(problem: OrbitProblem) -> str:
+THIN_FILM_SHARE = 0.05
+"""h_min on the deformed film below this share of the clearance: a failing step is put down
+to the film closing, and mixed lubrication is the advice [-]."""
+
+
+def _advice(problem: OrbitProblem, h_min: float) -> str:
     """What to change when the journal with mass cannot go on: without an asperity model
-    nothing carries the load once the deformed film closes."""
+    nothing carries the load once the deformed film closes (h_min [m] small or unknown);
+    with a film still open the step or the increment share is what to change."""
     massless = "run the massless orbit (solver.integrator = 'quasi_static')"
-    if problem.asperity is None:
+    closing = not h_min > THIN_FILM_SHARE * problem.clearance  # NaN: not known, say it
+    if problem.asperity is None and closing:
         return ("enable mixed lubrication ([contact] model = 'greenwood_tripp') so that "
                 f"asperity contact carries the load on the deformed film, or {massless}")
     return ("change solver.max_step_deg (steps of 0.25-2 deg run on the shipped rods; much "
@@ -233,5 +240,6 @@ def _check_circle(problem: OrbitProblem, point: _Point, phi: float) -> None:
         raise ConvergenceError(
             f"orbit with mass on the elastic bore: the journal centre left the contact "
             f"circle (e = {e:.3g} m > {problem.contact_radius:.3g} m; h_min = {h_min:.3g} m "
-            f"on the deformed film), which this orbit does not treat; {_advice(problem)}",
+            f"on the deformed film), which this orbit does not treat; "
+            f"{_advice(problem, h_min)}",
             where=f"crank angle {math.degrees(phi) % 720.0:.2f} deg")
