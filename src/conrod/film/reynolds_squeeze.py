@@ -30,7 +30,7 @@ import numba as nb
 import numpy as np
 
 from conrod.film.massless import constrain_and_record, project_onto_circle
-from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve
+from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve, read_only
 
 ANGLE_TOLERANCE = 1.0e-8
 """Stop when the film force is within this angle of −W [rad]: the relative residual
@@ -80,7 +80,7 @@ class SqueezeGrid:
             weight_y = _half(weight_y * _doubling(mid), 0.0)
             source_unit = _half(np.broadcast_to(source_unit, cos_t.shape[:1] + (grid.n_z + 1,)),
                                 0.0)
-        self.fixed = fixed
+        self.fixed = read_only(fixed)  # one signature of multigrid_solve on every path
         self.cos_t, self.sin_t = cos_t, sin_t
         self.source_x = np.ascontiguousarray(source_unit * cos_t * ~fixed)
         self.source_y = np.ascontiguousarray(source_unit * sin_t * ~fixed)
@@ -108,7 +108,7 @@ def _doubling(mid: int) -> np.ndarray:
     return factor[None, :]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _unit_force(beta, pressure, h, g, speed, tolerance, max_cycles):
     """Film force (F_x, F_y) [N] at the unit squeeze speed ``speed`` in direction β and
     whether the multigrid converged; ``g`` = (fixed, source_x, source_y, w_x, w_y, dims...,
@@ -127,7 +127,7 @@ def _wrap(angle):
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, cos_t, sin_t,
                      g, clearance, speed, tolerance, max_cycles, tangent, scratch):
     """Quasi-static velocity (v_x, v_y) [m/s] with F(e, ė) + W = 0 by Booker's reduction

@@ -273,6 +273,8 @@ def specialise(name, rhs, jacobian=None, *, compiled, cache=False):
     functions = {"rhs": rhs}
     if jacobian is None:
         jacobian = wrap(_bind(_fd_jacobian, f"{name}_fd_jacobian", functions))
-    stage = wrap(_bind(_stage, f"{name}_stage", functions))
+    inline = (nb.njit(cache=cache, inline="always") if compiled  # no library of its own
+              else (lambda function: function))
+    stage = inline(_bind(_stage, f"{name}_stage", functions))
     return wrap(_bind(_segment, f"{name}_segment",
                       {"rhs": rhs, "jacobian": jacobian, "stage": stage}))
