@@ -37,6 +37,7 @@ from typing import Any
 import numba as nb
 import numpy as np
 
+from conrod.film.multigrid_operators import copy_into
 from conrod.film.reynolds_multigrid import multigrid_solve
 
 JACOBIAN_STEP = 1.0e-5
@@ -185,7 +186,8 @@ def _solve(q, viscosity, params, tolerance):
     if not change <= tolerance:
         stats[2] += 1.0
         return np.nan, np.nan
-    anchor[:4] = q
+    for k in range(4):
+        anchor[k] = q[k]
     return -np.sum(pressure * w_x), -np.sum(pressure * w_y)
 
 
@@ -221,9 +223,13 @@ def reynolds_jacobian(x, y, vx, vy, omega_sum, viscosity, params):
         fx, fy = _solve(shifted, viscosity, params, tolerance)
         by_q[0, k] = (fx - force[0]) / step
         by_q[1, k] = (fy - force[1]) / step
-        tangents[k] = (pressure - base) / step
-        pressure[:] = base
-    anchor[:4] = q
+        tangent = tangents[k]
+        for i in range(pressure.shape[0]):
+            for j in range(pressure.shape[1]):
+                tangent[i, j] = (pressure[i, j] - base[i, j]) / step
+        copy_into(pressure, base)
+    for k in range(4):
+        anchor[k] = q[k]
     anchor[4] = 1.0
     return force, _in_velocity(by_q, 0.5 * params[15] * omega_sum)
 
