@@ -98,3 +98,34 @@ def test_a_closure_force_runs_the_same_segment_uncached_and_in_python():
         results.append(u)
     np.testing.assert_allclose(results[0], [0.25, 0.0, 0.0, 0.0], atol=1e-7)
     np.testing.assert_allclose(results[1], results[0], rtol=0, atol=1e-12)
+
+
+def test_every_path_hands_the_multigrid_one_read_only_mask():
+    """The Python film (full and mid-plane-symmetric grid, writable or read-only mask) and
+    the compiled squeeze grid all give ``multigrid_solve`` a read-only mask, so numba
+    compiles it (and its callees) for one mask type; the solved pressure is the same for
+    a writable and a read-only mask, bit for bit."""
+    import numpy as np
+
+    from conrod.film import reynolds_multigrid as multigrid
+    from conrod.film.base import BearingGeometry, FilmState
+    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.film.reynolds_squeeze import SqueezeGrid
+
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
+    film = ReynoldsFilm(geometry, n_theta=36, n_z=8)
+    state = FilmState(eccentricity_x=15e-6, eccentricity_y=5e-6, velocity_x=1e-3,
+                      velocity_y=0.0, journal_speed=200.0, viscosity=0.02)
+    problem = film._problem(state)
+    source = np.linspace(-1e-9, 1e-9, problem.h.size).reshape(problem.h.shape)
+    fields = []
+    for symmetric in (False, True):
+        for fixed in (problem.fixed.copy(), multigrid.read_only(problem.fixed)):
+            pressure = np.where(fixed, 0.0, 1e5)
+            multigrid.solve_on_grid(pressure, problem.h, source, fixed, film.film_grid, 0.0,
+                                    1e-10, 50, symmetric)
+            fields.append(pressure)
+    assert not SqueezeGrid(film, 0.02).fixed.flags.writeable
+    assert np.array_equal(fields[0], fields[1]) and np.array_equal(fields[2], fields[3])
+    masks = [signature[3] for signature in multigrid.multigrid_solve.signatures]
+    assert masks and not any(mask.mutable for mask in masks)

@@ -218,11 +218,22 @@ def coarsen(field: np.ndarray, symmetric: bool) -> np.ndarray:
     if not symmetric:
         return field[::2, ::2].copy()
     n, m = field.shape
-    real = field[::2, 0 : m - 1 : 2]
-    out = np.empty((real.shape[0], real.shape[1] + 1), dtype=field.dtype)
-    out[:, :-1] = real
-    out[:, -1] = field[::2, m - 1]
+    columns = m // 2  # nodes 0, 2, … below the padding row m − 1
+    out = np.empty(((n + 1) // 2, columns + 1), dtype=field.dtype)
+    for i in range(out.shape[0]):  # element loops: no array-slice assignment to compile
+        for j in range(columns):
+            out[i, j] = field[2 * i, 2 * j]
+        out[i, columns] = field[2 * i, m - 1]
     return out
+
+
+@nb.njit(cache=True, inline="always")
+def copy_into(target: np.ndarray, source: np.ndarray) -> None:
+    """target := source for two arrays of one 2-D shape (an element loop: numba compiles
+    the checks of an array-slice assignment, ``target[:] = source``, once per process)."""
+    for i in range(target.shape[0]):
+        for j in range(target.shape[1]):
+            target[i, j] = source[i, j]
 
 
 @nb.njit(cache=True)

@@ -37,6 +37,7 @@ from typing import Any
 import numba as nb
 import numpy as np
 
+from conrod.film.multigrid_operators import copy_into
 from conrod.film.reynolds_multigrid import multigrid_solve
 
 JACOBIAN_STEP = 1.0e-5
@@ -141,7 +142,7 @@ def _fold(field: np.ndarray, symmetric: bool, n_z: int, padding=0.0) -> np.ndarr
     return half
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _squeeze_state(x, y, vx, vy, omega_sum, params):
     """q = (e_x, e_y, v_s,x, v_s,y) [m, m/s]: the pressure depends on the state only
     through q (module docstring)."""
@@ -149,7 +150,7 @@ def _squeeze_state(x, y, vx, vy, omega_sum, params):
     return np.array([x, y, vx + mean * y, vy - mean * x])
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _predict(q, params):
     """Move the warm-start field along the tangents ∂p/∂q of the last Jacobian from the
     state of the last solve to ``q`` (clipped at the cavitation pressure)."""
@@ -168,7 +169,7 @@ def _predict(q, params):
             pressure[i, j] = value if value > cavitation else cavitation
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _solve(q, viscosity, params, tolerance):
     """Film force [N] at q = (e, v_s), solved in place on the warm-start field."""
     (pressure, fixed, src_x, src_y, w_x, w_y, cos_t, sin_t, radius, d_theta, d_z,
@@ -185,11 +186,12 @@ def _solve(q, viscosity, params, tolerance):
     if not change <= tolerance:
         stats[2] += 1.0
         return np.nan, np.nan
-    anchor[:4] = q
+    for k in range(4):
+        anchor[k] = q[k]
     return -np.sum(pressure * w_x), -np.sum(pressure * w_y)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def reynolds_force(x, y, vx, vy, omega_sum, viscosity, params):
     """Film force (F_x, F_y) [N] at the Newton tolerance, warm-started from the last field
     moved along the last Jacobian's tangents (module docstring)."""
@@ -198,7 +200,7 @@ def reynolds_force(x, y, vx, vy, omega_sum, viscosity, params):
     return _solve(q, viscosity, params, params[16][0])
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def reynolds_jacobian(x, y, vx, vy, omega_sum, viscosity, params):
     """(F (2,) [N], ∂F/∂(e_x, e_y, ė_x, ė_y) (2, 4) [N/m, N s/m]) by forward differences
     in q = (e, v_s) from the converged field at the state (each solve at the Jacobian
@@ -221,14 +223,18 @@ def reynolds_jacobian(x, y, vx, vy, omega_sum, viscosity, params):
         fx, fy = _solve(shifted, viscosity, params, tolerance)
         by_q[0, k] = (fx - force[0]) / step
         by_q[1, k] = (fy - force[1]) / step
-        tangents[k] = (pressure - base) / step
-        pressure[:] = base
-    anchor[:4] = q
+        tangent = tangents[k]
+        for i in range(pressure.shape[0]):
+            for j in range(pressure.shape[1]):
+                tangent[i, j] = (pressure[i, j] - base[i, j]) / step
+        copy_into(pressure, base)
+    for k in range(4):
+        anchor[k] = q[k]
     anchor[4] = 1.0
     return force, _in_velocity(by_q, 0.5 * params[15] * omega_sum)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _in_velocity(by_q, mean):
     """∂F/∂(e, ė) from ∂F/∂(e, v_s), v_s = ė − κω̄(−e_y, e_x) with ``mean`` = κω̄."""
     out = by_q.copy()

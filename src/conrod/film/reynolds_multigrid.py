@@ -63,7 +63,7 @@ from conrod.film.multigrid_operators import (
 
 __all__ = ["add_prolongated", "coarse_levels", "coarsen", "coarsest_relaxation", "conductances",
            "gauss_seidel", "level_arrays", "multigrid_solve", "relax", "residual", "restrict",
-           "solve_on_grid", "stencil"]
+           "read_only", "solve_on_grid", "stencil"]
 
 PRE_SWEEPS = 2
 POST_SWEEPS = 1
@@ -359,6 +359,14 @@ def _unfold(half, pressure):
             pressure[i, j] = half[i, m - 1 - j]
 
 
+def read_only(mask: np.ndarray) -> np.ndarray:
+    """A read-only view of ``mask``: every caller hands :func:`multigrid_solve` the same
+    array type, so numba compiles it (and its callees) for one signature only."""
+    view = mask.view()
+    view.setflags(write=False)
+    return view
+
+
 def solve_on_grid(pressure, h, source, fixed, grid, cavitation_pressure, tolerance,
                   max_cycles, symmetric) -> tuple[int, float]:
     """Projected multigrid on a full (n_θ, n_z + 1) grid, in place on ``pressure`` [Pa];
@@ -367,12 +375,12 @@ def solve_on_grid(pressure, h, source, fixed, grid, cavitation_pressure, toleran
     Returns (cycles, last relative change [-]).
     """
     if not symmetric:
-        return multigrid_solve(pressure, h, source, fixed, grid.radius, grid.d_theta,
+        return multigrid_solve(pressure, h, source, read_only(fixed), grid.radius, grid.d_theta,
                                grid.d_z, cavitation_pressure, tolerance, max_cycles,
                                coarse_levels(grid.n_theta, grid.n_z), False)
     half, h_half, source_half, fixed_half = _fold(pressure, h, source, fixed)
     cycles, change = multigrid_solve(
-        half, h_half, source_half, fixed_half, grid.radius, grid.d_theta, grid.d_z,
+        half, h_half, source_half, read_only(fixed_half), grid.radius, grid.d_theta, grid.d_z,
         cavitation_pressure, tolerance, max_cycles, coarse_levels(grid.n_theta, grid.n_z // 2),
         True)
     _unfold(half, pressure)

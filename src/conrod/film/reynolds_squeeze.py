@@ -30,7 +30,8 @@ import numba as nb
 import numpy as np
 
 from conrod.film.massless import constrain_and_record, project_onto_circle
-from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve
+from conrod.film.multigrid_operators import copy_into
+from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve, read_only
 
 ANGLE_TOLERANCE = 1.0e-8
 """Stop when the film force is within this angle of −W [rad]: the relative residual
@@ -80,7 +81,7 @@ class SqueezeGrid:
             weight_y = _half(weight_y * _doubling(mid), 0.0)
             source_unit = _half(np.broadcast_to(source_unit, cos_t.shape[:1] + (grid.n_z + 1,)),
                                 0.0)
-        self.fixed = fixed
+        self.fixed = read_only(fixed)  # one signature of multigrid_solve on every path
         self.cos_t, self.sin_t = cos_t, sin_t
         self.source_x = np.ascontiguousarray(source_unit * cos_t * ~fixed)
         self.source_y = np.ascontiguousarray(source_unit * sin_t * ~fixed)
@@ -108,7 +109,7 @@ def _doubling(mid: int) -> np.ndarray:
     return factor[None, :]
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _unit_force(beta, pressure, h, g, speed, tolerance, max_cycles):
     """Film force (F_x, F_y) [N] at the unit squeeze speed ``speed`` in direction β and
     whether the multigrid converged; ``g`` = (fixed, source_x, source_y, w_x, w_y, dims...,
@@ -127,7 +128,7 @@ def _wrap(angle):
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, cos_t, sin_t,
                      g, clearance, speed, tolerance, max_cycles, tangent, scratch):
     """Quasi-static velocity (v_x, v_y) [m/s] with F(e, ė) + W = 0 by Booker's reduction
@@ -151,12 +152,15 @@ def squeeze_velocity(x, y, load_x, load_y, omega_mean, beta, slope, pressure, co
     solved_at = np.nan
     for _ in range(ANGLE_ITERATIONS):
         if not np.isnan(solved_at):
-            scratch[:] = pressure
+            copy_into(scratch, pressure)
             pressure += (beta - solved_at) * tangent
             np.maximum(pressure, 0.0, pressure)
         fx, fy, ok = _unit_force(beta, pressure, h, g, speed, film_tolerance, max_cycles)
         if not np.isnan(solved_at) and abs(beta - solved_at) > 1e-6:
-            tangent[:] = (pressure - scratch) / (beta - solved_at)
+            moved = beta - solved_at
+            for i in range(pressure.shape[0]):
+                for j in range(pressure.shape[1]):
+                    tangent[i, j] = (pressure[i, j] - scratch[i, j]) / moved
         solved_at = beta
         if not ok:
             return whirl_x, whirl_y, beta, slope, np.inf
@@ -213,17 +217,17 @@ def squeeze_reynolds_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed,
             clearance, speed, tolerance, max_cycles, tangent, scratch)
         vx, vy = constrain_and_record(x, y, vx, vy, contact_radius, k, record_every, out)
         xp, yp, _ = project_onto_circle(x + dt * vx, y + dt * vy, contact_radius)
-        scratch[:] = pressure
+        copy_into(scratch, pressure)
         if k > 0:  # p(corrector) ≈ p(predictor) + last step's difference
             pressure += field_2 - last_1
             np.maximum(pressure, 0.0, pressure)
-        last_1[:] = scratch
+        copy_into(last_1, scratch)
         mean = 0.5 * whirl_factor * (journal_speed[k + 1] + shell_speed[k + 1])
         vx2, vy2, beta2, slope, r2 = squeeze_velocity(
             xp, yp, load_x[k + 1], load_y[k + 1], mean, beta + turn, slope, pressure, cos_t,
             sin_t, g, clearance, speed, tolerance, max_cycles, tangent, scratch)
         turn, beta = _wrap(beta2 - beta), beta2
-        field_2[:] = pressure
+        copy_into(field_2, pressure)
         x, y, _ = project_onto_circle(
             x + 0.5 * dt * (vx + vx2), y + 0.5 * dt * (vy + vy2), contact_radius)
         worst = max(worst, r1, r2)

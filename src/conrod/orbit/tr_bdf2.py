@@ -232,7 +232,9 @@ def _segment(params, data, phi, end, u, h, max_step, rtol, atol, circle,
         while next_out < out_phi.size and (out_phi[next_out] < stop
                                            or (not hit and last
                                                and out_phi[next_out] <= stop)):
-            out_u[next_out] = _hermite((out_phi[next_out] - phi) / h, h, u, f, u1, f1)
+            row = _hermite((out_phi[next_out] - phi) / h, h, u, f, u1, f1)
+            for k in range(row.size):  # no array-slice assignment (compile time)
+                out_u[next_out, k] = row[k]
             next_out += 1
         if hit:
             return (STATUS_HIT, stop, _hermite(fraction, h, u, f, u1, f1), h, steps,
@@ -273,6 +275,8 @@ def specialise(name, rhs, jacobian=None, *, compiled, cache=False):
     functions = {"rhs": rhs}
     if jacobian is None:
         jacobian = wrap(_bind(_fd_jacobian, f"{name}_fd_jacobian", functions))
-    stage = wrap(_bind(_stage, f"{name}_stage", functions))
+    inline = (nb.njit(cache=cache, inline="always") if compiled  # no library of its own
+              else (lambda function: function))
+    stage = inline(_bind(_stage, f"{name}_stage", functions))
     return wrap(_bind(_segment, f"{name}_segment",
                       {"rhs": rhs, "jacobian": jacobian, "stage": stage}))
