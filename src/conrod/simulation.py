@@ -123,7 +123,8 @@ class Simulation:
         ``[solver] mass_x/mass_y`` when given. For engine loads (rod frame, x towards the
         small end): along the rod the piston plus the whole rod, across it the big-end share
         of the two-mass rod (:func:`conrod.loads.forces.two_mass_split`). For table loads
-        :data:`DEFAULT_TABLE_LOAD_MASS`.
+        :data:`DEFAULT_TABLE_LOAD_MASS`; a ``[load]`` table beside ``[engine]`` (which then
+        gives the crank train) takes the engine's masses.
         """
         s, engine = self.solver, self.case.engine
         if engine is not None:
@@ -249,7 +250,8 @@ class Simulation:
         law = self._lubricant.pressure_viscosity_law()
         model = {"housing": "elastic bore (EHD)" if self.elastic() else "rigid bore",
                  "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
-        if self.case.engine is not None and self.case.engine.pressure_model is not None:
+        engine = self.case.engine
+        if engine is not None and engine.pressure_model is not None and self.case.load is None:
             model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
         return model
 

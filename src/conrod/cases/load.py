@@ -1,4 +1,8 @@
-"""``[load]`` section: a tabulated bearing load instead of ``[engine]``.
+"""``[load]`` section: a tabulated bearing load instead of the engine loads of ``[engine]``.
+
+With both sections the table is the bearing load (``conrod run``, ``conrod loads``) and
+``[engine]`` gives only the crank train — the rod's inertia deformation of an elastic big
+end and the moving masses; both must turn at the same speed.
 
 The table (CSV) has the columns ``crank_angle_deg, load_x_N, load_y_N``: the load pressing
 the journal on the shell in the bearing (film) frame. Read by

@@ -27,3 +27,21 @@ def check_case(case: Any, solver: Any = None) -> None:
         if solver.contact_film_thickness >= clearance:
             raise range_error("solver.contact_film_thickness", solver.contact_film_thickness,
                               f">= 0 and < bearing.radial_clearance = {clearance:g}", "m")
+    _check_table_with_engine(case)
+
+
+def _check_table_with_engine(case: Any) -> None:
+    """A ``[load]`` table beside ``[engine]``: the table gives the bearing load and
+    ``[engine]`` only the crank train (the rod's inertia deformation of an elastic big end),
+    so both must turn at one speed."""
+    engine, table = case.engine, case.load
+    if engine is None or table is None:
+        return
+    if abs(engine.speed - table.speed) > 1e-9 * engine.speed:
+        raise range_error("engine.speed", engine.speed,
+                          f"= load.speed = {table.speed:g} (the [load] table gives the bearing "
+                          "load, [engine] the crank train of the rod's inertia)", "rpm")
+    if table.cycle_deg != 720:
+        raise range_error("load.cycle_deg", table.cycle_deg,
+                          "720 with [engine] (a four-stroke crank train)", "deg")
+

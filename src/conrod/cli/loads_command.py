@@ -35,7 +35,7 @@ def register(app: typer.Typer) -> None:
         """Engine loads on the big-end bearing: table, summary, polar and wear diagrams."""
         check_output_folder(out, inputs=(case_file,))
         case = Case.from_toml(case_file)
-        if case.engine is None and case.load is not None:
+        if case.load is not None:  # the table is the bearing load, as in `conrod run`
             _table_loads(case, out)
             return
         case.require("loads", "engine", "bearing")

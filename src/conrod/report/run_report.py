@@ -175,7 +175,7 @@ def engine_load_images(case_file: Path | None, case_data: dict | None) -> list[I
             case = Case.from_toml(case_file)
         else:
             return []
-        if case.engine is None:
+        if case.engine is None or case.load is not None:  # table loads: no engine diagrams
             return []
         loads = compute_engine_loads(case)
     except ConrodError:
