@@ -143,17 +143,13 @@ class PressureEvaluation:
 
     def force(self, film: ReynoldsFilm) -> np.ndarray:
         """Film force on the journal, asperity force included (F_x, F_y) [N]."""
-        w_x, w_y = film._force_weights
-        load = self.load_pressure
-        return -np.array([np.sum(load * w_x), np.sum(load * w_y)])
+        return _resultant(film, self.load_pressure)
 
     def contact_force(self, film: ReynoldsFilm) -> np.ndarray:
         """Asperity force on the journal (A_x, A_y) [N]; zero without mixed lubrication."""
         if self.contact_pressure is None:
             return np.zeros(2)
-        w_x, w_y = film._force_weights
-        return -np.array([np.sum(self.contact_pressure * w_x),
-                          np.sum(self.contact_pressure * w_y)])
+        return _resultant(film, self.contact_pressure)
 
     def min_film_thickness(self) -> float:
         """Smallest nodal film thickness [m]."""
@@ -176,6 +172,12 @@ class PressureEvaluation:
     def memory(self) -> ReynoldsMemory:
         """The film memory after the solve (its warm start), without the characteristics."""
         return ReynoldsMemory(self.pressure)
+
+
+def _resultant(film: ReynoldsFilm, pressure: np.ndarray) -> np.ndarray:
+    """Force of ``pressure`` [Pa] on the journal, −Σ p (w_x, w_y) (2,) [N]."""
+    w_x, w_y = film._force_weights
+    return -np.array([np.sum(pressure * w_x), np.sum(pressure * w_y)])
 
 
 def evaluate_pressure(film: ReynoldsFilm, state, memory: ReynoldsMemory | None

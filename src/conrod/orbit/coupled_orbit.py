@@ -33,7 +33,12 @@ from typing import Any, Protocol, runtime_checkable
 import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
-from conrod.orbit.problem import CarriesAsperityContact, OrbitProblem, OrbitState
+from conrod.orbit.problem import (
+    CarriesAsperityContact,
+    HasDeformedGap,
+    OrbitProblem,
+    OrbitState,
+)
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -157,8 +162,10 @@ def _failure(problem: OrbitProblem, phi: float, outcome, start: _Point) -> Conve
 
 def _deformed_h_min(problem: OrbitProblem, point: _Point) -> float:
     """h_min on the deformed film at ``point`` [m] (NaN for a film that does not say)."""
-    measure = getattr(problem.film, "deformed_min_film_thickness", None)
-    return float("nan") if measure is None else measure(point.position, point.memory)
+    film = problem.film
+    if not isinstance(film, HasDeformedGap):
+        return float("nan")
+    return film.deformed_min_film_thickness(point.position, point.memory)
 
 
 THIN_FILM_SHARE = 0.05

@@ -40,6 +40,20 @@ class CarriesAsperityContact(Protocol):
         ...
 
 
+@runtime_checkable
+class HasDeformedGap(Protocol):
+    """A film on a deforming bore that says where its deformed film closes, so the orbit's
+    contact circle is not rigid (:class:`conrod.elastic.film.ElasticFilm`)."""
+
+    def deformed_min_film_thickness(self, position: Any, memory: Any) -> float:
+        """h_min on the deformed film with the journal centre at ``position`` [m]."""
+        ...
+
+    def open_radius(self, x: float, y: float, memory: Any) -> float:
+        """Largest |e| along (x, y) at which the deformed film stays open [m]."""
+        ...
+
+
 @dataclass(frozen=True)
 class OrbitState:
     """Journal-centre state carried from cycle to cycle.

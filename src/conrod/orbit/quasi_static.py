@@ -31,7 +31,7 @@ from conrod.film.massless import (
 from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
 from conrod.orbit.content_orbit import content_cycle
 from conrod.orbit.memory import FilmSession
-from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.problem import HasDeformedGap, OrbitProblem, OrbitState
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -214,10 +214,10 @@ def _compiled(problem: OrbitProblem, kernel: CompiledKernel, request: QuasiStati
 def _radius(problem: OrbitProblem, session: FilmSession, x: float, y: float,
             rc: float) -> float:
     """Radius of the contact circle along (x, y) [m]: r_c, or less where the film on a
-    deformed bore closes first (a film with ``open_radius``, the elastic big end: the
+    deformed bore closes first (a film with :class:`HasDeformedGap`, the elastic big end: the
     contact circle is not rigid there)."""
     film = problem.film
-    if hasattr(film, "open_radius") and session.memory is not None:
+    if isinstance(film, HasDeformedGap) and session.memory is not None:
         return min(rc, film.open_radius(x, y, session.memory) * (1.0 - 1e-9))
     return rc
 

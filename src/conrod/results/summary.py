@@ -142,12 +142,19 @@ def _contact_text(cycle: CycleResults, contact=None) -> str:
     return "; ".join(parts) if parts else "none"
 
 
+def _asperity_force(contact) -> np.ndarray | None:
+    """Greenwood–Tripp asperity force per output angle [N]; None without asperities
+    carrying load."""
+    if contact is None or contact.model != "greenwood_tripp":
+        return None
+    force = np.asarray(contact.contact_force, dtype=float)
+    return force if np.any(force > 0.0) else None
+
+
 def _boundary_friction_note(contact) -> str:
     """Under Greenwood–Tripp contact: that its boundary friction (on the contact line) is
     not in this sum nor in the heat balance, which take film and hard-contact friction."""
-    if contact is None or contact.model != "greenwood_tripp":
-        return ""
-    if not np.any(np.asarray(contact.contact_force) > 0.0):
+    if _asperity_force(contact) is None:
         return ""
     return "; the asperities' boundary friction is not in this sum or the heat balance"
 
@@ -155,10 +162,8 @@ def _boundary_friction_note(contact) -> str:
 def _asperity_text(cycle: CycleResults, contact) -> str:
     """Greenwood–Tripp asperity contact: its largest force [N] and load share, and the
     cycle mean of its boundary friction power μ F_a |V_slide| [W]; '' without it."""
-    if contact is None or contact.model != "greenwood_tripp":
-        return ""
-    force = np.asarray(contact.contact_force, dtype=float)
-    if not np.any(force > 0.0):
+    force = _asperity_force(contact)
+    if force is None:
         return ""
     load = np.hypot(cycle.load_x, cycle.load_y)
     i = int(np.argmax(force))
