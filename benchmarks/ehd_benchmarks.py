@@ -41,8 +41,8 @@ def run(n_theta: int, n_z: int, stiffening: float, step: float, film: str,
     import tomllib
 
     from conrod.cases.case import Case
-    from conrod.elastic.housing import Housing
-    from conrod.simulation import Simulation
+    from conrod.housing.housing import Housing
+    from conrod.simulation.simulation import Simulation
 
     examples = ROOT / "examples"
     file_name, supply = CASES[case_name]

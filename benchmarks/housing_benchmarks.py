@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from conrod.cases.case import Case
-from conrod.elastic.housing import Housing
+from conrod.housing.housing import Housing
 from conrod.io.atomic import write_text
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "kamaz_740_truck_diesel.toml"
@@ -86,7 +86,7 @@ MEMORY_SCRIPT = """
 import resource, sys
 sys.path.insert(0, {bench!r})
 from housing_benchmarks import kamaz
-from conrod.elastic.housing import Housing
+from conrod.housing.housing import Housing
 Housing.from_case(kamaz({n}, {per}), use_cache=False)
 print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
 """

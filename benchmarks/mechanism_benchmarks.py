@@ -25,7 +25,7 @@ from conrod.mechanism.kernel import mechanism_rhs
 from conrod.mechanism.model import seed_initial_state
 from conrod.mechanism.setup import mechanism_case
 from conrod.mechanism.simulation import error_scale, simulate
-from conrod.mechanism.sweep import run_sweep
+from conrod.sweep.mechanism import run_sweep
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "kulayev_worn_rod_bearings.toml"
 OUTPUT = Path(__file__).with_suffix(".md")

@@ -27,7 +27,7 @@ from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.reynolds import ReynoldsFilm
 from conrod.film.short_bearing import ShortBearingFilm
 from conrod.io.atomic import write_text
-from conrod.simulation import Simulation
+from conrod.simulation.simulation import Simulation
 
 ROOT = Path(__file__).resolve().parents[1]
 OUTPUT = Path(__file__).with_suffix(".md")

@@ -8,8 +8,8 @@ from pathlib import Path
 import numpy as np
 
 from conrod.cases.case import Case
-from conrod.elastic.mesh_io import write_housing_mesh
-from conrod.elastic.mesher import annulus_mesh
+from conrod.housing.mesh_io import write_housing_mesh
+from conrod.housing.mesher import annulus_mesh
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -54,7 +54,7 @@ WINKLER_SETTINGS = {"rigid_start": 0.0, "ramp": np.radians(90.0)}
 def winkler_housing(geometry, n_theta: int, bedding: float):
     """A Winkler bore of ``n_theta`` nodes: node j moves out by ``bedding`` [m/N] × its
     nodal force, no inertia field, no rigid-body correction."""
-    from conrod.elastic.housing import Housing
+    from conrod.housing.housing import Housing
 
     theta = 2 * np.pi * np.arange(n_theta) / n_theta
     return Housing(theta, geometry.radius, bedding * np.eye(n_theta), np.zeros((n_theta, 4)),
@@ -62,10 +62,10 @@ def winkler_housing(geometry, n_theta: int, bedding: float):
 
 
 def captured_mass_step(film, request, memory):
-    """One implicit step of the journal with mass (:func:`conrod.elastic.mass_step.
+    """One implicit step of the journal with mass (:func:`conrod.ehd.mass_step.
     mass_step` from ``memory``, BDF2 with ``memory`` as the previous one too) and the
     residual parts its Newton iteration was given: (outcome, captured dict)."""
-    import conrod.elastic.mass_step as module
+    import conrod.ehd.mass_step as module
 
     captured = {}
     original = module.newton_balance
@@ -89,7 +89,7 @@ def step_jacobian_and_residual(outcome, captured):
     """At the converged step: the exact Jacobian of the scaled residual (G/c, (F + W −
     m a)/|W|) from the film response, the residual function of z = (u/c, v/v_s), z there
     and the film payload: (jacobian, residual, z0, payload)."""
-    from conrod.elastic.newton import _inverse
+    from conrod.ehd.newton import _inverse
 
     c, v_scale = captured["clearance"], captured["v_scale"]
     n = len(outcome.memory.deformation)

@@ -71,7 +71,7 @@ def test_every_result_file_is_in_the_manifest(tmp_path):
     from conrod import __version__
     from conrod.cases.case import Case
     from conrod.loads.engine_loads import compute_engine_loads
-    from conrod.results.output import figures, tables, write_results
+    from conrod.output.registry import figures, tables, write_results
 
     case = Case.from_toml(ROOT / "examples" / "passenger_car_diesel_2000rpm.toml")
     loads = compute_engine_loads(case, step_deg=2.0)
@@ -87,7 +87,7 @@ def test_every_result_file_is_in_the_manifest(tmp_path):
 
 
 def test_a_result_type_without_registered_outputs_is_refused(tmp_path):
-    from conrod.results.output import write_results
+    from conrod.output.registry import write_results
 
     with pytest.raises(TypeError, match="no tables registered"):
         write_results(object(), tmp_path)

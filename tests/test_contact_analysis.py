@@ -96,7 +96,7 @@ def test_hard_contact_summary_matches_seed_definitions(tmp_path):
 
 def test_write_files_tables_and_figures(tmp_path):
     import conrod.plotting  # noqa: F401  (registers the figures)
-    from conrod.results.output import write_results
+    from conrod.output.registry import write_results
 
     result = analyse_contact(_case(surface_elements=90), _combustion_cycle())
     paths = write_results(result, tmp_path)
@@ -161,7 +161,7 @@ def test_contact_section_errors_name_field_and_unit():
 def test_running_in_feeds_worn_profile_back_and_accumulates_wear():
     """Stand-in orbit whose contact force falls as the shell wears at the contact point
     (δ at θ = 90° opens the gap): the bookkeeping of the lumped stages must hold."""
-    from conrod.contact.running_in import run_in
+    from conrod.simulation.running_in import run_in
 
     case = _case(surface_elements=72, wear_coefficient_shell=1e-16)
     seen = []

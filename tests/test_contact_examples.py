@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from conrod.cases.case import Case
-from conrod.simulation import Simulation
+from conrod.simulation.simulation import Simulation
 
 
 def _run(case: Case):

@@ -66,7 +66,7 @@ def test_mixed_lubrication_orbit_shares_the_load_smoothly(repo):
     smoothly, and contact (asperity force > 1 % of the peak load) sits around combustion.
     The same surfaces inside a MixedLubricationFilm (with boundary friction) agree."""
     from conrod.results.summary import headline
-    from conrod.simulation import Simulation
+    from conrod.simulation.simulation import Simulation
 
     class MixedSimulation(Simulation):
         """Asperity force + boundary friction from the film wrapper instead of the solver."""

@@ -154,8 +154,8 @@ def test_worn_shell_film_opens_the_gap_of_a_reynolds_film():
 
 def test_run_in_refuses_films_that_ignore_the_worn_profile():
     from conrod.cases.case import Case
-    from conrod.contact.running_in import run_in
     from conrod.errors import CaseError
+    from conrod.simulation.running_in import run_in
 
     case = Case.from_dict({"bearing": {"diameter": 0.05, "width": 0.02,
                                        "radial_clearance": 25e-6}})

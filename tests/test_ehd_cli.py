@@ -12,7 +12,7 @@ import pytest
 from typer.testing import CliRunner
 
 from conrod.cli.app import _register_commands, app
-from conrod.elastic.housing import Housing
+from conrod.housing.housing import Housing
 from elastic_helpers import EXAMPLES, kamaz_case
 
 _register_commands()

@@ -11,12 +11,12 @@ import numpy as np
 import pytest
 
 from conrod.contact.asperity import asperity_force, asperity_pressure
-from conrod.elastic.asperity import f52_slope
-from conrod.elastic.film import ElasticFilm
-from conrod.elastic.housing import Housing
-from conrod.elastic.mass_step import MassStepRequest
+from conrod.ehd.asperity import f52_slope
+from conrod.ehd.film import ElasticFilm
+from conrod.ehd.mass_step import MassStepRequest
 from conrod.film.base import FilmState
-from conrod.simulation import Simulation
+from conrod.housing.housing import Housing
+from conrod.simulation.simulation import Simulation
 from elastic_helpers import (
     assert_jacobian_columns,
     captured_mass_step,

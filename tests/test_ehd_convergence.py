@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 
 from conrod.cases.case import Case
-from conrod.elastic.film import ElasticFilm
-from conrod.elastic.housing import Housing
+from conrod.ehd.film import ElasticFilm
 from conrod.film.base import FilmState
 from conrod.film.reynolds import ReynoldsFilm
+from conrod.housing.housing import Housing
 from conrod.units import rpm_to_rad_s
 from elastic_helpers import EXAMPLES
 

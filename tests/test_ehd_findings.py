@@ -11,17 +11,17 @@ import numpy as np
 import pytest
 
 from conrod.cases.case import Case
-from conrod.elastic.build import crank_kinematics
-from conrod.elastic.correction import correction_projector
-from conrod.elastic.fe import ClampedModel, Material, vector_basis
-from conrod.elastic.film import ElasticFilm, ElasticSettings
-from conrod.elastic.housing import Housing
-from conrod.elastic.mesher import Circle, FeMesh, annulus_mesh, quadratic_mesh
-from conrod.elastic.structure import StructuralHousing
+from conrod.ehd.film import ElasticFilm, ElasticSettings
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
+from conrod.housing.build import crank_kinematics
+from conrod.housing.correction import correction_projector
+from conrod.housing.fe import ClampedModel, Material, vector_basis
+from conrod.housing.housing import Housing
+from conrod.housing.mesher import Circle, FeMesh, annulus_mesh, quadratic_mesh
+from conrod.housing.structure import StructuralHousing
 from conrod.loads.engine_loads import compute_engine_loads
-from conrod.simulation import Simulation
+from conrod.simulation.simulation import Simulation
 from elastic_helpers import EXAMPLES
 
 STEEL = Material(2.1e11, 0.3, 7850.0)

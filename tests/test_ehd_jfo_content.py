@@ -1,5 +1,5 @@
 """Mass-conserving (JFO) film on a deforming bore stepped implicitly in its film content
-(:mod:`conrod.elastic.mass_conserving_ehd`): the stiff-bore limit is the rigid orbit of the
+(:mod:`conrod.ehd.mass_conserving_ehd`): the stiff-bore limit is the rigid orbit of the
 same integrator, and the deforming bore conserves oil over the periodic cycle."""
 
 from __future__ import annotations
@@ -9,8 +9,8 @@ import math
 import numpy as np
 import pytest
 
-from conrod.elastic.film import ElasticSettings
-from conrod.elastic.mass_conserving_ehd import ElasticMassConservingFilm, elastic_film
+from conrod.ehd.film import ElasticSettings
+from conrod.ehd.mass_conserving_ehd import ElasticMassConservingFilm, elastic_film
 from conrod.film.capabilities import HasContentStep
 from conrod.film.mass_conserving import MassConservingFilm
 from conrod.film.reynolds import ReynoldsFilm
@@ -72,11 +72,11 @@ def test_deforming_bore_conserves_oil_like_the_rigid_film(rigid):
 
 def test_jfo_and_reynolds_agree_on_the_same_deforming_bore(rigid):
     """Two different films on the same Winkler bore (the Reynolds one massless with the
-    bore's rate in its squeeze term, :mod:`conrod.elastic.rate`): h_min within 5 % as on
+    bore's rate in its squeeze term, :mod:`conrod.ehd.rate`): h_min within 5 % as on
     the rigid bore, and both lower p_max below their rigid value. Measured (24 × 4, 2°):
     JFO 4.06 µm / 8.25 MPa, Reynolds 4.11 µm / 7.59 MPa; rigid 3.85 / 10.67 and
     4.02 / 9.96."""
-    from conrod.elastic.film import ElasticFilm
+    from conrod.ehd.film import ElasticFilm
 
     jfo_film = _film(BEDDING)
     _, jfo, _ = orbit(jfo_film)

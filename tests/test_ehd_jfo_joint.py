@@ -1,5 +1,5 @@
 """Joint Newton step of the journal and the deforming bore for the mass-conserving film
-(:mod:`conrod.elastic.mass_conserving_joint`): its exact Jacobian against central
+(:mod:`conrod.ehd.mass_conserving_joint`): its exact Jacobian against central
 differences of the step, and the orbit it gives against the content orbit's own
 iteration around separate bore couplings."""
 
@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 import conrod.orbit.content_orbit as content_orbit
-from conrod.elastic.film import ElasticMemory
-from conrod.elastic.mass_conserving_joint import _evaluator, _responder
+from conrod.ehd.film import ElasticMemory
+from conrod.ehd.mass_conserving_joint import _evaluator, _responder
 from conrod.film.base import FilmState
 from conrod.film.capabilities import HasJointContentStep
 from test_ehd_jfo_content import BEDDING, N_THETA, _film

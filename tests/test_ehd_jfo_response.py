@@ -1,5 +1,5 @@
 """Exact response of the mass-conserving film's content step to the bore deformation
-(:mod:`conrod.elastic.mass_conserving_response`) against central differences of the film."""
+(:mod:`conrod.ehd.mass_conserving_response`) against central differences of the film."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import math
 
 import numpy as np
 
-from conrod.elastic.mass_conserving_response import content_step_response
-from conrod.elastic.response import nodal_force_weights
+from conrod.ehd.mass_conserving_response import content_step_response
+from conrod.ehd.response import nodal_force_weights
 from conrod.film.base import FilmState
 from conrod.film.mass_conserving import MassConservingFilm
 from test_orbit_jfo import OMEGA, fed_bearing

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from conrod.cases.case import Case
-from conrod.simulation import Simulation
+from conrod.simulation.simulation import Simulation
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -44,7 +44,7 @@ def test_stiff_rod_reproduces_the_rigid_jfo_orbit():
     """The shipped rod's compliance and inertia fields / 1e4 (modulus × 1e4): the rigid JFO
     orbit of the same implicit content steps within 0.2 % on h_min and p_max (measured
     +0.002 %, +0.006 %)."""
-    from conrod.elastic.housing import Housing
+    from conrod.housing.housing import Housing
 
     case = _case("mass_conserving")
     built = Housing.from_case(case)

@@ -1,4 +1,4 @@
-"""The Newton iteration of the coupled bore (:mod:`conrod.elastic.newton`) on a system with
+"""The Newton iteration of the coupled bore (:mod:`conrod.ehd.newton`) on a system with
 a known root: a stiffening spring bed, f(u) = −(u + u³) at every node, against the bore
 u = P C f + U, i.e. G(u) = u + (u + u³)·k − U = 0 node by node (k the diagonal compliance),
 whose root is the real root of a cubic (numpy.roots)."""
@@ -8,8 +8,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conrod.elastic.newton import ChordJacobian, newton_balance
-from conrod.elastic.response import FilmResponse
+from conrod.ehd.newton import ChordJacobian, newton_balance
+from conrod.ehd.response import FilmResponse
 
 COMPLIANCE = np.array([0.5, 1.0, 2.0])
 """Diagonal compliance k of the three nodes [m/N]."""

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conrod.elastic.housing import Housing
+from conrod.housing.housing import Housing
 from conrod.results.ehd import ElasticRunResults, elastic_summary_items
-from conrod.simulation import Simulation
+from conrod.simulation.simulation import Simulation
 from elastic_helpers import kamaz_case
 
 GRID = {"n_theta": 36, "n_z": 8, "film": "reynolds", "integrator": "quasi_static",
@@ -60,7 +60,7 @@ def test_results_folder_holds_elastic_rigid_and_comparison(stiff_run, tmp_path):
     import pandas as pd
 
     import conrod.plotting  # noqa: F401  (registers the figures)
-    from conrod.results.output import write_results
+    from conrod.output.registry import write_results
 
     write_results(stiff_run, tmp_path)
     cycle = pd.read_csv(tmp_path / "cycle.csv")

@@ -7,11 +7,11 @@ import dataclasses
 
 import numpy as np
 
-from conrod.elastic.rate import rated, with_deformation_rate
-from conrod.elastic.response import film_response, nodal_force_weights
-from conrod.elastic.transfer import nodal_forces
+from conrod.ehd.rate import rated, with_deformation_rate
+from conrod.ehd.response import film_response, nodal_force_weights
 from conrod.film.base import BearingGeometry, FilmState
 from conrod.film.reynolds import ReynoldsFilm
+from conrod.housing.transfer import nodal_forces
 
 RADIUS, CLEARANCE, STEP = 0.04, 5.0e-5, 1.0e-4  # [m], [m], rate time step [s]
 

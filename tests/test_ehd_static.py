@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 from conrod.cases.case import Case
-from conrod.elastic.film import ElasticFilm
-from conrod.elastic.housing import Housing
+from conrod.ehd.film import ElasticFilm
 from conrod.film.base import FilmState
-from conrod.simulation import Simulation
+from conrod.housing.housing import Housing
+from conrod.simulation.simulation import Simulation
 from elastic_helpers import EXAMPLES, kamaz_case
 
 N_THETA, N_Z = 36, 8

@@ -7,12 +7,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conrod.elastic.housing import Housing
-from conrod.elastic.mass_step import MassStepRequest
+from conrod.ehd.mass_step import MassStepRequest
+from conrod.housing.housing import Housing
 from conrod.orbit.coupled_orbit import coupled_cycle
 from conrod.orbit.problem import OrbitState
 from conrod.results.ehd import ElasticRunResults
-from conrod.simulation import Simulation
+from conrod.simulation.simulation import Simulation
 from elastic_helpers import (
     assert_jacobian_columns,
     captured_mass_step,

@@ -10,7 +10,7 @@ import pytest
 from typer.testing import CliRunner
 
 from conrod.cli.app import _register_commands, app
-from conrod.elastic.compliance_io import read_compliance
+from conrod.housing.compliance_io import read_compliance
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 KAMAZ = EXAMPLES / "kamaz_740_truck_diesel.toml"

@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 from skfem import FacetBasis, LinearForm, MeshTri, asm
 
-from conrod.elastic.fe import ClampedModel, Material, clamp_dofs_on_boundary, vector_basis
-from conrod.elastic.housing import Housing
-from conrod.elastic.mesher import Circle, FeMesh, annulus_mesh, quadratic_mesh
-from conrod.elastic.structure import StructuralHousing
+from conrod.housing.fe import ClampedModel, Material, clamp_dofs_on_boundary, vector_basis
+from conrod.housing.housing import Housing
+from conrod.housing.mesher import Circle, FeMesh, annulus_mesh, quadratic_mesh
+from conrod.housing.structure import StructuralHousing
 from elastic_helpers import kamaz_case, lame_bore_displacement, write_ring_msh
 
 STEEL = Material(2.1e11, 0.3, 7850.0)

@@ -8,10 +8,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conrod.elastic.compliance_io import write_compliance
-from conrod.elastic.correction import correction_projector
-from conrod.elastic.housing import Housing
-from conrod.elastic.inertia import rigid_rod_load_difference
+from conrod.housing.compliance_io import write_compliance
+from conrod.housing.correction import correction_projector
+from conrod.housing.housing import Housing
+from conrod.housing.inertia import rigid_rod_load_difference
 from elastic_helpers import kamaz_case
 
 

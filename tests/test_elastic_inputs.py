@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conrod.elastic.housing import Housing
-from conrod.elastic.mesh_io import write_housing_mesh
-from conrod.elastic.mesher import annulus_mesh
 from conrod.errors import CaseError
+from conrod.housing.housing import Housing
+from conrod.housing.mesh_io import write_housing_mesh
+from conrod.housing.mesher import annulus_mesh
 from elastic_helpers import kamaz_case, write_ring_msh
 
 

@@ -82,7 +82,7 @@ def test_heat_balance_includes_contact_friction():
     """Independent answer: the heat balance N = ρ c_p Q ΔT with N = film power + the mean of
     μ P_c |V| (here 0.1 P_c x 2 m/s where in contact)."""
     from conrod import Case
-    from conrod.simulation import _heat_balance_temperature
+    from conrod.simulation.simulation import _heat_balance_temperature
 
     cycle = _contact_cycle(0.5)
     lubricant = Case.from_dict(_periodic_case(), base_dir=EXAMPLES).lubricant
@@ -228,8 +228,8 @@ def test_run_registers_the_film_thickness_map_and_envelope():
     journal centre, so min over θ and φ of the map equals min over φ of c − |e|."""
     import conrod.plotting  # noqa: F401
     from conrod import Case, Simulation
+    from conrod.output.registry import figures
     from conrod.plotting.film_maps import film_thickness_over_cycle
-    from conrod.results.output import figures
 
     results = Simulation(Case.from_dict(_periodic_case(), base_dir=EXAMPLES)).run()
     files = {spec.file for spec in figures(results)}

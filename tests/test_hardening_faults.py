@@ -47,7 +47,7 @@ def no_computation(monkeypatch):
     def forbidden(*args, **kwargs):
         raise AssertionError("computation started before the output check")
 
-    monkeypatch.setattr("conrod.simulation.Simulation.run", forbidden)
+    monkeypatch.setattr("conrod.simulation.simulation.Simulation.run", forbidden)
     monkeypatch.setattr("conrod.cli.mechanism_command.simulate", forbidden)
     monkeypatch.setattr("conrod.cli.loads_command.compute_engine_loads", forbidden)
 

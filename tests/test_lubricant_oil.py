@@ -96,7 +96,7 @@ def test_heat_balance_iterates_with_the_walther_law(repo):
     import tomllib
 
     from conrod.cases.case import Case
-    from conrod.simulation import Simulation
+    from conrod.simulation.simulation import Simulation
 
     path = repo / "examples" / "passenger_car_diesel_2000rpm.toml"
     data = tomllib.loads(path.read_text(encoding="utf-8"))

@@ -18,7 +18,7 @@ from conrod.cases.case import Case
 from conrod.cli import mechanism_command
 from conrod.errors import CaseError
 from conrod.mechanism.setup import mechanism_case
-from conrod.mechanism.sweep import parse_sweep_option, run_sweep
+from conrod.sweep.mechanism import parse_sweep_option, run_sweep
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "kulayev_worn_rod_bearings.toml"
 MECHANISM_COLUMNS = {"crank_angle_deg", "piston_position_m", "big_end_gap_m", "small_end_gap_m",

@@ -94,7 +94,7 @@ def test_simulation_builds_the_case_law_and_refuses_maps(repo):
     import tomllib
 
     from conrod.cases.case import Case
-    from conrod.simulation import Simulation
+    from conrod.simulation.simulation import Simulation
 
     path = repo / "examples" / "passenger_car_diesel_2000rpm.toml"
     data = tomllib.loads(path.read_text(encoding="utf-8"))

@@ -25,8 +25,8 @@ from conrod.loads.pressure import read_pressure_trace
 from conrod.loads.table_load import load_cycle_from_table
 from conrod.mechanism.setup import mechanism_case
 from conrod.mechanism.simulation import simulate
+from conrod.output.tables import cycle_table, loads_table, summary_items
 from conrod.results.plausibility import check_mechanism
-from conrod.results.tables import cycle_table, loads_table, summary_items
 from hardening_helpers import (
     DELETE,
     EXAMPLES,

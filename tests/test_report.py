@@ -22,8 +22,8 @@ import conrod.plotting  # noqa: F401  (registers the figures)
 from conrod import Case, Simulation
 from conrod.cli.app import _register_commands, app
 from conrod.errors import CaseError
+from conrod.output.registry import write_results
 from conrod.report import build_report, write_report
-from conrod.results.output import write_results
 from conrod.sweep import Study, Sweep
 
 REPO = Path(__file__).resolve().parents[1]

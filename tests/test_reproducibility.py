@@ -17,8 +17,8 @@ from conrod.io.atomic import write_csv, write_json, write_text
 from conrod.loads.engine_loads import compute_engine_loads
 from conrod.mechanism.setup import mechanism_case
 from conrod.mechanism.simulation import simulate
-from conrod.results.output import write_results
-from conrod.results.tables import (
+from conrod.output.registry import write_results
+from conrod.output.tables import (
     cycle_table,
     impacts_text,
     loads_table,

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import conrod.simulation as simulation_module
+import conrod.simulation.simulation as simulation_module
 from conrod import Case, Simulation
 from conrod.errors import CaseError
 from conrod.film.reynolds import ReynoldsFilm

@@ -184,7 +184,7 @@ def test_a_failing_variant_is_a_row_not_a_crash(tmp_path, monkeypatch):
         raise ConvergenceError("orbit did not converge", where="crank angle 372.0 deg",
                                residual=0.5)
 
-    monkeypatch.setattr("conrod.simulation.Simulation.run", fail)
+    monkeypatch.setattr("conrod.simulation.simulation.Simulation.run", fail)
     record = worker_module.run_variant(variant.case_data, str(variant.case_file), variant.key,
                                        variant.axes, str(tmp_path))
     assert record["status"] == "failed"
@@ -224,8 +224,8 @@ def test_plot_sweep(swept, tmp_path):
 def test_mechanism_study_equals_the_mechanism_sweep(tmp_path):
     """command = "mechanism": the seed-003 clearance-joint runs through the same machinery;
     each row equals impact_statistics of the mechanism sweep at that operating point."""
+    from conrod.mechanism.regimes import impact_statistics
     from conrod.mechanism.setup import mechanism_case
-    from conrod.mechanism.sweep import impact_statistics
 
     case_file = REPO / "examples" / "kulayev_worn_rod_bearings.toml"
     study = Study.from_dict({"base": str(case_file), "command": "mechanism",

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from conrod.cases.case import Case
-from conrod.elastic.build import crank_kinematics
 from conrod.errors import CaseError
-from conrod.simulation import Simulation
+from conrod.housing.build import crank_kinematics
+from conrod.simulation.simulation import Simulation
 from elastic_helpers import EXAMPLES
 
 

@@ -1,30 +1,63 @@
 """conrod — connecting-rod bearing dynamics.
 
 Data flows one way: case file → loads → film model → orbit solver → contact/EHD →
-results → plots/report. See ``docs/conventions.md`` for frames and signs.
+results → output → plots/report. See ``docs/conventions.md`` for frames and signs.
 
 Docstrings cite the five source documents as [D0]–[D4] (with their section or equation
 numbers) and the literature by author and year; the full list is ``docs/references.md``.
+
+The names below are imported when first used, so that ``import conrod`` (and
+``conrod --version``) does not load the numerical stack.
 """
 
 from __future__ import annotations
 
+import importlib
 import os
+from typing import TYPE_CHECKING, Any
 
-__version__ = "0.1.0"
+from conrod._version import __version__
 
-from conrod.cases import Case  # noqa: E402
-from conrod.errors import CaseError, ConrodError, ConvergenceError  # noqa: E402
-from conrod.film.base import BearingGeometry, FilmState  # noqa: E402
-from conrod.results.cycle_results import CycleResults, RunResults, RunSummary  # noqa: E402
-from conrod.results.output import write_results  # noqa: E402
-from conrod.simulation import Simulation  # noqa: E402
+_PUBLIC = {
+    "BearingGeometry": "conrod.film.base",
+    "Case": "conrod.cases.case",
+    "CaseError": "conrod.errors",
+    "ConrodError": "conrod.errors",
+    "ConvergenceError": "conrod.errors",
+    "CycleResults": "conrod.results.cycle_results",
+    "FilmState": "conrod.film.base",
+    "RunResults": "conrod.results.cycle_results",
+    "RunSummary": "conrod.results.cycle_results",
+    "Simulation": "conrod.simulation.simulation",
+    "write_results": "conrod.output.registry",
+}
+"""Public name → the module that defines it."""
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.cases.case import Case
+    from conrod.results.cycle_results import RunResults
+
+
+def __getattr__(name: str) -> Any:
+    module = _PUBLIC.get(name)
+    if module is None:
+        raise AttributeError(f"module 'conrod' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted([*globals(), *_PUBLIC])
 
 
 def run(case: Case | str | os.PathLike[str], **options) -> RunResults:
     """Periodic orbit and characteristics of ``case`` (a :class:`Case` or a case file):
     ``Simulation(case, **options).run()``; ``options`` as :class:`Simulation` (``film``,
     ``integrator``, ``max_cycles``, ...)."""
+    from conrod.cases.case import Case
+    from conrod.simulation.simulation import Simulation
+
     if not isinstance(case, Case):
         case = Case.from_toml(case)
     return Simulation(case, **options).run()

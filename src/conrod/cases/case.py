@@ -52,7 +52,7 @@ class Case(Section):
         """The built-in rod must close (wall > 0, shank narrower than the head, ...)."""
         if self.housing.model == "builtin" and self.bearing is not None:
             rod_length = self.engine.rod_length if self.engine is not None else None
-            self.housing.rod_geometry(self.bearing.diameter, rod_length)
+            self.housing.rod_outline(self.bearing.diameter, rod_length)
         return self
 
     @model_validator(mode="after")

@@ -21,8 +21,6 @@ from typing import Literal
 from pydantic import Field, model_validator
 
 from conrod.cases.base import Section
-from conrod.elastic.correction import CorrectionName
-from conrod.elastic.geometry import RodGeometry
 from conrod.errors import CaseError
 
 HousingModelName = Literal["rigid", "builtin", "mesh", "compliance"]
@@ -31,6 +29,10 @@ ClampName = Literal["small_end", "mid_shank"]
 
 def _length(description: str, upper: float = 5.0, default: float | None = None):
     return Field(default=default, gt=0.0, le=upper, description=description)
+
+
+CorrectionName = Literal["least_squares_circle", "centroid", "none"]
+"""Rigid-body corrections of the bore displacement (:mod:`conrod.housing.correction`)."""
 
 
 class HousingSection(Section):
@@ -126,14 +128,16 @@ class HousingSection(Section):
             bearing_diameter)
         return bearing_diameter + 2.0 * shell
 
-    def rod_geometry(self, bearing_diameter: float, rod_length: float | None) -> RodGeometry:
-        """The built-in rod's outline [m]; CaseError naming the field when it does not close."""
+    def rod_outline(self, bearing_diameter: float, rod_length: float | None) -> dict[str, float]:
+        """The built-in rod's outline dimensions (the fields of
+        :class:`conrod.housing.geometry.RodGeometry`) [m, rad]; CaseError naming the field
+        when the rod does not close (:func:`outline_problems`)."""
         d_b = self.bore_diameter(bearing_diameter)
         small_bore = _pick(self.small_end_bore_diameter, 0.45 * bearing_diameter)
         small_width = _pick(self.shank_width_small_end, 0.30 * d_b)
         centre = _pick(self.centre_distance,
                        rod_length if rod_length is not None else 2.8 * bearing_diameter)
-        geometry = RodGeometry(
+        outline = dict(
             bore_radius=0.5 * d_b,
             head_outer_radius=0.5 * d_b + _pick(self.big_end_wall_thickness, 0.20 * d_b),
             cap_outer_radius=0.5 * d_b + _pick(self.cap_thickness, 0.16 * d_b),
@@ -145,12 +149,12 @@ class HousingSection(Section):
             small_end_outer_radius=0.5 * _pick(self.small_end_outer_diameter, 1.45 * small_bore),
             fillet_radius=_pick(self.fillet_radius, 0.3 * small_width),
         )
-        problems = geometry.closure_problems()
+        problems = outline_problems(outline)
         if problems:
             name, value, allowed = problems[0]
             raise CaseError(f"housing.{name} = {value:.6g}: the built-in rod does not close "
                             f"(allowed: {allowed})")
-        return geometry
+        return outline
 
     def thicknesses(self, bearing_width: float) -> dict[str, float]:
         """Plane-stress thickness per region (cap, head, shank, small_end) [m]."""
@@ -159,10 +163,38 @@ class HousingSection(Section):
                 "shank": _pick(self.shank_thickness, 0.5 * head),
                 "small_end": _pick(self.small_end_thickness, 0.8 * head)}
 
-    def default_element_size(self, geometry: RodGeometry) -> float:
-        """Largest element edge [m] (``element_size`` or a third of the thinner wall)."""
-        wall = min(geometry.head_outer_radius, geometry.cap_outer_radius) - geometry.bore_radius
+    def default_element_size(self, outline: dict[str, float]) -> float:
+        """Largest element edge [m] (``element_size`` or a third of the thinner wall) of the
+        rod ``outline`` (:meth:`rod_outline`)."""
+        wall = min(outline["head_outer_radius"], outline["cap_outer_radius"]) - outline[
+            "bore_radius"]
         return _pick(self.element_size, wall / 3.0)
+
+
+def outline_problems(o: dict[str, float]) -> list[tuple[str, float, str]]:
+    """Why the built-in rod of ``o`` (:meth:`HousingSection.rod_outline`) does not close:
+    (field, value, allowed) triples, empty when it does."""
+    problems = []
+    if o["head_outer_radius"] <= o["bore_radius"]:
+        problems.append(("big_end_wall_thickness", o["head_outer_radius"] - o["bore_radius"],
+                         "> 0 m"))
+    if o["cap_outer_radius"] <= o["bore_radius"]:
+        problems.append(("cap_thickness", o["cap_outer_radius"] - o["bore_radius"], "> 0 m"))
+    if o["shank_width_big_end"] >= 2.0 * o["head_outer_radius"]:
+        problems.append(("shank_width_big_end", o["shank_width_big_end"],
+                         f"< head outer diameter {2.0 * o['head_outer_radius']:g} m"))
+    if o["shank_width_small_end"] >= 2.0 * o["small_end_outer_radius"]:
+        problems.append(("shank_width_small_end", o["shank_width_small_end"],
+                         f"< small-end outer diameter {2.0 * o['small_end_outer_radius']:g} m"))
+    if o["small_end_outer_radius"] <= o["small_end_bore_radius"]:
+        problems.append(("small_end_outer_diameter", 2.0 * o["small_end_outer_radius"],
+                         f"> small-end bore diameter {2.0 * o['small_end_bore_radius']:g} m"))
+    reach = max(o["head_outer_radius"], o["cap_outer_radius"]) + o["small_end_outer_radius"]
+    if o["centre_distance"] <= reach:
+        problems.append(("centre_distance", o["centre_distance"],
+                         f"> head outer radius + small-end outer radius = {reach:g} m "
+                         "(the small end overlaps the big end)"))
+    return problems
 
 
 def _pick(value: float | None, default: float) -> float:

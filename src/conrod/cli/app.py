@@ -60,7 +60,7 @@ F = TypeVar("F", bound=Callable[..., Any])
 
 def _print_version(value: bool) -> None:
     if value:
-        from conrod import __version__
+        from conrod._version import __version__
 
         typer.echo(f"conrod {__version__}")
         raise typer.Exit()

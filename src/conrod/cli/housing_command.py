@@ -24,7 +24,7 @@ MICRO_PER_KILO = 1.0e9
 
 
 def _inertia_summary(housing) -> dict[str, Any]:
-    from conrod.elastic.inertia import BASE_FIELD_NAMES, BASE_FIELD_UNITS
+    from conrod.housing.inertia import BASE_FIELD_NAMES, BASE_FIELD_UNITS
 
     summary: dict[str, Any] = {
         "base_field_max_abs": {f"{name} [{unit}]": float(np.abs(housing.inertia_base[:, k]).max())
@@ -57,7 +57,7 @@ def housing_summary(housing, case: Case) -> dict[str, Any]:
     if case.housing.model in ("builtin", "mesh"):
         summary["fe_rod_mass_properties"] = housing.structure.model.mass_properties()
         if case.engine is not None:
-            from conrod.elastic.inertia import rigid_rod_load_difference
+            from conrod.housing.inertia import rigid_rod_load_difference
 
             summary["fe_rod_mass_properties"]["case_rod_mass_kg"] = case.engine.rod_mass
             summary["bearing_load_distributed_vs_two_mass"] = rigid_rod_load_difference(
@@ -67,7 +67,7 @@ def housing_summary(housing, case: Case) -> dict[str, Any]:
 
 def write_housing_outputs(housing, case: Case, out: Path) -> list[Path]:
     """Build the figures first, then write every file atomically."""
-    from conrod.elastic.compliance_io import write_compliance
+    from conrod.housing.compliance_io import write_compliance
     from conrod.io.atomic import atomic_path, write_json
     from conrod.io.result_folder import staged_result_folder
     from conrod.plotting import housing_plots
@@ -106,7 +106,7 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))  # before any computation
-        from conrod.elastic.housing import Housing
+        from conrod.housing.housing import Housing
 
         case = Case.from_toml(case_file)
         case.require("housing", "bearing")

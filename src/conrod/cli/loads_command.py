@@ -52,7 +52,7 @@ def register(app: typer.Typer) -> None:
 
 def _write(loads, out: Path) -> None:
     import conrod.plotting  # noqa: F401  (registers the figures)
-    from conrod.results.output import write_results
+    from conrod.output.registry import write_results
 
     write_results(loads, out)
 
@@ -60,7 +60,7 @@ def _write(loads, out: Path) -> None:
 def _table_loads(case: Case, out: Path) -> None:
     """A bearing given by its load table: the table's load in the bearing frame."""
     from conrod.loads.table_load import load_cycle_from_table
-    from conrod.results.tables import table_load_summary
+    from conrod.output.tables import table_load_summary
 
     loads = load_cycle_from_table(case.load, case.resolve(case.load.table))
     _write(loads, out)

@@ -23,11 +23,12 @@ from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
 from conrod.errors import CaseError
 from conrod.io.interrupts import raise_if_interrupted
 from conrod.io.result_folder import check_output_folder
+from conrod.mechanism.regimes import SweepRun
 from conrod.mechanism.results import MechanismRun
 from conrod.mechanism.setup import MechanismCase, mechanism_case
 from conrod.mechanism.simulation import simulate
-from conrod.mechanism.sweep import SweepRun, parse_sweep_option, run_sweep
 from conrod.results.plausibility import check_mechanism
+from conrod.sweep.mechanism import parse_sweep_option, run_sweep
 
 SWEEP_LIMITS = {"speed": (0.0, 30000.0, "rpm"), "load": (0.0, 5.0, "-")}
 """Allowed (exclusive lower, inclusive upper) bounds of swept values and their unit."""
@@ -101,6 +102,6 @@ def _advance(bar) -> None:
 
 def _write(results, out: Path) -> None:
     import conrod.plotting  # noqa: F401  (registers the figures)
-    from conrod.results.output import write_results
+    from conrod.output.registry import write_results
 
     write_results(results, out)

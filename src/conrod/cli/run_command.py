@@ -133,8 +133,8 @@ def register(app: typer.Typer) -> None:
         import conrod.plotting  # noqa: F401  (registers the figures)
         from conrod.cases.case import Case
         from conrod.io.result_folder import check_output_folder
-        from conrod.results.output import write_results
-        from conrod.simulation import Simulation
+        from conrod.output.registry import write_results
+        from conrod.simulation.simulation import Simulation
 
         check_output_folder(out, inputs=(case_file,))
         case = Case.from_toml(case_file)
@@ -163,7 +163,7 @@ def _with_step_study(results, simulation, case, film, integrator, max_cycles, n_
 
     from conrod.errors import CaseError, ConvergenceError
     from conrod.results.summary import step_study_warnings
-    from conrod.simulation import Simulation
+    from conrod.simulation.simulation import Simulation
 
     step = simulation.solver.step_deg  # None: rk2's automatic step, checked against implicit
     finer = ({"step_deg": step / 2.0, "integrator": integrator and integrator.value}

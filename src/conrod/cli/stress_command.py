@@ -93,8 +93,8 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))  # before any computation
-        from conrod.elastic.housing import Housing
-        from conrod.elastic.stresses import rigid_run_pressures
+        from conrod.housing.housing import Housing
+        from conrod.simulation.stress_study import rigid_run_pressures
 
         case = Case.from_toml(case_file)
         case.require("stress", "engine", "bearing", "lubricant")

@@ -9,9 +9,10 @@ cycles — wear changes slowly compared with one cycle, which is what makes lump
 Journal wear is not fed back: the journal turns, so its wear is not fixed in the film frame
 and mostly enlarges the clearance uniformly.
 
-The orbit is run by ``simulate(case, profile)``, where ``profile(theta, z)`` returns δ [m]
-on any film grid (θ [rad], z [m]). The default hands :class:`conrod.simulation.Simulation`
-the case's film wrapped in :class:`WornShellFilm`, which adds δ on the film's grid to every
+The stages are run by :func:`conrod.simulation.running_in.run_in`; each orbit by
+``simulate(case, profile)``, where ``profile(theta, z)`` returns δ [m] on any film grid
+(θ [rad], z [m]). The default hands :class:`conrod.simulation.simulation.Simulation` the
+case's film wrapped in :class:`WornShellFilm`, which adds δ on the film's grid to every
 film state. Only film models that declare
 :class:`~conrod.film.capabilities.SupportsDeformation` feel the wear (``reynolds``,
 ``mass_conserving``); the others (closed-form ``short``, tables) are refused. Limits: the
@@ -94,40 +95,3 @@ class WornShellFilm(FilmWrapper):
         own = state.deformation
         worn = self._deformation if own is None else own + self._deformation
         return replace(state, deformation=worn)
-
-
-def _default_simulate(case, profile: Profile):
-    from conrod.simulation import Simulation, default_film
-
-    return Simulation(case, film=WornShellFilm(default_film(case), profile)).run().contact
-
-
-def run_in(
-    case, cycles: float, stages: int = 5,
-    simulate: Callable[[Any, Profile], Any] | None = None,
-) -> RunInResults:
-    """Wear the shell in over ``cycles`` engine cycles in ``stages`` orbit runs.
-
-    case : Case with ``[contact]``; cycles : total number of cycles [-] (> 0);
-    stages : number of orbit runs (≥ 1); simulate : ``(case, profile) -> ContactResults``.
-    """
-    if not cycles > 0.0:
-        raise CaseError(f"run_in cycles = {cycles!r}: out of range (allowed: > 0)")
-    if stages < 1:
-        raise CaseError(f"run_in stages = {stages!r}: out of range (allowed: >= 1)")
-    if simulate is None:
-        simulate = _default_simulate
-    elements = case.contact.surface_elements
-    angles = (np.arange(elements) + 0.5) * 2.0 * np.pi / elements
-    wear = np.zeros(elements)
-    history = RunInResults(element_angle=angles)
-    per_stage = cycles / stages
-    for stage in range(stages):
-        contact = simulate(case, profile_from_wear(angles, wear))
-        history.cycles.append(stage * per_stage)
-        history.friction_work.append(contact.work.total)
-        history.max_contact_force.append(contact.max_contact_force)
-        history.stage_summaries.append(contact.summary_items())
-        wear = wear + per_stage * contact.wear.shell_wear
-    history.shell_wear = wear
-    return history

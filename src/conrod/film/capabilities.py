@@ -197,6 +197,18 @@ class HasForceJacobian(Protocol):
 
 
 @runtime_checkable
+class HasSensitivities(Protocol):
+    """A film that linearises itself: force, stiffness K = −∂F/∂e [N/m] and damping
+    C = −∂F/∂ė [N s/m] at a state from its own solver (the Reynolds film's solve on its
+    converged active set); other films are linearised by central differences of the force
+    (:func:`conrod.film.linearised.linearise`)."""
+
+    def sensitivities(self, state: FilmState) -> Any:
+        """:class:`~conrod.film.linearised.FilmLinearisation` at ``state``."""
+        ...
+
+
+@runtime_checkable
 class HasFlightKernel(Protocol):
     """A film whose force, warm-started, can run inside the compiled implicit free flight
     (:class:`~conrod.film.reynolds_flight.FlightKernel`: compiled force and Jacobian with

@@ -4,16 +4,14 @@
 from __future__ import annotations
 
 import dataclasses
-import math
-from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
 from conrod.errors import CaseError
-from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
-from conrod.film.capabilities import CompiledKernel
+from conrod.film.base import BearingGeometry, FilmModel
+from conrod.film.short_bearing import GroovedShortBearingFilm, central_groove_width
 from conrod.registry import film_class
+
+__all__ = ["GroovedShortBearingFilm", "build_film_model", "central_groove_width"]
 
 
 def build_film_model(
@@ -49,80 +47,3 @@ def _case_pressure_viscosity(case_or_solver: Any) -> Any:
     """The case's pressure–viscosity law (None when isoviscous or given a bare solver)."""
     lubricant = getattr(case_or_solver, "lubricant", None)
     return None if lubricant is None else lubricant.pressure_viscosity_law()
-
-
-def central_groove_width(geometry: BearingGeometry) -> float:
-    """Width [m] of a single full circumferential groove at mid-width, 0 if there is none."""
-    grooves = geometry.grooves
-    if len(grooves) != 1 or geometry.feed_holes:
-        return 0.0
-    groove = grooves[0]
-    full = groove.extent >= 2.0 * math.pi - 1e-9 and abs(groove.axial_position) < 1e-12
-    return groove.width if full else 0.0
-
-
-@dataclass
-class GroovedShortBearingFilm:
-    """Short-bearing theory on the two lands beside a full central circumferential groove.
-
-    Each land of width L_l = (L − g)/2 carries the Ocvirk film with ambient (gauge supply)
-    pressure at both of its edges, so forces and torques are twice those of one land; half
-    of the leakage leaves at the outer edges (side flow) and half enters from the groove
-    (supply flow, with the sign convention 'into the film' of :class:`FilmResult`).
-    """
-
-    geometry: BearingGeometry
-    land: Any
-    groove_width: float
-    name: str = "short"
-
-    @classmethod
-    def from_geometry(cls, geometry: BearingGeometry,
-                      pressure_viscosity: Any = None) -> GroovedShortBearingFilm:
-        """Two-land film of ``geometry`` (with a full central groove)."""
-        groove = central_groove_width(geometry)
-        land_geometry = dataclasses.replace(
-            geometry, width=0.5 * (geometry.width - groove), grooves=(), feed_holes=()
-        )
-        land = film_class("short")(land_geometry, pressure_viscosity=pressure_viscosity)
-        return cls(geometry, land, groove)
-
-    def force(self, state: FilmState) -> tuple[float, float]:
-        """Film force on the journal (F_x, F_y) [N]: both lands."""
-        fx, fy = self.land.force(state)
-        return 2.0 * fx, 2.0 * fy
-
-    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
-        """Both lands' characteristics (pressure field over the full width on request)."""
-        r = self.land.solve(state, with_pressure=with_pressure)
-        leakage = r.side_flow  # two lands x (half of one land's edge flow) each side
-        result = dataclasses.replace(
-            r, force_x=2.0 * r.force_x, force_y=2.0 * r.force_y,
-            friction_torque_journal=2.0 * r.friction_torque_journal,
-            friction_torque_shell=2.0 * r.friction_torque_shell,
-            friction_power=2.0 * r.friction_power, side_flow=leakage, supply_flow=leakage,
-)
-        if with_pressure and r.pressure is not None:
-            result.pressure = np.concatenate([r.pressure, r.pressure], axis=1)
-        return result
-
-    def grid(self) -> tuple[np.ndarray, np.ndarray]:
-        """θ nodes [rad]; z nodes of both lands [m] (the groove lies between them)."""
-        theta, z_land = self.land.grid()
-        offset = 0.5 * (self.groove_width + self.land.geometry.width)
-        return theta, np.concatenate([z_land - offset, z_land + offset])
-
-    def initial_history(self) -> None:
-        """No memory."""
-        return None
-
-    def compiled_kernel(self) -> CompiledKernel | None:
-        """Twice the land's closed-form force; the orbit's generic compiled Newton loop
-        (None when the lands have a pressure-dependent viscosity)."""
-        from conrod.film.short_bearing import kernel_force, radial_damping
-
-        if self.land.pressure_viscosity is not None:
-            return None
-        g = self.land.geometry
-        return CompiledKernel(kernel_force, (g.radius, g.width, g.radial_clearance, 2.0),
-                              None, radial_damping)

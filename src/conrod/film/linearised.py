@@ -235,11 +235,11 @@ def linearise_by_differences(film, state: FilmState, relative_step: float = 1.0e
 
 
 def linearise(film, state: FilmState) -> FilmLinearisation:
-    """Stiffness and damping of any film model: the active-set solve for the isoviscous
-    Reynolds film, central differences otherwise (a pressure-dependent viscosity maps the
-    solved field nonlinearly to the pressure)."""
-    from conrod.film.reynolds import ReynoldsFilm
+    """Stiffness and damping of any film model: its own
+    (:class:`~conrod.film.capabilities.HasSensitivities`, e.g. the active-set solve of the
+    isoviscous Reynolds film), central differences of the force otherwise."""
+    from conrod.film.capabilities import HasSensitivities
 
-    if isinstance(film, ReynoldsFilm) and film.pressure_viscosity is None:
-        return linearise_reynolds(film, state)
+    if isinstance(film, HasSensitivities):
+        return film.sensitivities(state)
     return linearise_by_differences(film, state)

@@ -10,14 +10,12 @@ cell balance, so supply − side flow − d(content)/dt vanishes to solver toler
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import Any
 
 import numpy as np
 
 from conrod.film.base import FilmResult, FilmState
-
-if TYPE_CHECKING:
-    from conrod.film.mass_conserving import FilmFields, MassConservingFilm
+from conrod.film.mass_conserving_memory import FilmFields
 
 
 def axial_weights(n_z: int, dz: float) -> np.ndarray:
@@ -28,7 +26,7 @@ def axial_weights(n_z: int, dz: float) -> np.ndarray:
 
 
 def film_characteristics(
-    model: MassConservingFilm, state: FilmState, f: FilmFields,
+    model: Any, state: FilmState, f: FilmFields,
     pressure: np.ndarray, fraction: np.ndarray, inflows: tuple[float, float],
 ) -> FilmResult:
     """FilmResult from the shifted pressure p̃ [Pa], film fraction ϑ [-] and the 12μ-scaled

@@ -30,25 +30,24 @@ the full film this is Reynolds' equation with ∂h/∂t of the journal velocity,
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import Any
 
 import numpy as np
 
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
 from conrod.film.mass_conserving_kernel import elrod_adams_step
+from conrod.film.mass_conserving_memory import MassConservingMemory
 from conrod.film.mass_conserving_results import axial_weights
 
 STEP_TOLERANCE = 1.0e-10
 """Tightest relative change per sweep the step's Ausas sweep is asked for: tighter
 tolerances stagnate in round-off on some fields [-]."""
 
-if TYPE_CHECKING:
-    from conrod.film.mass_conserving import MassConservingFilm, MassConservingMemory
 
 
 def content_step(
-    film: MassConservingFilm, state: FilmState, memory: MassConservingMemory, dt: float,
+    film: Any, state: FilmState, memory: MassConservingMemory, dt: float,
     warm: MassConservingMemory | None = None, previous: MassConservingMemory | None = None,
 ) -> tuple[float, float, MassConservingMemory]:
     """Film force (F_x, F_y) [N] at the end of a step ``dt`` [s] that starts from the film
@@ -63,8 +62,6 @@ def content_step(
         ∂q/∂t ≈ (3q^{n+1} − 4q^n + q^{n−1})/(2Δt), when both memories carry their
         thickness; else backward Euler.
     """
-    from conrod.film.mass_conserving import MassConservingMemory
-
     if film.pressure_viscosity is not None:
         raise ConvergenceError("implicit film-content step: not available with a "
                                "pressure-viscosity law")
@@ -95,7 +92,7 @@ def content_step(
     return fx, fy, MassConservingMemory(fraction, pressure, f.h)
 
 
-def _content(film: MassConservingFilm, f, memory: MassConservingMemory, cell: float,
+def _content(film: Any, f, memory: MassConservingMemory, cell: float,
              dt: float) -> np.ndarray:
     """12μΔxΔz ϑh/Δt of ``memory`` [Pa m³]; without its thickness, h^n = h − Δt ∂h/∂t
     (the backward Euler position of a rigid film)."""
@@ -105,7 +102,7 @@ def _content(film: MassConservingFilm, f, memory: MassConservingMemory, cell: fl
     return fraction * (cell * f.h - f.squeeze)
 
 
-def shifted_pressure_force(film: MassConservingFilm, pressure: np.ndarray,
+def shifted_pressure_force(film: Any, pressure: np.ndarray,
                            state: FilmState) -> tuple[float, float]:
     """Film force −∫∫ p (cos θ, sin θ) R dθ dz [N] from the shifted pressure p̃ [Pa]."""
     theta, _ = film.grid()

@@ -197,10 +197,13 @@ class ReynoldsFilm:
         """Force, stiffness K = −∂F/∂e [N/m] and damping C = −∂F/∂ė [N s/m] from one
         solve and two adjoint solves on the converged active set
         (:func:`conrod.film.linearised.linearise_reynolds`); central differences of the
-        force when the viscosity depends on pressure."""
-        from conrod.film.linearised import linearise
+        force when the viscosity depends on pressure (a pressure-dependent viscosity maps
+        the solved field nonlinearly to the pressure)."""
+        from conrod.film.linearised import linearise_by_differences, linearise_reynolds
 
-        return linearise(self, state)
+        if self.pressure_viscosity is None:
+            return linearise_reynolds(self, state)
+        return linearise_by_differences(self, state)
 
     def force_jacobian(self, state: FilmState, memory: ReynoldsMemory):
         """(F [N], ∂F/∂(e, ė) (2 × 4) [N/m, N s/m], memory) from the linearised solve on

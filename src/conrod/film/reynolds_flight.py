@@ -38,6 +38,7 @@ import numba as nb
 import numpy as np
 
 from conrod.film.multigrid_operators import copy_into
+from conrod.film.reynolds_memory import ReynoldsMemory
 from conrod.film.reynolds_multigrid import multigrid_solve
 
 JACOBIAN_STEP = 1.0e-5
@@ -76,10 +77,8 @@ class FlightKernel:
         return dict(zip(STATS, (float(v) for v in self.params[-1]), strict=True))
 
     def memory(self):
-        """The film's memory (:class:`~conrod.film.reynolds.ReynoldsMemory`) holding the
+        """The film's memory (:class:`~conrod.film.reynolds_memory.ReynoldsMemory`) holding the
         last solved field on the full grid."""
-        from conrod.film.reynolds import ReynoldsMemory
-
         field = self.params[0]
         n_z = self.film.n_z
         if field.shape[1] == n_z + 1:

@@ -9,6 +9,7 @@ plus the pressure-gradient term, so that (R/c)·f = 2π²S/√(1−ε²) + ε si
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -78,9 +79,7 @@ class ShortBearingFilm:
     @classmethod
     def from_settings(cls, geometry: BearingGeometry, settings: Any) -> Any:
         """Short film of ``geometry``; two lands when a full central groove splits it
-        (:class:`~conrod.film.factory.GroovedShortBearingFilm`). ``settings``: ``[solver]``."""
-        from conrod.film.factory import GroovedShortBearingFilm, central_groove_width
-
+        (:class:`GroovedShortBearingFilm`). ``settings``: ``[solver]``."""
         if central_groove_width(geometry) > 0.0:
             return GroovedShortBearingFilm.from_geometry(geometry)
         return cls(geometry)
@@ -242,3 +241,78 @@ class ShortBearingFilm:
         if self.pressure_viscosity is not None:
             pressure = self.pressure_viscosity.from_reduced(pressure, state.viscosity)
         return pressure
+
+
+def central_groove_width(geometry: BearingGeometry) -> float:
+    """Width [m] of a single full circumferential groove at mid-width, 0 if there is none."""
+    grooves = geometry.grooves
+    if len(grooves) != 1 or geometry.feed_holes:
+        return 0.0
+    groove = grooves[0]
+    full = groove.extent >= 2.0 * math.pi - 1e-9 and abs(groove.axial_position) < 1e-12
+    return groove.width if full else 0.0
+
+
+@dataclass
+class GroovedShortBearingFilm:
+    """Short-bearing theory on the two lands beside a full central circumferential groove.
+
+    Each land of width L_l = (L − g)/2 carries the Ocvirk film with ambient (gauge supply)
+    pressure at both of its edges, so forces and torques are twice those of one land; half
+    of the leakage leaves at the outer edges (side flow) and half enters from the groove
+    (supply flow, with the sign convention 'into the film' of :class:`FilmResult`).
+    """
+
+    geometry: BearingGeometry
+    land: Any
+    groove_width: float
+    name: str = "short"
+
+    @classmethod
+    def from_geometry(cls, geometry: BearingGeometry,
+                      pressure_viscosity: Any = None) -> GroovedShortBearingFilm:
+        """Two-land film of ``geometry`` (with a full central groove)."""
+        groove = central_groove_width(geometry)
+        land_geometry = dataclasses.replace(
+            geometry, width=0.5 * (geometry.width - groove), grooves=(), feed_holes=()
+        )
+        land = ShortBearingFilm(land_geometry, pressure_viscosity=pressure_viscosity)
+        return cls(geometry, land, groove)
+
+    def force(self, state: FilmState) -> tuple[float, float]:
+        """Film force on the journal (F_x, F_y) [N]: both lands."""
+        fx, fy = self.land.force(state)
+        return 2.0 * fx, 2.0 * fy
+
+    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+        """Both lands' characteristics (pressure field over the full width on request)."""
+        r = self.land.solve(state, with_pressure=with_pressure)
+        leakage = r.side_flow  # two lands x (half of one land's edge flow) each side
+        result = dataclasses.replace(
+            r, force_x=2.0 * r.force_x, force_y=2.0 * r.force_y,
+            friction_torque_journal=2.0 * r.friction_torque_journal,
+            friction_torque_shell=2.0 * r.friction_torque_shell,
+            friction_power=2.0 * r.friction_power, side_flow=leakage, supply_flow=leakage,
+)
+        if with_pressure and r.pressure is not None:
+            result.pressure = np.concatenate([r.pressure, r.pressure], axis=1)
+        return result
+
+    def grid(self) -> tuple[np.ndarray, np.ndarray]:
+        """θ nodes [rad]; z nodes of both lands [m] (the groove lies between them)."""
+        theta, z_land = self.land.grid()
+        offset = 0.5 * (self.groove_width + self.land.geometry.width)
+        return theta, np.concatenate([z_land - offset, z_land + offset])
+
+    def initial_history(self) -> None:
+        """No memory."""
+        return None
+
+    def compiled_kernel(self) -> CompiledKernel | None:
+        """Twice the land's closed-form force; the orbit's generic compiled Newton loop
+        (None when the lands have a pressure-dependent viscosity)."""
+        if self.land.pressure_viscosity is not None:
+            return None
+        g = self.land.geometry
+        return CompiledKernel(kernel_force, (g.radius, g.width, g.radial_clearance, 2.0),
+                              None, radial_damping)

@@ -2,7 +2,7 @@
 
 .. code-block:: python
 
-    from conrod.mechanism import mechanism_case, run_sweep, simulate
+    from conrod.mechanism import mechanism_case, simulate
 
     run = mechanism_case(Case.from_toml("examples/kulayev_worn_rod_bearings.toml"))
     results = simulate(run.mechanism, run.scaled_gas_table(), run.settings)
@@ -10,16 +10,17 @@
 
 Layers: :mod:`geometry` (ellipse contact law) and :mod:`kernel` (right-hand side) are
 numba kernels; :mod:`integrator` integrates them; :mod:`model` holds the components;
-:mod:`simulation`, :mod:`setup` and :mod:`sweep` orchestrate; :mod:`results` types them.
+:mod:`simulation` and :mod:`setup` run one operating mode; :mod:`results` and :mod:`regimes`
+type them (the sweep over many modes is :func:`conrod.sweep.mechanism.run_sweep`).
 """
 
 from conrod.mechanism.model import ClearanceJoint, CrankTrain, Mechanism
+from conrod.mechanism.regimes import SweepResults
 from conrod.mechanism.results import Impacts, MechanismResults
 from conrod.mechanism.setup import MechanismCase, mechanism_case
 from conrod.mechanism.simulation import RunSettings, simulate
-from conrod.mechanism.sweep import SweepResults, run_sweep
 
 __all__ = [
     "ClearanceJoint", "CrankTrain", "Impacts", "Mechanism", "MechanismCase", "MechanismResults",
-    "RunSettings", "SweepResults", "mechanism_case", "run_sweep", "simulate",
+    "RunSettings", "SweepResults", "mechanism_case", "simulate",
 ]

@@ -1,10 +1,10 @@
 """Orbit with mass of a film that solves its own state together with the journal's step.
 
-A film on a deforming bore (:class:`conrod.elastic.film.ElasticFilm`) has unknowns of its
+A film on a deforming bore (:class:`conrod.ehd.film.ElasticFilm`) has unknowns of its
 own at every step — the bore displacement — which the film's response couples to the
 journal's position and velocity. Such a film declares :class:`HasCoupledMassStep`: given
 the reference values of an implicit step it solves the end velocity and its own unknowns in
-one Newton iteration (:mod:`conrod.elastic.mass_step`). This module holds the time
+one Newton iteration (:mod:`conrod.ehd.mass_step`). This module holds the time
 stepping: fixed steps of ``Δφ ≤ max_step_deg``, backward Euler for the first step of a
 cycle and after a halved step, BDF2 otherwise,
 
@@ -17,7 +17,7 @@ cycle and after a halved step, BDF2 otherwise,
 :class:`~conrod.errors.ConvergenceError` naming the crank angle and the force residual [N].
 
 Contact. With mixed lubrication the elastic film carries the Greenwood–Tripp asperity
-pressure on its deformed film (:mod:`conrod.elastic.asperity`): film and asperities hold
+pressure on its deformed film (:mod:`conrod.ehd.asperity`): film and asperities hold
 the journal while the deformed film is open (h_min > 0), with no contact circle. Without an
 asperity model the journal has no contact phase here: a step whose end leaves the contact
 circle widened by one clearance, or whose deformed film closes, stops the orbit with
@@ -57,7 +57,7 @@ class HasCoupledMassStep(Protocol):
 
     def mass_step(self, request: Any, memory: Any, previous: Any = None,
                   extra_force: Any = None, earlier: Any = None) -> Any:
-        """:class:`conrod.elastic.mass_step.MassStepOutcome` of ``request`` from ``memory``
+        """:class:`conrod.ehd.mass_step.MassStepOutcome` of ``request`` from ``memory``
         (``previous``: the memory one step earlier, for BDF2; ``earlier``: two steps
         earlier, for the start value; ``extra_force(x, y)``: asperity force [N])."""
         ...
@@ -189,7 +189,7 @@ def _advice(problem: OrbitProblem, h_min: float) -> str:
 
 def _step(problem: OrbitProblem, phi1: float, dt: float, start: _Point):
     """One backward Euler (no ``start.before``) or BDF2 step ending at φ1."""
-    from conrod.elastic.mass_step import MassStepRequest
+    from conrod.ehd.mass_step import MassStepRequest
 
     before = start.before
     if before is None:

@@ -5,7 +5,7 @@ Each integrator integrates one cycle, ``cycle(problem, state, settings)`` with t
 :class:`~conrod.orbit.trajectory.CycleTrajectory` whose end state carries the film memory
 on to the next cycle. A new integrator is a class with ``name`` and ``cycle`` registered
 in :data:`conrod.registry.INTEGRATORS`, or any such object handed to
-:class:`~conrod.simulation.Simulation`.
+:class:`~conrod.simulation.simulation.Simulation`.
 """
 
 from __future__ import annotations

@@ -33,7 +33,7 @@ ForceFunction = Callable[[float, float, float, float, float, float], tuple[float
 @runtime_checkable
 class CarriesAsperityContact(Protocol):
     """A film whose force already holds the Greenwood–Tripp asperity contact, taken on its
-    own (deformed) film thickness (:class:`conrod.elastic.film.ElasticFilm`)."""
+    own (deformed) film thickness (:class:`conrod.ehd.film.ElasticFilm`)."""
 
     def carries_asperity(self) -> bool:
         """True when this configuration of the film carries the asperity force [-]."""
@@ -43,7 +43,7 @@ class CarriesAsperityContact(Protocol):
 @runtime_checkable
 class HasDeformedGap(Protocol):
     """A film on a deforming bore that says where its deformed film closes, so the orbit's
-    contact circle is not rigid (:class:`conrod.elastic.film.ElasticFilm`)."""
+    contact circle is not rigid (:class:`conrod.ehd.film.ElasticFilm`)."""
 
     def deformed_min_film_thickness(self, position: Any, memory: Any) -> float:
         """h_min on the deformed film with the journal centre at ``position`` [m]."""

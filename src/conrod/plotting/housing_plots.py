@@ -8,7 +8,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.tri import Triangulation
 
-from conrod.elastic.stresses import StressField
+from conrod.housing.stresses import StressField
 
 MICRO = 1.0e6
 
@@ -58,7 +58,7 @@ def bore_deformation_figure(housing, directions_deg=(0.0, 90.0, 180.0, 270.0),
                             load: float = 1.0e4) -> Figure:
     """Magnified deformed bore under a cosine load of ``load`` [N] (±90°) in four
     directions θ_W: raw (clamped model) and rigid-body corrected, each with its own scale."""
-    from conrod.elastic.stresses import cosine_forces
+    from conrod.housing.stresses import cosine_forces
 
     figure = Figure(figsize=(10.0, 10.0))
     panels = figure.subplots(2, 2).ravel()

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from conrod.mechanism.regimes import SweepResults
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults
-from conrod.mechanism.sweep import SweepResults
 
 LABELS = {"big_end": "big end (crank pin)", "small_end": "small end (piston pin)"}
 UM = 1.0e6

@@ -1,8 +1,6 @@
-"""Typed results and the one registry of their tables and figures."""
+"""Typed, frozen results with units; their tables and figures are registered in
+:mod:`conrod.output`."""
 
-from conrod.results import tables as _tables  # noqa: F401  (registers the tables)
 from conrod.results.cycle_results import CycleResults, RunResults, RunSummary
-from conrod.results.output import FigureSpec, TableSpec, figures, tables, write_results
 
-__all__ = ["CycleResults", "FigureSpec", "RunResults", "RunSummary", "TableSpec", "figures",
-           "tables", "write_results"]
+__all__ = ["CycleResults", "RunResults", "RunSummary"]

@@ -2,7 +2,7 @@
 cycle :class:`RunSummary` and the bundle :class:`RunResults`.
 
 Every field documents its unit in brackets. No plotting and no I/O here
-(tables: :mod:`conrod.results.tables`; figures are registered by the plotting package).
+(tables: :mod:`conrod.output.tables`; figures are registered by the plotting package).
 """
 
 from __future__ import annotations
@@ -84,7 +84,7 @@ class CycleResults:
         ``crank_angle_deg``, ...; angles in degrees)."""
         import pandas as pd
 
-        from conrod.results.tables import CYCLE_COLUMNS, DATAFRAME_NAMES
+        from conrod.results.columns import CYCLE_COLUMNS, DATAFRAME_NAMES
 
         columns = {}
         for column, (name, convert) in CYCLE_COLUMNS.items():

@@ -1,8 +1,9 @@
 """Results of an elastohydrodynamic run: the elastic answer, its rigid companion, the
-comparison in the columns of Rodin (2004, Table 2), and their tables.
+comparison in the columns of Rodin (2004, Table 2); their tables are registered in
+:mod:`conrod.output.ehd_tables`.
 
 ``cycle.csv`` and ``summary.json`` hold the elastic answer (the run columns plus the coupling
-diagnostics of :mod:`conrod.elastic.cycle`); ``cycle_rigid.csv`` the rigid companion run;
+diagnostics of :mod:`conrod.ehd.cycle`); ``cycle_rigid.csv`` the rigid companion run;
 ``summary.json["comparison"]`` the cycle extremes and means of both, with the relative
 difference (elastic − rigid) / rigid in %.
 """
@@ -15,8 +16,6 @@ from typing import Any
 import numpy as np
 
 from conrod.results.cycle_results import RunResults
-from conrod.results.output import TableSpec, result_kind, tables
-from conrod.results.tables import cycle_table, summary_items
 
 COMPARISON_COLUMNS = (
     ("h_min_um", "smallest h_min over the cycle [µm]", lambda s: 1e6 * s.h_min),
@@ -37,7 +36,7 @@ class ElasticRunResults:
     columns : dict  Coupling diagnostics per output crank angle (names with units).
     deformation : ndarray  Corrected bore displacement (n_out, n_θ) [m], outward +.
     bore_angles : ndarray  Bore-node angles θ [rad].
-    housing : object  The :class:`conrod.elastic.housing.Housing` used.
+    housing : object  The :class:`conrod.housing.housing.Housing` used.
     rigid : RunResults or None  The rigid companion run (None when skipped).
     info : dict  Coupling settings and totals for summary.json.
     peak_load_index : int  Output row of the largest load [-].
@@ -131,53 +130,3 @@ def comparison(elastic: RunResults, rigid: RunResults) -> dict:
         table["difference_percent"][key] = 100.0 * (e - r) / r if r != 0.0 else None
         table["units"][key] = meaning
     return table
-
-
-def elastic_cycle_table(results: ElasticRunResults) -> dict[str, np.ndarray]:
-    """cycle.csv: the run columns of the elastic answer and the coupling diagnostics."""
-    return {**cycle_table(results.elastic), **results.columns}
-
-
-def elastic_summary_items(results: ElasticRunResults) -> dict:
-    """summary.json: the elastic summary, the coupling totals and the comparison."""
-    items = summary_items(results.elastic)
-    columns = results.columns
-    items["elastic"] = {
-        **(results.info or {}),
-        "mean_coupling_iterations": float(np.mean(columns["coupling_iterations"])),
-        **({"mean_newton_updates": float(np.mean(columns["newton_updates"]))}
-           if "newton_updates" in columns else {}),
-        "max_force_residual_N": float(np.max(columns["force_residual_N"])),
-        "max_coupling_residual_m": float(np.max(columns["coupling_residual_m"])),
-        "bore_displacement_min_m": float(np.min(columns["bore_displacement_min_m"])),
-        "bore_displacement_max_m": float(np.max(columns["bore_displacement_max_m"])),
-    }
-    if results.rigid is not None:
-        items["comparison"] = comparison(results.elastic, results.rigid)
-    return items
-
-
-@tables.register
-def _elastic_tables(results: ElasticRunResults) -> tuple[TableSpec, ...]:
-    own: tuple[TableSpec, ...] = (
-        TableSpec("cycle.csv", "Bearing characteristics over the cycle (elastic big end)",
-                  "Orbit, film characteristics and loads on the deforming bore at each output "
-                  "crank angle, with the coupling iterations [-], force-balance residual [N], "
-                  "last deformation increment [m] and bore displacement range [m].",
-                  lambda: elastic_cycle_table(results)),
-        TableSpec("summary.json", "Cycle summary (elastic big end)",
-                  "Elastic answer: extremes, means and diagnostics; 'elastic': coupling "
-                  "totals; 'comparison': rigid vs elastic h_min [µm], p_max [MPa], friction "
-                  "power [W], side flow [cm^3/s], cycle means, difference [%].",
-                  lambda: elastic_summary_items(results)),
-    )
-    if results.rigid is not None:
-        own += (TableSpec("cycle_rigid.csv", "Bearing characteristics over the cycle (rigid)",
-                          "The same case with a rigid bore (columns as cycle.csv).",
-                          lambda: cycle_table(results.rigid)),)
-    return own + (tables(results.contact) if results.contact is not None else ())
-
-
-@result_kind.register
-def _elastic_kind(results: ElasticRunResults) -> str:
-    return "run"

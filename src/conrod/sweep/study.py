@@ -43,9 +43,8 @@ from pydantic import Field, model_validator
 
 from conrod.cases.base import Section, validate_section
 from conrod.errors import CaseError
-from conrod.sweep.variant import Variant, resolve_variant
+from conrod.sweep.variant import CASE_AXIS, Variant, resolve_variant
 
-CASE_AXIS = "case"
 """Axis key whose values are whole case files."""
 
 

@@ -17,8 +17,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from conrod import __version__
+from conrod._version import __version__
 from conrod.errors import CaseError
+
+CASE_AXIS = "case"
+"""Name of the axis whose values are whole case files [-]."""
 
 HASH_LENGTH = 16
 """Hex digits of the variant hash used as folder name [-]."""
@@ -92,8 +95,6 @@ def _merge(target: dict[str, Any], extra: dict[str, Any]) -> None:
 def resolve_variant(case_file: Path, axes: dict[str, Any], override: dict[str, Any],
                     index: int, command: str = "run") -> Variant:
     """Build and validate one variant; :class:`CaseError` names the axis, key and value."""
-    from conrod.sweep.study import CASE_AXIS
-
     data = copy.deepcopy(_read_case_file(Path(case_file).resolve()))
     try:
         _merge(data, override)
@@ -123,7 +124,7 @@ def _validate(data: dict[str, Any], case_file: Path, command: str):
 
         mechanism_case(case)
     else:
-        from conrod.simulation import Simulation
+        from conrod.simulation.simulation import Simulation
 
         Simulation(case)
     return case

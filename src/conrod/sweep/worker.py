@@ -12,7 +12,7 @@ import time
 from pathlib import Path
 from typing import Any
 
-from conrod import __version__
+from conrod._version import __version__
 
 STATUS_OK = "ok"
 STATUS_FAILED = "failed"
@@ -20,7 +20,7 @@ STATUS_FAILED = "failed"
 
 def write_variant_results(results, out_dir: Path, *, figures: bool) -> None:
     """Write one variant's files with the one writer every command uses (and its manifest)."""
-    from conrod.results.output import write_results
+    from conrod.output.registry import write_results
 
     if figures:
         import conrod.plotting  # noqa: F401  (registers the figures)
@@ -41,7 +41,7 @@ def compute_into(case, command: str, out_dir: Path, figures: bool) -> None:
                            tuple(check_mechanism(results, base.mechanism)))
         write_variant_results(run, out_dir, figures=figures)
         return
-    from conrod.simulation import Simulation
+    from conrod.simulation.simulation import Simulation
 
     write_variant_results(Simulation(case).run(), out_dir, figures=figures)
 

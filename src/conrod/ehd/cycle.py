@@ -1,0 +1,117 @@
+"""Per-crank-angle diagnostics of an elastohydrodynamic orbit.
+
+At every output crank angle the elastic film is solved once more from the memory sampled
+there (the coupling is already converged, so this is one film solve) and gives:
+
+* ``coupling_iterations`` — film solves of the couplings on the accepted path of that step
+  (the orbit's own trial solves for its Jacobian are not counted) [-];
+* ``newton_updates`` — Newton updates of those couplings (the film solves less each
+  coupling's solve at its start value and the line-search trials); written when the
+  couplings are Newton iterations (not for the mass-conserving film's content step) [-];
+* ``force_residual_N`` — |F + W| of the massless force balance (the normal component taken
+  by the contact circle removed); with a moving mass, |F + W − m a| with a of the
+  implicit step that ended there (orbit with mass on the elastic bore), else from the
+  periodic central difference of the output velocities [N];
+* ``deformation_increment_m`` — the last deformation increment max|Δu| of the coupling [m];
+* ``bore_displacement_min_m`` / ``_max_m`` — range of the corrected bore displacement [m];
+* ``coupling_residual_m`` — max|G(u)| of the coupling [m];
+* ``asperity_force_N`` — with mixed lubrication carried by the film, the Greenwood–Tripp
+  asperity force on the deformed film [N] (:mod:`conrod.ehd.asperity`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from conrod.film.base import FilmState
+
+
+@dataclass(frozen=True)
+class ElasticCycle:
+    """The bore deformation and the coupling diagnostics over the output crank angles.
+
+    deformation : ndarray  Corrected bore displacement u (n_out, n_θ) [m], outward +.
+    angles : ndarray  Bore-node angles θ [rad].
+    columns : dict  Diagnostic columns (names with units) of length n_out.
+    """
+
+    deformation: np.ndarray
+    angles: np.ndarray
+    columns: dict[str, np.ndarray]
+    peak_load_index: int = 0
+    peak_load_pressure: np.ndarray | None = None
+
+
+def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticCycle:
+    """Diagnostics of the last cycle of an orbit of the elastic film ``problem.film``."""
+    film = problem.film
+    names = ("coupling_iterations", "coupling_residual_m", "deformation_increment_m",
+             "bore_displacement_min_m", "bore_displacement_max_m")
+    columns = {name: np.zeros(len(cycle.crank_angle)) for name in names}
+    force = np.zeros((len(cycle.crank_angle), 2))
+    updates = np.zeros(len(cycle.crank_angle))
+    deformation = np.zeros((len(cycle.crank_angle), len(film.housing.angles)))
+    peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
+    peak_pressure = None
+    for i, memory in enumerate(film_memory):
+        state = FilmState(eccentricity_x=float(cycle.eccentricity_x[i]),
+                          eccentricity_y=float(cycle.eccentricity_y[i]),
+                          velocity_x=float(cycle.velocity_x[i]),
+                          velocity_y=float(cycle.velocity_y[i]),
+                          journal_speed=float(cycle.journal_speed[i]),
+                          shell_speed=float(cycle.shell_speed[i]),
+                          viscosity=problem.viscosity)
+        result, after = film.solve_with_memory(state, memory, with_pressure=i == peak)
+        if i == peak:
+            peak_pressure = result.pressure
+        force[i] = result.force_x, result.force_y
+        deformation[i] = after.deformation
+        columns["coupling_iterations"][i] = memory.iterations
+        updates[i] = memory.updates
+        columns["coupling_residual_m"][i] = after.residual
+        columns["deformation_increment_m"][i] = memory.increment
+        columns["bore_displacement_min_m"][i] = after.deformation.min()
+        columns["bore_displacement_max_m"][i] = after.deformation.max()
+        if "asperity_force_N" in result.extra:
+            columns.setdefault("asperity_force_N", np.zeros(len(cycle.crank_angle)))
+            columns["asperity_force_N"][i] = result.extra["asperity_force_N"]
+    if updates.any():
+        columns["newton_updates"] = updates
+    columns["force_residual_N"] = _force_residual(problem, cycle, force, massless,
+                                                  _step_accelerations(film_memory))
+    return ElasticCycle(deformation, np.asarray(film.housing.angles), columns, peak,
+                        peak_pressure)
+
+
+def _step_accelerations(film_memory: list) -> np.ndarray | None:
+    """The journal accelerations of the implicit steps that ended at the output angles
+    (n_out, 2) [m/s²], None when the memories do not hold them (massless, rk2)."""
+    values = [getattr(memory, "acceleration", None) for memory in film_memory]
+    if any(value is None for value in values):
+        return None
+    return np.asarray(values, dtype=float)
+
+
+def _force_residual(problem, cycle, force: np.ndarray, massless: bool,
+                    accelerations: np.ndarray | None = None) -> np.ndarray:
+    """|F + W (− m a)| [N], the contact circle's normal reaction removed; ``accelerations``
+    [m/s²] of the steps, else a from the output velocities."""
+    rx = force[:, 0] + cycle.load_x
+    ry = force[:, 1] + cycle.load_y
+    if not massless and accelerations is not None:
+        rx = rx - problem.mass_x * accelerations[:, 0]
+        ry = ry - problem.mass_y * accelerations[:, 1]
+    elif not massless:
+        dphi = float(cycle.crank_angle[1] - cycle.crank_angle[0])
+        dt = dphi / problem.crank_speed
+        ax = (np.roll(cycle.velocity_x, -1) - np.roll(cycle.velocity_x, 1)) / (2 * dt)
+        ay = (np.roll(cycle.velocity_y, -1) - np.roll(cycle.velocity_y, 1)) / (2 * dt)
+        rx, ry = rx - problem.mass_x * ax, ry - problem.mass_y * ay
+    e = np.hypot(cycle.eccentricity_x, cycle.eccentricity_y)
+    contact = np.asarray(cycle.in_contact, dtype=bool) & (e > 0)
+    nx = np.where(contact, cycle.eccentricity_x / np.where(e > 0, e, 1.0), 0.0)
+    ny = np.where(contact, cycle.eccentricity_y / np.where(e > 0, e, 1.0), 0.0)
+    normal = np.maximum(rx * nx + ry * ny, 0.0)
+    return np.hypot(rx - normal * nx, ry - normal * ny)

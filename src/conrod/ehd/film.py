@@ -1,0 +1,428 @@
+"""The elastohydrodynamic film: any deformable film on the bore of an elastic housing.
+
+.. code-block:: python
+
+    film = ElasticFilm(ReynoldsFilm(geometry, 72, 16), Housing.from_case(case),
+                       crank_speed=loads.crank_speed)
+    Simulation(case, film=film).run()       # the orbit code is unchanged
+
+:class:`ElasticFilm` wraps a film that honours ``FilmState.deformation``
+(:class:`~conrod.film.capabilities.SupportsDeformation`: ``reynolds``, ``mass_conserving``)
+and, for every state it is asked about, solves the coupling of the film pressure and the
+bore deformation (:mod:`conrod.ehd.coupling`) so that the film thickness is
+h = h_rigid(e) + P(C f(p) + U c(φ)) (Rodin 2004, eqs. 7–9).
+
+Its memory (:class:`ElasticMemory`) travels in the integrator's state through
+:class:`~conrod.film.capabilities.HasMemory`: the inner film's memory, the bore deformation
+of the last solve (the warm start of the next), the crank angle φ [rad] that the inertia
+deformation needs — advanced by ω dt in :meth:`ElasticFilm.advance_memory`, the one hook
+every fixed-step integrator calls after a step — and the coupling diagnostics. Because that
+memory evolves in lock-step with a fixed step, :meth:`initial_history` is not None. The
+massless orbit (``quasi_static``) passes the exact φ of each state to
+:meth:`balance_velocity`; the orbit with mass (``auto``, ``implicit``, ``adaptive``: fixed
+BDF2 steps of :mod:`conrod.orbit.coupled_orbit`) asks :meth:`mass_step` for the end of each
+step, journal velocity and bore solved together (:mod:`conrod.ehd.mass_step`; films
+with the exact response, :meth:`supports_mass_step`). ``rk2`` is refused for those films
+(the bore rate over its short step is too stiff) and runs the others, its predictor and
+corrector solves both seeing φ at the start of the step.
+
+Deformation rate. The squeeze term 12 μ ∂h/∂t includes the bore's rate ∂u/∂t, taken
+backward in time from the deformation at the previous crank angle (:mod:`conrod.ehd.rate`,
+Reynolds film; ``ElasticSettings(deformation_rate=False)`` leaves it out as Rodin 2004 does).
+Without it the bore moves into a journal that the massless orbit holds in place with no
+film resistance, and the force balance on the deformed bore fails. The largest rate seen
+over a step is kept in the memory (``deformation_rate`` [m/s]).
+
+The massless orbit asks :meth:`ElasticFilm.balance_velocity` for the velocity that balances
+the load, bore displacement and velocity solved together, passing the crank angle of each
+state: by Newton's method with the film's exact response on its active set for the
+isoviscous Reynolds film (:mod:`conrod.ehd.newton`, :mod:`conrod.ehd.response`),
+by the finite-difference quasi-Newton iteration of :mod:`conrod.ehd.balance` for the
+other films.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+import numpy as np
+
+from conrod.ehd.asperity import DeformedAsperity, deformed_min_gap, open_radius
+from conrod.ehd.balance import BalanceJacobian, solve_balance
+from conrod.ehd.coupling import (
+    CouplingOutcome,
+    CouplingSettings,
+    JacobianCache,
+    dominant_directions,
+    fixed_point_coupling,
+    solve_coupling,
+)
+from conrod.ehd.memory import ElasticMemory, ElasticSettings
+from conrod.ehd.newton import ChordJacobian, newton_balance
+from conrod.ehd.rate import rated, with_deformation_rate
+from conrod.ehd.response import (
+    PressureEvaluation,
+    evaluate_pressure,
+    film_response,
+    has_exact_response,
+    nodal_force_weights,
+)
+from conrod.errors import CaseError, ConvergenceError
+from conrod.film.base import FilmResult, FilmState
+from conrod.film.capabilities import SupportsDeformation, film_memory, solve_film
+from conrod.film.wrapper import FilmWrapper
+
+
+class ElasticFilm(FilmWrapper):
+    """Film ``base`` on the deforming bore of ``housing``.
+
+    base : FilmModel  Film honouring ``FilmState.deformation`` on the housing's nodes.
+    housing : Housing  Compliance and inertia fields at the film nodes
+        (:class:`conrod.housing.housing.Housing`).
+    crank_speed : float  Crank angular velocity ω [rad/s] (advances φ by ω dt).
+    settings : ElasticSettings  Coupling controls.
+    asperity : tuple or None  Greenwood–Tripp parameters (R [m], L [m], σ [m], K E' [Pa]) of
+        :func:`conrod.contact.asperity.kernel_parameters` (mixed lubrication). With the
+        exact film response the asperity pressure is taken on the deformed film, loads the
+        bore and is part of the journal force (:mod:`conrod.ehd.asperity`,
+        :meth:`carries_asperity`); otherwise the orbit adds the rigid asperity force.
+    """
+
+    def __init__(self, base: Any, housing: Any, crank_speed: float,
+                 settings: ElasticSettings | None = None,
+                 asperity: tuple[float, float, float, float] | None = None):
+        if not isinstance(base, SupportsDeformation):
+            raise CaseError(f"film = {base.name!r} cannot take the bore deformation of an "
+                            "elastic housing (allowed: 'reynolds' or 'mass_conserving')")
+        theta, z = base.grid()
+        if len(theta) != len(housing.angles) or not np.allclose(theta, housing.angles):
+            raise CaseError(f"housing: {len(housing.angles)} bore nodes do not match the "
+                            f"film's {len(theta)} θ nodes (allowed: solver.n_theta nodes)")
+        self.base = with_deformation_rate(base)
+        self.housing = housing
+        self.crank_speed = float(crank_speed)
+        self.settings = settings or ElasticSettings()
+        self._z = z
+        self._axial_nodes = base.deformation_shape()[1]
+        self._coupling = CouplingSettings(
+            tolerance=self.settings.tolerance * base.geometry.radial_clearance,
+            max_iterations=self.settings.max_iterations,
+            increment_share=self.settings.increment_share)
+        directions = dominant_directions(housing.corrected_compliance, self._coupling.modes)
+        self.jacobian = JacobianCache(directions)
+        self.balance_jacobian = BalanceJacobian(directions, housing.angles)
+        self.rigid_jacobian = BalanceJacobian(directions[:, :0], housing.angles)
+        self._zero_operator = np.zeros_like(housing.corrected_compliance)
+        self.chords = {"balance": ChordJacobian(), "rigid": ChordJacobian(),
+                       "coupling": ChordJacobian()}
+        self.exact = has_exact_response(self.base) and self.settings.method == "quasi_newton"
+        self._nodal = (nodal_force_weights(self.base, housing.angles, housing.radius)
+                       if self.exact else None)
+        self.contact = (DeformedAsperity.from_parameters(asperity, self._nodal,
+                                                         self.base._force_weights)
+                        if asperity is not None and self.exact else None)
+
+    def carries_asperity(self) -> bool:
+        """True when the asperity contact is part of this film's force, taken on the
+        deformed film (the orbit then adds no rigid asperity force) [-]."""
+        return self.contact is not None
+
+    # ----------------------------------------------------------- capabilities
+    def initial_history(self) -> np.ndarray:
+        """The inner film's history, else the (zero) bore deformation [m]: a memory that
+        evolves in lock-step with a fixed step."""
+        inner = self.base.initial_history()
+        return inner if inner is not None else np.zeros(len(self.housing.angles))
+
+    def compiled_kernel(self) -> None:
+        """No compiled kernel: the coupling runs in Python around the compiled film."""
+        return None
+
+    def initial_memory(self) -> ElasticMemory:
+        """Rigid bore, crank angle of the orbit start, the inner film's initial memory."""
+        return ElasticMemory(film_memory(self.base), np.zeros(len(self.housing.angles)),
+                             self.settings.start_angle)
+
+    def solve_with_memory(self, state: FilmState, memory: ElasticMemory, *,
+                          with_pressure: bool = False) -> tuple[FilmResult, ElasticMemory]:
+        """Coupled result for ``state`` from ``memory`` and the memory after it."""
+        if state.deformation is not None:
+            raise CaseError("elastic film: the bore deformation is computed by the housing; "
+                            "a FilmState.deformation cannot be added")
+        outcome = self._couple(state, memory)
+        result, inner = self._finish(outcome.payload)
+        result = dataclasses.replace(result, pressure=result.pressure if with_pressure
+                                     else None, extra=dict(result.extra))
+        u = outcome.deformation
+        result.extra.update({
+            "coupling_iterations": float(memory.iterations + outcome.iterations),
+            "coupling_residual_m": outcome.residual,
+            "deformation_increment_m": outcome.increment,
+            "bore_displacement_min_m": float(u.min()),
+            "bore_displacement_max_m": float(u.max()),
+            "deformation_rate_m_per_s": memory.deformation_rate})
+        return result, dataclasses.replace(
+            memory, inner=inner, deformation=u, iterations=memory.iterations
+            + outcome.iterations, residual=outcome.residual, increment=outcome.increment)
+
+    def force_with_memory(self, state: FilmState,
+                          memory: ElasticMemory) -> tuple[float, float, ElasticMemory]:
+        """Coupled film force (F_x, F_y) [N] and the memory after it."""
+        result, memory = self.solve_with_memory(state, memory)
+        return result.force_x, result.force_y, memory
+
+    def advance_memory(self, state: FilmState, memory: ElasticMemory,
+                       dt: float) -> ElasticMemory:
+        """After a step ``dt`` [s]: φ and the elapsed angle move by ω dt, the inner memory
+        is advanced on the deformed film, the step diagnostics restart."""
+        inner = memory.inner
+        if hasattr(self.base, "advance_memory"):
+            deformed = dataclasses.replace(state, deformation=self._field(memory.deformation))
+            inner = self.base.advance_memory(deformed, inner, dt)
+        start = memory.step_start if memory.step_start is not None else memory.deformation
+        rate = float(np.max(np.abs(memory.deformation - start))) / dt if dt > 0 else 0.0
+        if memory.clocked:
+            return dataclasses.replace(memory, inner=inner)
+        turned = self.crank_speed * dt
+        return dataclasses.replace(
+            memory, inner=inner, crank_angle=memory.crank_angle + turned,
+            elapsed=memory.elapsed + turned, iterations=0, updates=0, deformation_rate=rate,
+            step_start=memory.deformation, reference=memory.deformation, reference_dt=dt)
+
+    def force(self, state: FilmState) -> tuple[float, float]:
+        """Coupled film force from the initial memory (rigid start ignored) [N]."""
+        fx, fy, _ = self.force_with_memory(state, self._static_memory())
+        return fx, fy
+
+    def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+        """Coupled result from the initial memory (rigid start ignored)."""
+        return self.solve_with_memory(state, self._static_memory(),
+                                      with_pressure=with_pressure)[0]
+
+    def balance_velocity(self, state: FilmState, load: tuple[float, float],
+                         memory: ElasticMemory, crank_angle: float
+) -> tuple[float, float, float, ElasticMemory]:
+        """Massless journal: velocity (v_x, v_y) [m/s] at which the film on the deformed
+        bore balances ``load`` W [N], the relative force residual [-] and the memory after
+        it (bore displacement and velocity solved together, :mod:`conrod.ehd.balance`).
+        The velocity of ``state`` is the start value; ``crank_angle`` φ [rad] is the time
+        of the state (a new φ makes the last deformation the reference of the rate)."""
+        before, memory = memory, self._clock(memory, crank_angle)
+        share = self.settings.share(memory.elapsed)
+        elastic = share > 0.0
+        operator = (share * self.housing.corrected_compliance if elastic
+                    else self._zero_operator)
+        inertia = share * self.inertia_deformation(memory.crank_angle)
+        start = (_extrapolated(before, memory) if elastic
+                 else np.zeros(len(self.housing.angles)))
+        c = self.base.geometry.radial_clearance
+        scale = c * max(self.crank_speed, 1e-3)
+
+        def evaluate(u: np.ndarray, v: np.ndarray):
+            moving = dataclasses.replace(state, velocity_x=float(v[0]), velocity_y=float(v[1]))
+            forces, h_min, payload = self.evaluator(moving, memory)(u)
+            if isinstance(payload, PressureEvaluation):
+                return forces, payload.force(self.base), h_min, payload
+            result = payload[0]
+            return forces, np.array([result.force_x, result.force_y]), h_min, payload
+
+        if self.exact:
+            outcome = newton_balance(
+                evaluate, self._responder(memory), start,
+                np.array([state.velocity_x, state.velocity_y]), np.asarray(load, dtype=float),
+                inertia, operator, c, scale, self._coupling.tolerance,
+                5 * self.settings.max_iterations, self.settings.increment_share,
+                chord=self.chords["balance" if elastic else "rigid"])
+        else:
+            outcome = solve_balance(
+                evaluate, start, np.array([state.velocity_x, state.velocity_y]),
+                np.asarray(load, dtype=float), inertia, operator,
+                self.balance_jacobian if elastic else self.rigid_jacobian, c, scale,
+                self._coupling.tolerance, 5 * self.settings.max_iterations,
+                self.settings.increment_share)
+        if not outcome.converged:
+            raise ConvergenceError(
+                "elastohydrodynamic force balance did not converge (residual: film force + "
+                f"load, N; bore displacement residual {outcome.residual:.3g} m"
+                f"{_film_closing(outcome.payload, self.carries_asperity())})",
+                where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
+                residual=outcome.force_residual * (float(np.hypot(*load)) + 1.0))
+        result, inner = self._finish(outcome.payload)
+        after = dataclasses.replace(
+            memory, inner=inner, deformation=outcome.deformation,
+            iterations=memory.iterations + outcome.iterations,
+            updates=memory.updates + outcome.updates, residual=outcome.residual,
+            increment=outcome.increment)
+        return (float(outcome.velocity[0]), float(outcome.velocity[1]),
+                outcome.force_residual, after)
+
+    # ------------------------------------------------------ journal with mass
+    def supports_mass_step(self) -> bool:
+        """True when the orbit with mass can step this film: the exact film response
+        (isoviscous Reynolds film, :mod:`conrod.ehd.mass_step`) [-]."""
+        return self.exact
+
+    def mass_step(self, request, memory: ElasticMemory, previous: ElasticMemory | None = None,
+                  extra_force=None, earlier: ElasticMemory | None = None):
+        """One implicit step of the journal with mass, bore and end velocity solved together
+        (:func:`conrod.ehd.mass_step.mass_step`)."""
+        from conrod.ehd.mass_step import mass_step
+
+        return mass_step(self, request, memory, previous, extra_force, earlier)
+
+    # ---------------------------------------------------------------- coupling
+    def _static_memory(self) -> ElasticMemory:
+        settings = self.settings
+        return dataclasses.replace(self.initial_memory(),
+                                   elapsed=settings.rigid_start + settings.ramp)
+
+    def _field(self, deformation: np.ndarray) -> np.ndarray:
+        return self.housing.film_field(deformation, self._axial_nodes)
+
+    def inertia_deformation(self, crank_angle: float) -> np.ndarray:
+        """Corrected inertia deformation P U c(φ) at φ [rad] [m]; zero without crank
+        kinematics (table loads)."""
+        if self.housing.kinematics is None:
+            return np.zeros(len(self.housing.angles))
+        return self.housing.inertia_deformation(crank_angle)
+
+    def _clock(self, memory: ElasticMemory, crank_angle: float) -> ElasticMemory:
+        """Memory at the time φ [rad]: on a new φ the last deformation becomes the rate's
+        reference and the elapsed angle grows."""
+        turned = (crank_angle - memory.crank_angle) % self.settings.cycle
+        if not memory.clocked:
+            return dataclasses.replace(memory, clocked=True, crank_angle=crank_angle)
+        if turned < 1e-12 or self.settings.cycle - turned < 1e-12:
+            return memory
+        dt = turned / self.crank_speed
+        rate = float(np.max(np.abs(memory.deformation - memory.reference))) / dt if (
+            memory.reference is not None) else 0.0
+        return dataclasses.replace(
+            memory, crank_angle=crank_angle, elapsed=memory.elapsed + turned, iterations=0,
+            updates=0,
+            reference=memory.deformation, reference_dt=dt, deformation_rate=rate)
+
+    def evaluator(self, state: FilmState, memory: ElasticMemory):
+        """u [m] → (nodal forces [N], h_min [m], (result, inner memory)) of the base film
+        on the bore deformed by u, with the rate (u − reference)/dt in the squeeze term."""
+        inner, reference = memory.inner, memory.reference
+        use_rate = self.settings.deformation_rate and reference is not None and (
+            memory.reference_dt > 0.0)
+
+        def evaluate(u: np.ndarray):
+            rate = self._field((u - reference) / memory.reference_dt) if use_rate else None
+            deformed = rated(state, self._field(u), rate)
+            if self.exact:  # pressure only; the characteristics once, for the answer
+                solved = evaluate_pressure(self.base, deformed, inner)
+                if self.contact is not None:  # asperity pressure on the deformed film
+                    solved = self.contact.attach(solved)
+                forces = np.sum(self._nodal * solved.load_pressure, axis=1)
+                return forces, solved.min_film_thickness(), solved
+            result, after = solve_film(self.base, deformed, inner, with_pressure=True)
+            forces = self.housing.nodal_forces(result.pressure, self._z)
+            return forces, result.min_film_thickness, (result, after, deformed)
+        return evaluate
+
+    def _responder(self, memory: ElasticMemory):
+        """payload of :meth:`evaluator` → the film's exact response there
+        (:func:`conrod.ehd.response.film_response`)."""
+        use_rate = self.settings.deformation_rate and memory.reference is not None and (
+            memory.reference_dt > 0.0)
+        step = memory.reference_dt if use_rate else None
+
+        def respond(payload: PressureEvaluation):
+            return self.with_contact_response(
+                film_response(self.base, payload.state, payload.pressure, self._nodal, step),
+                payload)
+        return respond
+
+    def deformed_min_film_thickness(self, position, memory: ElasticMemory) -> float:
+        """h_min [m] on the bore deformed by ``memory``, journal at ``position`` (x, y) [m]
+        (:func:`conrod.ehd.asperity.deformed_min_gap`; ≤ 0: closed)."""
+        return deformed_min_gap(self.housing.angles, self.base.geometry.radial_clearance,
+                                memory.deformation, position)
+
+    def open_radius(self, x: float, y: float, memory: ElasticMemory) -> float:
+        """Largest |e| [m] along the direction of (x, y) [m] at which the film on the bore
+        deformed by ``memory`` stays open (:func:`conrod.ehd.asperity.open_radius`):
+        the contact circle of the massless orbit on the deformed bore."""
+        return open_radius(self.housing.angles, self.base.geometry.radial_clearance,
+                           memory.deformation, x, y)
+
+    def with_contact_response(self, response, payload: PressureEvaluation):
+        """``response`` of the film plus the asperity contact's local terms at ``payload``
+        (:meth:`conrod.ehd.asperity.DeformedAsperity.add_response`)."""
+        if self.contact is None or payload.contact_slope is None:
+            return response
+        return self.contact.add_response(response, payload.contact_slope)
+
+    def _finish(self, payload) -> tuple[FilmResult, Any]:
+        """(film result, inner memory) of an evaluation's payload."""
+        if isinstance(payload, PressureEvaluation):
+            return payload.finish(self.base)
+        return payload[0], payload[1]
+
+    def _couple(self, state: FilmState, memory: ElasticMemory) -> CouplingOutcome:
+        evaluate = self.evaluator(state, memory)
+        share = self.settings.share(memory.elapsed)
+        if share == 0.0:
+            result, after = solve_film(self.base, state, memory.inner, with_pressure=True)
+            zero = np.zeros(len(self.housing.angles))
+            return CouplingOutcome(zero, (result, after, state), 1, 0.0, 0.0, True)
+        inertia = share * self.inertia_deformation(memory.crank_angle)
+        operator = share * self.housing.corrected_compliance
+        if self.settings.method == "fixed_point":
+            outcome = fixed_point_coupling(
+                evaluate, memory.deformation, inertia, operator, self.settings.relaxation,
+                self._coupling.tolerance, 100 * self.settings.max_iterations)
+        elif self.exact:
+            outcome = self._newton_coupling(state, memory, evaluate, inertia, operator)
+        else:
+            outcome = solve_coupling(evaluate, memory.deformation, inertia, operator,
+                                     self.jacobian, self._coupling,
+                                     self.base.geometry.radial_clearance)
+        if not outcome.converged:
+            raise ConvergenceError(
+                "elastohydrodynamic coupling did not converge (residual: bore displacement, m)",
+                where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
+                residual=outcome.residual)
+        return outcome
+
+    def _newton_coupling(self, state, memory, evaluate, inertia, operator) -> CouplingOutcome:
+        """G(u) = 0 at fixed kinematics by :func:`conrod.ehd.newton.newton_balance`."""
+        def with_velocity(u: np.ndarray, _v: np.ndarray):
+            forces, h_min, payload = evaluate(u)
+            return forces, np.zeros(2), h_min, payload
+
+        c = self.base.geometry.radial_clearance
+        outcome = newton_balance(
+            with_velocity, self._responder(memory), memory.deformation, np.zeros(2),
+            np.zeros(2), inertia, operator, c, 1.0, self._coupling.tolerance,
+            self.settings.max_iterations, self.settings.increment_share, with_velocity=False,
+            chord=self.chords["coupling"])
+        return CouplingOutcome(outcome.deformation, outcome.payload, outcome.iterations,
+                               outcome.residual, outcome.increment,
+                               outcome.residual <= self._coupling.tolerance)
+
+
+def _film_closing(payload, carries_asperity: bool) -> str:
+    """h_min on the deformed film of the last trial [m] and, without asperity contact,
+    the fix for a film too thin to carry the load ('' when the payload does not say)."""
+    if not isinstance(payload, PressureEvaluation):
+        return ""
+    h_min = payload.min_film_thickness()
+    advice = ("" if carries_asperity else "; if the film closes, enable mixed lubrication "
+              "([contact] model = 'greenwood_tripp') so that asperity contact carries the load")
+    return f"; h_min {h_min:.3g} m on the deformed film{advice}"
+
+
+def _extrapolated(before: ElasticMemory, after: ElasticMemory) -> np.ndarray:
+    """Start of the coupling at a new crank angle: the last deformation moved on at its
+    last rate, u + (u − u_prev) Δt_new/Δt_prev [m] (the squeeze term holds the rate, so a
+    start at the old deformation would begin with no bore rate at all)."""
+    moved = after.reference is before.deformation and after is not before
+    if not moved or before.reference is None or before.reference_dt <= 0.0:
+        return after.deformation
+    ratio = after.reference_dt / before.reference_dt
+    return before.deformation + ratio * (before.deformation - before.reference)

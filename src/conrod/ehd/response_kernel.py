@@ -1,0 +1,56 @@
+"""Compiled kernel of :mod:`conrod.ehd.response`: the change of the discrete flow
+balance of :mod:`conrod.film.reynolds_kernel` per unit bore displacement at one row.
+
+A bore displacement u_j raises h by u_j on the whole row j (and ḣ by ``rate`` u_j). In the
+balance of node (i, k)
+
+.. math:: r_{ik} = a^E_{ik}(p_{ik} − p_{i+1,k}) + a^E_{i−1,k}(p_{ik} − p_{i−1,k})
+          + a^N_{ik}(p_{ik} − p_{i,k+1}) + a^N_{i,k−1}(p_{ik} − p_{i,k−1}) − b_{ik}
+
+with a^E = h_e³ w/(RΔθ), a^N = h_n³ RΔθ/Δz and b = −12μ w (U/2 (h_e − h_w) + ḣ RΔθ),
+only the faces touching row j change: ∂a^E_{j−1} = ∂a^E_j = 3h_e²w/(2RΔθ),
+∂a^N_j = 3h_n² RΔθ/Δz, the wedge sources of the neighbours ∂b_{j∓1} = ∓3μwU, and
+∂b_j = −12μw RΔθ ∂ḣ/∂u (the rate). So ∂r/∂u_j lives on rows j − 1, j, j + 1.
+"""
+
+from __future__ import annotations
+
+import numba as nb
+import numpy as np
+
+
+@nb.njit(cache=True)
+def bore_row_imbalance(pressure: np.ndarray, h: np.ndarray, rate: float, radius: float,
+                       d_theta: float, d_z: float, omega_sum: float,
+                       viscosity: float) -> np.ndarray:
+    """D (n_θ, 3, n_z + 1): D[j, s, k] = ∂r[(j − 1 + s) mod n_θ, k]/∂u_j [Pa m^3]
+    (``rate`` = ∂ḣ/∂u [1/s], 0 without the deformation rate)."""
+    n_theta, n_nodes = h.shape
+    arc = radius * d_theta
+    surface_speed = radius * omega_sum
+    out = np.zeros((n_theta, 3, n_nodes))
+    for j in range(n_theta):
+        jm = (j - 1) % n_theta
+        jp = (j + 1) % n_theta
+        for k in range(n_nodes):
+            width = d_z if 0 < k < n_nodes - 1 else 0.5 * d_z
+            h_west = 0.5 * (h[jm, k] + h[j, k])      # face j−1 | j
+            h_east = 0.5 * (h[j, k] + h[jp, k])      # face j | j+1
+            d_west = 1.5 * h_west * h_west * width / arc
+            d_east = 1.5 * h_east * h_east * width / arc
+            wedge = 6.0 * viscosity * width * surface_speed * 0.5
+            # row j − 1: its east face changes, its wedge source b gains −12μw U/2 × ½
+            out[j, 0, k] = d_west * (pressure[jm, k] - pressure[j, k]) + wedge
+            # row j + 1: its west face changes, its wedge source gains +12μw U/2 × ½
+            out[j, 2, k] = d_east * (pressure[jp, k] - pressure[j, k]) - wedge
+            # row j: both faces, the axial faces, the rate in the source
+            value = (d_east * (pressure[j, k] - pressure[jp, k])
+                     + d_west * (pressure[j, k] - pressure[jm, k]))
+            if k < n_nodes - 1:
+                h_n = 0.5 * (h[j, k] + h[j, k + 1])
+                value += 3.0 * h_n * h_n * arc / d_z * (pressure[j, k] - pressure[j, k + 1])
+            if k > 0:
+                h_s = 0.5 * (h[j, k] + h[j, k - 1])
+                value += 3.0 * h_s * h_s * arc / d_z * (pressure[j, k] - pressure[j, k - 1])
+            out[j, 1, k] = value + 12.0 * viscosity * width * rate * arc
+    return out

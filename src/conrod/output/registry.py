@@ -1,0 +1,139 @@
+"""The one registry of outputs and the one writer of a result folder.
+
+Every result type says which tables and figures it has:
+
+* ``tables(results)`` — :class:`TableSpec` s, registered next to the result types
+  (:mod:`conrod.output.tables`);
+* ``figures(results)`` — :class:`FigureSpec` s, registered in :mod:`conrod.plotting` (the
+  only package that imports matplotlib; importing it registers the figures);
+* ``result_kind(results)`` — the name of the kind of result ("run", "loads", ...).
+
+:func:`write_results` is the one writer used by every CLI command, the sweep and the report:
+it builds every figure first (a failing figure writes nothing), writes the tables and
+figures atomically, and writes last ``manifest.json``::
+
+    {"conrod_version": str, "kind": str,
+     "tables": [{"file", "title", "caption"}], "figures": [{"file", "title", "caption"}]}
+
+A new result type appears everywhere at once by registering its tables and figures.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import singledispatch
+from pathlib import Path
+from typing import Any
+
+from conrod.io.atomic import atomic_path, write_csv, write_json, write_text
+from conrod.io.result_folder import staged_result_folder
+
+MANIFEST = "manifest.json"
+"""File name of the manifest, written last [-]."""
+
+FIGURE_DPI = 130
+"""Resolution of the written figures [dots per inch]."""
+
+
+@dataclass(frozen=True)
+class TableSpec:
+    """One table file of a result.
+
+    file : str  File name.
+    title : str  Short title.
+    caption : str  What the table holds, with units.
+    build : callable  () → text (written as is), or columns name → 1-D array (``.csv``),
+        or items (``.json``).
+    """
+
+    file: str
+    title: str
+    caption: str
+    build: Callable[[], Any]
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """One figure file of a result.
+
+    file : str  File name (format from the suffix, e.g. ``.png``).
+    title : str  Short title.
+    caption : str  What the figure shows, with units.
+    build : callable  () → matplotlib Figure (built in :mod:`conrod.plotting`).
+    """
+
+    file: str
+    title: str
+    caption: str
+    build: Callable[[], Any]
+
+
+@singledispatch
+def tables(results: Any) -> tuple[TableSpec, ...]:
+    """Tables of ``results`` (registered per result type)."""
+    raise TypeError(f"no tables registered for {type(results).__name__}")
+
+
+@singledispatch
+def figures(results: Any) -> tuple[FigureSpec, ...]:
+    """Figures of ``results`` (registered per result type in :mod:`conrod.plotting`)."""
+    raise LookupError(f"no figures registered for {type(results).__name__} "
+                      "(import conrod.plotting to register them)")
+
+
+@singledispatch
+def result_kind(results: Any) -> str:
+    """Kind of result written into the manifest ("run", "loads", "mechanism", ...)."""
+    raise TypeError(f"no result kind registered for {type(results).__name__}")
+
+
+def write_results(
+    results: Any, out_dir: str | os.PathLike[str], *, figures: bool = True
+) -> list[Path]:
+    """Write the tables (and figures) of ``results`` and ``manifest.json`` as one result set:
+    into a staging folder that replaces ``out_dir`` whole
+    (:func:`conrod.io.result_folder.staged_result_folder`, which adds each file's size and
+    SHA-256 to the manifest); return the paths written (manifest last)."""
+    table_specs = tables(results)
+    figure_specs = _figure_specs(results) if figures else ()
+    contents = [(spec, spec.build()) for spec in table_specs]
+    built = [(spec, spec.build()) for spec in figure_specs]  # nothing written if one fails
+    with staged_result_folder(out_dir) as stage:  # the whole set swapped in at once
+        paths = [_write_table(stage / spec.file, content) for spec, content in contents]
+        paths += [_save(figure, stage / spec.file) for spec, figure in built]
+        paths.append(write_json(stage / MANIFEST, manifest(results, table_specs, figure_specs)))
+    return [Path(out_dir) / path.relative_to(stage) for path in paths]
+
+
+def manifest(results: Any, table_specs, figure_specs) -> dict[str, Any]:
+    """The manifest items (see the module docstring)."""
+    from conrod._version import __version__
+
+    def entries(specs) -> list[dict[str, str]]:
+        return [{"file": s.file, "title": s.title, "caption": s.caption} for s in specs]
+
+    return {"conrod_version": __version__, "kind": result_kind(results),
+            "tables": entries(table_specs), "figures": entries(figure_specs)}
+
+
+def _figure_specs(results: Any) -> tuple[FigureSpec, ...]:
+    return figures(results)
+
+
+def _write_table(path: Path, content: Any) -> Path:
+    if isinstance(content, str):
+        return write_text(path, content)
+    if path.suffix == ".csv":
+        return write_csv(path, content)
+    if path.suffix == ".json":
+        return write_json(path, content)
+    return write_text(path, content)
+
+
+def _save(figure: Any, path: Path) -> Path:
+    """Save a matplotlib Figure (duck-typed: this module never imports matplotlib)."""
+    with atomic_path(path) as tmp:
+        figure.savefig(tmp, dpi=FIGURE_DPI, bbox_inches="tight")
+    return path

@@ -1,0 +1,105 @@
+"""The elastohydrodynamic run of :class:`conrod.simulation.simulation.Simulation`: the orbit on the
+deforming bore, its per-angle coupling diagnostics and the rigid companion run."""
+
+from __future__ import annotations
+
+import dataclasses
+import time
+
+import numpy as np
+
+from conrod import registry
+from conrod.contact.analysis import analyse_contact
+from conrod.ehd.cycle import elastic_cycle
+from conrod.errors import CaseError
+from conrod.film.capabilities import HasContentStep
+from conrod.results.ehd import ElasticRunResults
+
+FIXED_STEP_INTEGRATORS = ("auto", "quasi_static", "rk2")
+"""Integrators that run an elastic film without the exact response (mass-conserving,
+pressure-dependent viscosity): its memory advances in lock-step with a fixed step
+(``auto`` picks quasi_static)."""
+WITH_MASS_INTEGRATORS = ("auto", "implicit", "adaptive")
+"""Integrators that run the journal with mass on the elastic bore: fixed BDF2 steps of the
+journal and the bore together (:mod:`conrod.orbit.coupled_orbit`)."""
+
+
+def check_integrator(simulation) -> None:
+    """CaseError naming the field, before anything runs, for an integrator that cannot
+    run the elastic film: ``rk2`` for the isoviscous Reynolds film (its explicit step of a
+    few hundredths of a degree makes the bore rate in the squeeze term stiff; the implicit
+    steps of :mod:`conrod.orbit.coupled_orbit` run it), ``implicit``/``adaptive`` for a
+    film without the exact response (mass-conserving, pressure-dependent viscosity)."""
+    integrator = simulation.integrator()
+    name = integrator if isinstance(integrator, str) else integrator.name
+    with_mass = bool(simulation.film_model().supports_mass_step())
+    allowed = WITH_MASS_INTEGRATORS + ("quasi_static",) if with_mass else (
+        FIXED_STEP_INTEGRATORS)
+    if name in allowed:
+        return
+    if with_mass:
+        raise CaseError(
+            f"solver.integrator = {name!r} with an elastic [housing]: its explicit step of "
+            "a few hundredths of a degree makes the bore rate in the squeeze term too stiff "
+            "for the coupling (allowed: implicit, adaptive or auto for the journal with "
+            "mass, quasi_static for the massless journal)")
+    raise CaseError(
+        f"solver.integrator = {name!r} with an elastic [housing]: the "
+        f"{simulation.film_model().base.name} film's memory advances in lock-step with a "
+        "fixed step, which an error-controlled integrator cannot hold (allowed: "
+        "quasi_static or auto for the massless journal, rk2 for the journal with mass)")
+
+
+def elastic_run(simulation, progress=None) -> ElasticRunResults:
+    """Elastic answer, diagnostics and (unless skipped) the rigid companion run."""
+    check_integrator(simulation)
+    start = time.perf_counter()
+    results, thermal = simulation._run(progress)
+    problem, orbit = thermal.problem, thermal.orbit
+    integrator = simulation.integrator()
+    if isinstance(integrator, str):
+        integrator = registry.integrator(integrator)
+    if hasattr(integrator, "choose"):  # the automatic integrator: the one it chose
+        integrator = integrator.choose(problem)
+    name = integrator.name
+    diagnostics = elastic_cycle(problem, results.cycle, orbit.last.film_memory,
+                                massless=name == "quasi_static")
+    film = problem.film
+    if film.carries_asperity():  # contact columns from the asperity on the deformed film
+        results = dataclasses.replace(results, contact=analyse_contact(
+            simulation.case, results.cycle, diagnostics.columns.get(
+                "asperity_force_N", np.zeros(len(results.cycle.crank_angle)))))
+    elastic_seconds = time.perf_counter() - start
+    companion = simulation.rigid_companion(integrator=name)  # same journal model as above
+    rigid = None
+    if companion is not None:
+        rigid = companion._run(_staged(progress, "rigid "))[0]
+    info = {
+        "housing_model": simulation.case.housing.model,
+        "bore_nodes": int(len(film.housing.angles)),
+        "coupling_tolerance_m": film._coupling.tolerance,
+        "rigid_start_deg": float(np.degrees(film.settings.rigid_start)),
+        "jacobian_builds": film.jacobian.builds + film.balance_jacobian.builds + sum(
+            chord.builds for chord in film.chords.values()),
+        "elastic_wall_time_s": elastic_seconds,
+        "deformation_rate_in_squeeze_term": bool(
+            isinstance(film, HasContentStep) or (film.settings.deformation_rate
+                                              and film.base.name == "reynolds")),
+    }
+    summary = dataclasses.replace(results.summary, wall_time=time.perf_counter() - start)
+    return ElasticRunResults(
+        elastic=dataclasses.replace(results, summary=summary), columns=diagnostics.columns,
+        deformation=diagnostics.deformation, bore_angles=diagnostics.angles,
+        housing=film.housing, rigid=rigid, info=info,
+        peak_load_index=diagnostics.peak_load_index,
+        peak_load_pressure=diagnostics.peak_load_pressure)
+
+
+def _staged(progress, prefix: str):
+    if progress is None:
+        return None
+
+    def report(stage: str, cycle: int, error: float) -> None:
+        progress(prefix + stage, cycle, error)
+
+    return report

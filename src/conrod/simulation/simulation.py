@@ -1,0 +1,416 @@
+"""The orchestrator: ``Simulation(case).run() -> RunResults``.
+
+.. code-block:: python
+
+    from conrod import Case, Simulation
+    results = Simulation(Case.from_toml("examples/passenger_car_diesel_2000rpm.toml")).run()
+    results.summary.h_min          # [m]
+    results.cycle.p_max            # [Pa] per output crank angle
+
+Steps: loads (``[engine]`` via :mod:`conrod.loads.engine_loads` or ``[load]`` table) →
+film model (``[solver] film``) → periodic orbit from the concentric start → heat balance
+(viscosity from ``[lubricant]``, iterated when it depends on temperature) → characteristics
+→ contact post-processing of :mod:`conrod.contact.analysis` when that module exists.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from conrod.cases.case import Case
+from conrod.contact.analysis import analyse_contact
+from conrod.contact.asperity import kernel_parameters
+from conrod.errors import CaseError
+from conrod.film.base import BearingGeometry, FilmModel, FilmState
+from conrod.film.capabilities import SupportsDeformation
+from conrod.film.factory import build_film_model
+from conrod.loads.cycle import LoadCycle
+from conrod.loads.forces import two_mass_split
+from conrod.orbit.characteristics import cycle_characteristics
+from conrod.orbit.heat_balance import effective_temperature, relaxed_update
+from conrod.orbit.integrators import Integrator
+from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
+from conrod.orbit.problem import OrbitProblem
+from conrod.results.cycle_results import CycleResults, RunResults
+from conrod.results.plausibility import check_run
+from conrod.results.summary import contact_friction_power, contact_warnings, summarise
+
+DEFAULT_TABLE_LOAD_MASS = 1.0
+"""Moving mass for table loads when ``[solver] mass_x/mass_y`` are not given [kg]."""
+
+ProgressCallback = Callable[[str, int, float], None]
+"""progress(stage, cycle, periodicity_error) — called after every integrated cycle."""
+
+
+class Simulation:
+    """Periodic journal-centre orbit and characteristics of one case.
+
+    case : Case  Validated case (needs ``[bearing]`` with ``radial_clearance``,
+        ``[lubricant]`` and ``[engine]`` or ``[load]``).
+    film : FilmModel, film name or None  The film model object to use, or a registered
+        name replacing ``[solver] film``; None: the case's.
+    loads : LoadCycle or None  Load and surface speeds over the cycle; None: from the
+        case's ``[engine]`` or ``[load]`` table.
+    integrator : Integrator, integrator name or None  Orbit integrator object
+        (:class:`~conrod.orbit.integrators.Integrator`) or a registered name replacing
+        ``[solver] integrator``; None: the case's.
+    housing : Housing, "rigid" or None  Elastic big-end housing
+        (:class:`conrod.housing.housing.Housing`) whose bore deforms with the film
+        (:class:`conrod.ehd.film.ElasticFilm`); "rigid": a rigid bore; None: the case's
+        ``[housing]`` (rigid unless its model is builtin, mesh or compliance).
+    rigid_companion : bool  With an elastic housing, also run the rigid bore and compare
+        (:class:`conrod.results.ehd.ElasticRunResults`).
+    overrides : keyword arguments replacing other ``[solver]`` fields (e.g. ``max_cycles=2``,
+        ``n_theta=72``); validated like the case file.
+    """
+
+    def __init__(self, case: Case, film: FilmModel | str | None = None,
+                 loads: LoadCycle | None = None, integrator: Integrator | str | None = None,
+                 housing: Any = None, rigid_companion: bool = True, **overrides: Any):
+        case.require("run", "bearing", "lubricant")
+        if loads is None and case.engine is None and case.load is None:
+            raise CaseError("run needs either [engine] or [load] (a load table) in the case file")
+        bearing, lubricant = case.bearing, case.lubricant
+        assert bearing is not None and lubricant is not None  # checked by require()
+        if bearing.radial_clearance is None:
+            raise CaseError("bearing.radial_clearance: required by 'run' [m]")
+        if housing is not None and housing != "rigid" and not hasattr(
+                housing, "corrected_compliance"):
+            raise CaseError(f"housing = {type(housing).__name__}: not a housing (allowed: "
+                            "None, 'rigid' or a conrod.housing.housing.Housing)")
+        self._housing = housing
+        self._rigid_companion = rigid_companion
+        self._overrides = dict(overrides)
+        names = {"film": film if isinstance(film, str) else None,
+                 "integrator": integrator if isinstance(integrator, str) else None}
+        self.case = case
+        self._bearing, self._lubricant = bearing, lubricant
+        self.solver = _solver_with(case, {**overrides, **names})
+        self._film = None if film is None or isinstance(film, str) else film
+        self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
+        self._names = names
+        if self._film is None:
+            check_oil_feed(bearing.geometry(), self.solver.film)
+        self._loads = loads if loads is not None else self._read_loads()  # bad tables fail here
+
+    # -- components -------------------------------------------------------------------
+    def geometry(self) -> BearingGeometry:
+        """Bearing geometry with supply features from ``[bearing]``."""
+        return self._bearing.geometry()
+
+    def load_cycle(self) -> LoadCycle:
+        """Load and surface speeds over the cycle (given, engine loads or the load table)."""
+        return self._loads
+
+    def _read_loads(self) -> LoadCycle:
+        if self.case.load is not None:
+            from conrod.loads.table_load import load_cycle_from_table
+
+            return load_cycle_from_table(self.case.load, self.case.resolve(self.case.load.table))
+        from conrod.loads.engine_loads import compute_engine_loads
+
+        return compute_engine_loads(self.case).to_load_cycle()
+
+    def masses(self) -> tuple[float, float]:
+        """Moving masses along film x and y [kg] ([D0] §3.2).
+
+        ``[solver] mass_x/mass_y`` when given. For engine loads (rod frame, x towards the
+        small end): along the rod the piston plus the whole rod, across it the big-end share
+        of the two-mass rod (:func:`conrod.loads.forces.two_mass_split`). For table loads
+        :data:`DEFAULT_TABLE_LOAD_MASS`; a ``[load]`` table beside ``[engine]`` (which then
+        gives the crank train) takes the engine's masses.
+        """
+        s, engine = self.solver, self.case.engine
+        if engine is not None:
+            along = engine.piston_mass + engine.rod_mass
+            across = two_mass_split(engine.rod_mass, engine.rod_length,
+                                    engine.rod_cg_from_big_end).big_end
+        else:
+            along = across = DEFAULT_TABLE_LOAD_MASS
+        mass_x = s.mass_x if s.mass_x is not None else along
+        mass_y = s.mass_y if s.mass_y is not None else (s.mass_x or across)
+        return mass_x, mass_y
+
+    def film_model(self) -> FilmModel:
+        """The film model: the one given, else the one of ``[solver] film``; on the bore of
+        the elastic housing when there is one and the film can take a deformation."""
+        film = self._film if self._film is not None else self._named_film()
+        housing = self.housing()
+        if housing is None or not isinstance(film, SupportsDeformation):
+            return film
+        from conrod.ehd.mass_conserving_ehd import elastic_film
+
+        loads = self.load_cycle()
+        settings = dataclasses.replace(coupling_settings(self.case), cycle=loads.cycle)
+        return elastic_film(film, housing, loads.crank_speed, settings,
+                            _asperity_parameters(self.case))
+
+    def _named_film(self) -> FilmModel:
+        """The film of ``[solver] film`` with the case's pressure–viscosity law."""
+        return build_film_model(self.solver, self.geometry(),
+                                pressure_viscosity=self.case.lubricant.pressure_viscosity_law())
+
+    def housing(self) -> Any:
+        """The elastic housing (built once from ``[housing]``), or None for a rigid bore."""
+        if self._housing is None:
+            if self.case.housing.model == "rigid":
+                self._housing = "rigid"
+            else:
+                from conrod.housing.housing import Housing
+
+                self._housing = Housing.from_case(
+                    self.case.model_copy(update={"solver": self.solver}))
+        return None if self._housing == "rigid" else self._housing
+
+    def elastic(self) -> bool:
+        """True when the orbit runs on a deforming bore (a housing and a deformable film)."""
+        film = self._film if self._film is not None else self._named_film()
+        return self.housing() is not None and isinstance(film, SupportsDeformation)
+
+    def integrator(self) -> Integrator | str:
+        """The orbit integrator: the object given, else the name of ``[solver]``."""
+        return self._integrator if self._integrator is not None else self.solver.integrator
+
+    def problem(self, viscosity: float | None = None) -> OrbitProblem:
+        """Orbit problem at ``viscosity`` [Pa s] (default: at the supply temperature)."""
+        lubricant = self._lubricant
+        mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
+        mass_x, mass_y = self.masses()
+        film = self.film_model()
+        return OrbitProblem(
+            film, self.load_cycle(), mu, mass_x, mass_y,
+            self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
+            _asperity_parameters(self.case),
+        )
+
+    # -- run --------------------------------------------------------------------------
+    def run(self, progress: ProgressCallback | None = None) -> RunResults | Any:
+        """Periodic orbit, heat balance, characteristics and contact post-processing; with
+        an elastic housing the elastic answer, its diagnostics and the rigid companion
+        (:class:`conrod.results.ehd.ElasticRunResults`)."""
+        if not self.elastic():
+            results = self._run(progress)[0]
+            if self.housing() is None:
+                return results
+            note = (f"[housing] model = {self.case.housing.model!r} not coupled: film "
+                    f"{results.summary.film_model!r} cannot take a bore deformation (allowed: "
+                    "reynolds, mass_conserving); the bore is rigid")
+            summary = dataclasses.replace(results.summary,
+                                          warnings=(*results.summary.warnings, note))
+            return dataclasses.replace(results, summary=summary)
+        from conrod.simulation.ehd_run import elastic_run
+
+        return elastic_run(self, progress)
+
+    def rigid_companion(self, integrator: str | None = None) -> Simulation | None:
+        """The same simulation on a rigid bore (None when not asked for); ``integrator``:
+        the one the elastic run used (so that ``auto`` cannot choose a journal with mass
+        for the rigid run and a massless one for the elastic run)."""
+        if not self._rigid_companion:
+            return None
+        film = self._film if self._film is not None else self._names["film"]
+        if integrator is None:
+            integrator = (self._integrator if self._integrator is not None
+                          else self._names["integrator"])
+        return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
+                          housing="rigid", **self._overrides)
+
+    def _run(self, progress: ProgressCallback | None = None):
+        """(RunResults, the converged thermal orbit)."""
+        start = time.perf_counter()
+        thermal = self._thermal_orbit(self.problem(), progress)
+        orbit, problem, cycle = thermal.orbit, thermal.problem, thermal.cycle
+        summary = summarise(cycle, orbit, problem, self.solver, thermal.temperature,
+                            thermal.cycles, thermal.iterations, _name(self.integrator(), problem))
+        pressure, grid = _pressure_map(problem, cycle, orbit.last.film_memory)
+        results = RunResults(
+            cycle=cycle, summary=summary, clearance=problem.clearance,
+            pressure_at_p_max=pressure, pressure_grid=grid,
+            previous_cycle_eccentricity=_previous(orbit),
+            contact=analyse_contact(self.case, cycle),
+        )
+        warnings = (summary.warnings  # check_run: or ConvergenceError
+                    + tuple(check_run(results, self.case, problem.contact_radius))
+                    + tuple(contact_warnings(cycle)))
+        wall_time = time.perf_counter() - start
+        summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)
+        resolved = self.case.model_copy(update={"solver": self.solver})  # with the overrides
+        return dataclasses.replace(results, summary=summary, model=self._model_description(),
+                                   case_hash=resolved.content_hash(),
+                                   settings=self.solver.model_dump(mode="json")), thermal
+
+    def _model_description(self) -> dict[str, str]:
+        """What is computed, in words, for the headline."""
+        law = self._lubricant.pressure_viscosity_law()
+        model = {"housing": "elastic bore (EHD)" if self.elastic() else "rigid bore",
+                 "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
+        engine = self.case.engine
+        if engine is not None and engine.pressure_model is not None and self.case.load is None:
+            model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
+        return model
+
+    def _thermal_orbit(self, problem: OrbitProblem, progress: ProgressCallback | None
+    ) -> _ThermalOrbit:
+        """Orbit, its characteristics and the effective temperature, iterated when μ
+        depends on T (heat balance); the characteristics are solved once per orbit."""
+        lubricant, s = self._lubricant, self.solver
+        temperature = lubricant.supply_temperature
+        viscosity, cycles, state = problem.viscosity, 0, None
+        iterations = s.thermal_iterations if lubricant.temperature_dependent else 0
+        for iteration in range(iterations + 1):
+            stage = "orbit" if iteration == 0 else f"heat balance {iteration}"
+            current = problem.with_viscosity(viscosity)
+            orbit = self._orbit(current, state, stage, progress)
+            cycles += orbit.cycles
+            cycle = cycle_characteristics(current, orbit.last)
+            target = _heat_balance_temperature(cycle, lubricant)
+            if (target is None or iteration == iterations
+                    or abs(target - temperature) <= s.thermal_tolerance):
+                return _ThermalOrbit(orbit, current, cycle, target, cycles, iteration)
+            temperature = relaxed_update(temperature, target)
+            viscosity = lubricant.viscosity_at(temperature)
+            state = orbit.last.end_state
+        raise AssertionError("unreachable")  # pragma: no cover
+
+    def _orbit(self, problem, state, stage, progress) -> PeriodicOrbit:
+        def on_cycle(cycle: int, error: float) -> None:
+            if progress is not None:
+                progress(stage, cycle, error)
+
+        in_cycle = getattr(progress, "in_cycle", None)  # optional: crank angle in a cycle
+        cycle_deg = math.degrees(problem.loads.cycle)
+
+        def on_angle(cycle: int, phi: float) -> None:
+            in_cycle(stage, cycle, math.degrees(phi), cycle_deg)
+
+        return periodic_orbit(problem, self.solver, integrator=self.integrator(),
+                              start=state, on_cycle=on_cycle,
+                              on_angle=on_angle if in_cycle is not None else None)
+
+
+@dataclasses.dataclass(frozen=True)
+class _ThermalOrbit:
+    """The converged orbit of the heat balance and what was computed along with it."""
+
+    orbit: PeriodicOrbit
+    problem: OrbitProblem
+    cycle: CycleResults
+    temperature: float | None
+    cycles: int
+    iterations: int
+
+
+def check_oil_feed(geometry: BearingGeometry, film: str) -> None:
+    """The mass-conserving film in an orbit needs oil fed above the cavitation pressure
+    through a groove or a hole: without it the lands starve over the cycle and the orbit
+    cannot converge (a steady film solve does not need it)."""
+    fed = (geometry.grooves or geometry.feed_holes) and (
+        geometry.supply_pressure > geometry.cavitation_pressure)
+    if film == "mass_conserving" and not fed:
+        raise CaseError(
+            "solver.film = 'mass_conserving': needs an oil feed above the cavitation pressure "
+            f"(bearing.supply_pressure = {geometry.supply_pressure:g} Pa, cavitation "
+            f"{geometry.cavitation_pressure:g} Pa, {len(geometry.grooves)} groove(s), "
+            f"{len(geometry.feed_holes)} hole(s)): add a groove or feed hole to [bearing] and "
+            "set bearing.supply_pressure, or use film = 'reynolds'")
+
+
+def default_film(case: Case) -> FilmModel:
+    """The film model of ``[solver] film`` for the case's bearing."""
+    if case.bearing is None:
+        raise CaseError("[bearing]: required for a film model")
+    return build_film_model(case.solver, case.bearing.geometry())
+
+
+def _contact_thickness(solver, film) -> float:
+    """h_c of the rigid contact circle [m]; on a deforming bore the circle is widened by
+    one clearance (the bore gives way under the film), so that the journal is stopped by
+    the deformed film (h_min on the deformed bore) and not by the rigid circle."""
+    if hasattr(film, "housing"):
+        return solver.contact_film_thickness - film.geometry.radial_clearance
+    return solver.contact_film_thickness
+
+
+def coupling_settings(case: Case):
+    """:class:`conrod.ehd.film.ElasticSettings` of ``[housing]``."""
+    from conrod.ehd.film import ElasticSettings
+
+    h = case.housing
+    return ElasticSettings(tolerance=h.coupling_tolerance,
+                           rigid_start=float(np.radians(h.rigid_start_deg)),
+                           increment_share=h.increment_share,
+                           max_iterations=h.coupling_iterations)
+
+
+def _name(choice: Integrator | str, problem: OrbitProblem | None = None) -> str:
+    """Integrator name; an automatic choice names what it chose, e.g. 'auto (implicit)'."""
+    if isinstance(choice, str):
+        from conrod.registry import integrator
+
+        choice = integrator(choice)
+    choose = getattr(choice, "choose", None)
+    if choose is not None and problem is not None:
+        return f"{choice.name} ({choose(problem).name})"
+    return choice.name
+
+
+def _solver_with(case: Case, overrides: dict[str, Any]):
+    clean = {k: v for k, v in overrides.items() if v is not None}
+    if not clean:
+        return case.solver
+    from conrod.cases.base import validate_section
+    from conrod.cases.solver import SolverSection
+
+    return validate_section(SolverSection, {**case.solver.model_dump(), **clean}, "solver")
+
+
+def _heat_balance_temperature(cycle: CycleResults, lubricant) -> float | None:
+    """T_eff [°C] from the mean friction power of film and hard contact and the mean side
+    flow of the cycle."""
+    friction = cycle.friction_power.mean() + contact_friction_power(cycle).mean()
+    return effective_temperature(
+        float(friction), float(cycle.side_flow.mean()),
+        lubricant.supply_temperature, lubricant.density_at(lubricant.supply_temperature),
+        lubricant.specific_heat,
+    )
+
+
+def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None = None):
+    """(pressure field p(θ, z) [Pa], grid (θ [rad], z [m])) at the crank angle of the
+    largest p_max, with the film memory sampled there (film fraction ϑ of a
+    mass-conserving film); (None, None) for a film without a pressure field."""
+    i = int(cycle.p_max.argmax())
+    state = FilmState(
+        eccentricity_x=float(cycle.eccentricity_x[i]),
+        eccentricity_y=float(cycle.eccentricity_y[i]),
+        velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
+        journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
+        viscosity=problem.viscosity,
+    )
+    session = problem.session(film_memory[i] if film_memory else None)
+    field = session.solve(state, with_pressure=True).pressure
+    if field is None:
+        return None, None
+    return field, problem.film.grid()
+
+
+def _previous(orbit: PeriodicOrbit) -> np.ndarray | None:
+    if orbit.previous is None:
+        return None
+    return np.vstack([orbit.previous.x, orbit.previous.y])
+
+
+def _asperity_parameters(case: Case):
+    """Greenwood–Tripp kernel parameters when ``[contact] model = "greenwood_tripp"``."""
+    if case.contact.model != "greenwood_tripp":
+        return None
+    return kernel_parameters(case)
+
+
+__all__ = ["Simulation", "default_film"]
