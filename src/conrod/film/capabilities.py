@@ -220,6 +220,47 @@ class HasFlightKernel(Protocol):
         ...
 
 
+@runtime_checkable
+class CarriesAsperityContact(Protocol):
+    """A film whose force already holds the Greenwood–Tripp asperity contact, taken on its
+    own (deformed) film thickness (:class:`conrod.ehd.film.ElasticFilm`)."""
+
+    def carries_asperity(self) -> bool:
+        """True when this configuration of the film carries the asperity force [-]."""
+        ...
+
+
+@runtime_checkable
+class HasDeformedGap(Protocol):
+    """A film on a deforming bore that says where its deformed film closes, so the orbit's
+    contact circle is not rigid (:class:`conrod.ehd.film.ElasticFilm`)."""
+
+    def deformed_min_film_thickness(self, position: Any, memory: Any) -> float:
+        """h_min on the deformed film with the journal centre at ``position`` [m]."""
+        ...
+
+    def open_radius(self, x: float, y: float, memory: Any) -> float:
+        """Largest |e| along (x, y) at which the deformed film stays open [m]."""
+        ...
+
+
+@runtime_checkable
+class HasCoupledMassStep(Protocol):
+    """A film whose own unknowns are solved together with the implicit step of the journal
+    with mass (the elastic bore)."""
+
+    def supports_mass_step(self) -> bool:
+        """True when this configuration of the film can take the coupled step."""
+        ...
+
+    def mass_step(self, request: Any, memory: Any, previous: Any = None,
+                  extra_force: Any = None, earlier: Any = None) -> Any:
+        """:class:`conrod.ehd.mass_step.MassStepOutcome` of ``request`` from ``memory``
+        (``previous``: the memory one step earlier, for BDF2; ``earlier``: two steps
+        earlier, for the start value; ``extra_force(x, y)``: asperity force [N])."""
+        ...
+
+
 def refuse_deformation(state: FilmState, name: str) -> None:
     """CaseError when ``state`` carries a deformation the film ``name`` cannot honour."""
     if state.deformation is not None:

@@ -28,39 +28,18 @@ circle widened by one clearance, or whose deformed film closes, stops the orbit 
 from __future__ import annotations
 
 import math
-from typing import Any, Protocol, runtime_checkable
+from typing import Any
 
 import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
-from conrod.orbit.problem import (
-    CarriesAsperityContact,
-    HasDeformedGap,
-    OrbitProblem,
-    OrbitState,
-)
+from conrod.film.capabilities import CarriesAsperityContact, HasCoupledMassStep, HasDeformedGap
+from conrod.orbit.problem import OrbitProblem, OrbitState
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
 MAX_HALVINGS = 4
 """Most halvings of a step that does not converge [-]."""
-
-
-@runtime_checkable
-class HasCoupledMassStep(Protocol):
-    """A film whose own unknowns are solved together with the implicit step of the journal
-    with mass (the elastic bore)."""
-
-    def supports_mass_step(self) -> bool:
-        """True when this configuration of the film can take the coupled step."""
-        ...
-
-    def mass_step(self, request: Any, memory: Any, previous: Any = None,
-                  extra_force: Any = None, earlier: Any = None) -> Any:
-        """:class:`conrod.ehd.mass_step.MassStepOutcome` of ``request`` from ``memory``
-        (``previous``: the memory one step earlier, for BDF2; ``earlier``: two steps
-        earlier, for the start value; ``extra_force(x, y)``: asperity force [N])."""
-        ...
 
 
 def coupled_mass_film(problem: OrbitProblem) -> bool:

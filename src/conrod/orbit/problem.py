@@ -17,41 +17,17 @@ import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any, Protocol, runtime_checkable
+from typing import Any
 
 import numba as nb
 import numpy as np
 
 from conrod.film.base import FilmModel, FilmState
-from conrod.film.capabilities import CompiledKernel, HasCompiledKernel
+from conrod.film.capabilities import CarriesAsperityContact, CompiledKernel, HasCompiledKernel
 from conrod.loads.cycle import LoadCycle
 from conrod.orbit.memory import FilmSession
 
 ForceFunction = Callable[[float, float, float, float, float, float], tuple[float, float]]
-
-
-@runtime_checkable
-class CarriesAsperityContact(Protocol):
-    """A film whose force already holds the Greenwood–Tripp asperity contact, taken on its
-    own (deformed) film thickness (:class:`conrod.ehd.film.ElasticFilm`)."""
-
-    def carries_asperity(self) -> bool:
-        """True when this configuration of the film carries the asperity force [-]."""
-        ...
-
-
-@runtime_checkable
-class HasDeformedGap(Protocol):
-    """A film on a deforming bore that says where its deformed film closes, so the orbit's
-    contact circle is not rigid (:class:`conrod.ehd.film.ElasticFilm`)."""
-
-    def deformed_min_film_thickness(self, position: Any, memory: Any) -> float:
-        """h_min on the deformed film with the journal centre at ``position`` [m]."""
-        ...
-
-    def open_radius(self, x: float, y: float, memory: Any) -> float:
-        """Largest |e| along (x, y) at which the deformed film stays open [m]."""
-        ...
 
 
 @dataclass(frozen=True)

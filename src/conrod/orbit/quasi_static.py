@@ -21,7 +21,12 @@ import numpy as np
 
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
-from conrod.film.capabilities import CompiledKernel, HasContentStep, QuasiStaticRequest
+from conrod.film.capabilities import (
+    CompiledKernel,
+    HasContentStep,
+    HasDeformedGap,
+    QuasiStaticRequest,
+)
 from conrod.film.massless import (
     NEWTON_ITERATIONS,
     contact_forces,
@@ -31,7 +36,7 @@ from conrod.film.massless import (
 from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
 from conrod.orbit.content_orbit import content_cycle
 from conrod.orbit.memory import FilmSession
-from conrod.orbit.problem import HasDeformedGap, OrbitProblem, OrbitState
+from conrod.orbit.problem import OrbitProblem, OrbitState
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
