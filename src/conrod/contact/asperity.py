@@ -76,7 +76,7 @@ def _build_log_table() -> np.ndarray:
     return np.log(f52_quadrature(x))
 
 
-_LOG_F52 = _build_log_table()
+LOG_F52 = _build_log_table()
 _GL_POINTS, _GL_WEIGHTS = np.polynomial.legendre.leggauss(64)
 
 
@@ -90,9 +90,9 @@ def f52(x: float) -> float:
         series = 1.0 + inv2 * (1.875 + inv2 * (-0.1171875 - 0.0732421875 * inv2))
         return (-x) ** 2.5 * series
     position = (x - F52_X_MIN) / F52_STEP
-    index = min(int(position), _LOG_F52.size - 2)
+    index = min(int(position), LOG_F52.size - 2)
     frac = position - index
-    return math.exp((1.0 - frac) * _LOG_F52[index] + frac * _LOG_F52[index + 1])
+    return math.exp((1.0 - frac) * LOG_F52[index] + frac * LOG_F52[index + 1])
 
 
 @nb.njit(cache=True)

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import numba as nb
 import numpy as np
 
-from conrod.contact.asperity import _LOG_F52, F52_STEP, F52_X_MAX, F52_X_MIN, f52
+from conrod.contact.asperity import F52_STEP, F52_X_MAX, F52_X_MIN, LOG_F52, f52
 
 
 @nb.njit(cache=True)
@@ -52,8 +52,8 @@ def f52_slope(x: float) -> float:
         d_series = inv2 * inv * (-3.75 + inv2 * (0.46875 + 0.439453125 * inv2))
         return -2.5 * (-x) ** 1.5 * series + (-x) ** 2.5 * d_series
     position = (x - F52_X_MIN) / F52_STEP
-    index = min(int(position), _LOG_F52.size - 2)
-    return f52(x) * (_LOG_F52[index + 1] - _LOG_F52[index]) / F52_STEP
+    index = min(int(position), LOG_F52.size - 2)
+    return f52(x) * (LOG_F52[index + 1] - LOG_F52[index]) / F52_STEP
 
 
 @nb.njit(cache=True)

@@ -44,7 +44,7 @@ def sommerfeld_angle(theta: float, eps: float) -> float:
 
 
 @nb.njit(cache=True)
-def _active_arc_integrals(alpha: float, eps: float) -> tuple[float, float, float]:
+def active_arc_integrals(alpha: float, eps: float) -> tuple[float, float, float]:
     """∫cos²θ'/(1−ε cos θ')³, ∫sin²θ'/(…)³, ∫sinθ' cosθ'/(…)³ over θ' ∈ (α+π, α+2π)."""
     ga = sommerfeld_angle(alpha + math.pi, eps)
     gb = sommerfeld_angle(alpha + 2.0 * math.pi, eps)
@@ -78,7 +78,7 @@ def short_bearing_polar(
     if speed == 0.0:
         return 0.0, 0.0, 0.0, 0.0
     alpha = math.atan2(squeeze, wedge)
-    j_cc, j_ss, j_sc = _active_arc_integrals(alpha, eps)
+    j_cc, j_ss, j_sc = active_arc_integrals(alpha, eps)
     scale = radius * viscosity * speed * width**3 / (2.0 * clearance * clearance)
     ca = math.cos(alpha)
     sa = math.sin(alpha)

@@ -35,7 +35,7 @@ import numpy as np
 from conrod.film.massless import constrain_and_record, project_onto_circle
 from conrod.film.short_bearing_kernel import (
     ECCENTRICITY_LIMIT,
-    _active_arc_integrals,
+    active_arc_integrals,
     short_bearing_force,
 )
 
@@ -59,7 +59,7 @@ NEWTON_ITERATIONS = 60
 def unit_force_direction(alpha: float, eps: float) -> tuple[float, float, float, float]:
     """(g_r, g_t, dg_r/dα, dg_t/dα): dimensionless short-bearing force per unit wedge
     speed V at active-arc angle α [rad], line-of-centres frame (module docstring)."""
-    j_cc, j_ss, j_sc = _active_arc_integrals(alpha, eps)
+    j_cc, j_ss, j_sc = active_arc_integrals(alpha, eps)
     ca, sa = math.cos(alpha), math.sin(alpha)
     return (ca * j_sc - sa * j_cc, ca * j_ss - sa * j_sc,
             -ca * j_cc - sa * j_sc, -ca * j_sc - sa * j_ss)

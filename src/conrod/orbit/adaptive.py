@@ -41,7 +41,7 @@ MAX_PHASE_CHANGES = 5000
 def compiled_free_rhs(force, params):
     """Compiled free-phase right-hand side du/dφ(φ, u, angles, table, cycle, μ, c, ω, m_x,
     m_y) for a film with the compiled ``force`` and its ``params`` (same as
-    :meth:`_Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω)). Specialised per force
+    :meth:`Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω)). Specialised per force
     function, and per parameter values when they are hashable (frozen into the code): a
     function- or tuple-typed argument would add microseconds of dispatch to each of the
     thousands of calls per cycle from solve_ivp."""
@@ -83,7 +83,7 @@ def _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance,
     return scaled_free_rhs(u, row, fx, fy, c_omega, omega, mass_x, mass_y)
 
 
-class _Phases:
+class Phases:
     """Right-hand sides and events of the free and the contact phase."""
 
     def __init__(self, problem: OrbitProblem, state: OrbitState):
@@ -160,13 +160,13 @@ def adaptive_cycle(
     problem: OrbitProblem, state: OrbitState, settings, output_step_deg: float
 ) -> CycleTrajectory:
     """One cycle from ``state`` at φ = 0 with ``settings`` = the ``[solver]`` section."""
-    phases = _Phases(problem, state)
+    phases = Phases(problem, state)
     phi_out = problem.output_angles(output_step_deg)
     table = np.zeros((phi_out.size, 7))
     end = problem.loads.cycle
     phi, contact, steps = 0.0, state.in_contact, 0
     c, w = problem.clearance, problem.crank_speed
-    current = _scaled(state, c, w, phases)
+    current = scaled_state(state, c, w, phases)
     def hit(phi_event: float, u: np.ndarray) -> float:
         return phases.hit(phi_event, u)
 
@@ -177,7 +177,7 @@ def adaptive_cycle(
     leave.terminal, leave.direction = True, -1.0  # type: ignore[attr-defined]
     for _ in range(MAX_PHASE_CHANGES):
         rhs, event = (phases.contact_rhs, leave) if contact else (phases.free_rhs, hit)
-        sol = _solve_segment(rhs, phi, end, current, event, settings, phases.session)
+        sol = solve_segment(rhs, phi, end, current, event, settings, phases.session)
         if sol.status < 0:
             raise ConvergenceError(f"adaptive orbit integration failed: {sol.message}",
                                    where=f"crank angle {math.degrees(phi):.2f} deg")
@@ -185,18 +185,18 @@ def adaptive_cycle(
         phi_end = float(sol.t[-1])
         last = sol.status == 0
         mask = (phi_out >= phi) & ((phi_out <= phi_end) if last else (phi_out < phi_end))
-        _record(phases, sol, phi_out, mask, table, contact)
+        record_rows(phases, sol, phi_out, mask, table, contact)
         if last:
             return CycleTrajectory.from_table(
-                phi_out, table, _state(phases, sol.y[:, -1], contact), steps
+                phi_out, table, orbit_state(phases, sol.y[:, -1], contact), steps
             )
         phi = phi_end
-        current, contact = _switch(phases, phi, sol.y[:, -1], contact)
+        current, contact = switch_phase(phases, phi, sol.y[:, -1], contact)
     raise ConvergenceError("contact chattering: too many contact entries/exits",
                            where=f"crank angle {math.degrees(phi):.2f} deg")
 
 
-def _solve_segment(rhs, phi, end, current, event, settings, session):
+def solve_segment(rhs, phi, end, current, event, settings, session):
     """solve_ivp with the chosen method, then the others of :data:`FALLBACK_METHODS`; a
     failed attempt is rejected whole: the film memory restarts from its snapshot."""
     methods = [settings.adaptive_method] + [
@@ -246,7 +246,7 @@ def _budgeted(rhs, settings):
     return counted
 
 
-def _scaled(state: OrbitState, c: float, w: float, phases: _Phases) -> np.ndarray:
+def scaled_state(state: OrbitState, c: float, w: float, phases: Phases) -> np.ndarray:
     if state.in_contact:
         theta = math.atan2(state.y, state.x)
         v_k = state.vy * math.cos(theta) - state.vx * math.sin(theta)
@@ -254,7 +254,7 @@ def _scaled(state: OrbitState, c: float, w: float, phases: _Phases) -> np.ndarra
     return np.array([state.x / c, state.y / c, state.vx / (c * w), state.vy / (c * w)])
 
 
-def _state(phases: _Phases, u: np.ndarray, contact: bool) -> OrbitState:
+def orbit_state(phases: Phases, u: np.ndarray, contact: bool) -> OrbitState:
     memory = phases.session.snapshot()
     if contact:
         return OrbitState(*phases.on_circle(u), True, memory)
@@ -262,7 +262,7 @@ def _state(phases: _Phases, u: np.ndarray, contact: bool) -> OrbitState:
     return OrbitState(u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w, False, memory)
 
 
-def _switch(phases: _Phases, phi: float, u: np.ndarray, contact: bool):
+def switch_phase(phases: Phases, phi: float, u: np.ndarray, contact: bool):
     """State of the next phase after an event at φ (entry: plastic impact, eq. 4.1.5)."""
     if contact:  # leaving: free flight from the circle with the tangential velocity
         x, y, vx, vy = phases.on_circle(u)
@@ -278,7 +278,7 @@ def _switch(phases: _Phases, phi: float, u: np.ndarray, contact: bool):
     return np.array([x / c, y / c, vx / (c * w), vy / (c * w)]), False
 
 
-def _record(phases: _Phases, sol, phi_out, mask, table, contact: bool) -> None:
+def record_rows(phases: Phases, sol, phi_out, mask, table, contact: bool) -> None:
     for i in np.flatnonzero(mask):
         u = sol.sol(phi_out[i])
         if not contact:

@@ -24,7 +24,7 @@ import numba as nb
 import numpy as np
 
 from conrod.orbit.problem import periodic_sample, scaled_free_rhs
-from conrod.orbit.tr_bdf2 import UNBOUND, _bind, specialise
+from conrod.orbit.tr_bdf2 import UNBOUND, bind_globals, specialise
 
 
 def force(x, y, vx, vy, omega_sum, viscosity, params):
@@ -80,10 +80,10 @@ def flight_segment(film_force, film_force_jacobian=None):
                                         or _is_global(film_force_jacobian))
     name = _name(film_force) + ("" if film_force_jacobian is None else "_with_jacobian")
     jit = nb.njit(cache=True) if cache else nb.njit
-    rhs = jit(_bind(_rhs, f"{name}_rhs", {"force": film_force}))
+    rhs = jit(bind_globals(_rhs, f"{name}_rhs", {"force": film_force}))
     jacobian = None
     if film_force_jacobian is not None:
-        jacobian = jit(_bind(_jacobian, f"{name}_jacobian",
+        jacobian = jit(bind_globals(_jacobian, f"{name}_jacobian",
                              {"film_jacobian": film_force_jacobian}))
     return specialise(name, rhs, jacobian, compiled=True, cache=cache)
 

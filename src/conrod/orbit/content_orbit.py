@@ -339,9 +339,9 @@ def content_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
                   output_step_deg: float, *, with_mass: bool) -> CycleTrajectory:
     """One cycle from ``state`` by implicit steps of ``step_deg`` [deg] (BDF2 after a first
     backward Euler step); massless (``with_mass`` False) or with the problem's masses."""
-    from conrod.orbit.rk2 import _step_grid
+    from conrod.orbit.rk2 import step_grid
 
-    phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
+    phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)
     balance = _Balance(problem, with_mass)
     memory = state.film_memory if state.film_memory is not None else problem.film.initial_memory()
     start = _Start(state.x, state.y, state.vx, state.vy, memory)

@@ -67,9 +67,9 @@ class _Point:
 def coupled_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
                   output_step_deg: float) -> CycleTrajectory:
     """One cycle with mass from ``state`` by implicit steps of ``step_deg`` [deg]."""
-    from conrod.orbit.rk2 import _step_grid
+    from conrod.orbit.rk2 import step_grid
 
-    phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
+    phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)
     film = problem.film
     memory = state.film_memory if state.film_memory is not None else film.initial_memory()
     point = _Point((state.x, state.y), (state.vx, state.vy), memory)

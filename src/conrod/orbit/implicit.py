@@ -21,12 +21,12 @@ from conrod.film.base import FilmState
 from conrod.film.capabilities import HasFlightKernel, HasForceJacobian
 from conrod.orbit.adaptive import (
     MAX_PHASE_CHANGES,
-    _Phases,
-    _record,
-    _scaled,
-    _solve_segment,
-    _state,
-    _switch,
+    Phases,
+    orbit_state,
+    record_rows,
+    scaled_state,
+    solve_segment,
+    switch_phase,
 )
 from conrod.orbit.compiled_flight import flight_segment
 from conrod.orbit.problem import OrbitProblem, OrbitState, periodic_sample
@@ -71,7 +71,7 @@ def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleT
             f"solver.integrator = 'implicit': the {problem.film.name} film carries a film "
             "content that is advanced in lock-step with a fixed step (allowed: rk2, "
             "quasi_static)")
-    phases = _Phases(problem, state)
+    phases = Phases(problem, state)
     runner = _FreeFlight(problem, phases, settings)
     phi_out = problem.output_angles(settings.output_step_deg)
     table = np.zeros((phi_out.size, 7))
@@ -79,7 +79,7 @@ def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleT
     free_rows = np.zeros(phi_out.size, dtype=bool)
     end = float(problem.loads.cycle)
     phi, contact, steps, next_out = 0.0, state.in_contact, 0, 0
-    current = _scaled(state, problem.clearance, problem.crank_speed, phases)
+    current = scaled_state(state, problem.clearance, problem.crank_speed, phases)
     leave = _leave_event(phases)
     for _ in range(MAX_PHASE_CHANGES):
         if not contact:
@@ -91,10 +91,10 @@ def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleT
             if status == STATUS_END:
                 _fill_free(table, free_u, free_rows, problem)
                 return CycleTrajectory.from_table(
-                    phi_out, table, _state(phases, u, False), steps)
-            current, contact = _switch(phases, phi, u, False)
+                    phi_out, table, orbit_state(phases, u, False), steps)
+            current, contact = switch_phase(phases, phi, u, False)
             continue
-        sol = _solve_segment(phases.contact_rhs, phi, end, current, leave, settings,
+        sol = solve_segment(phases.contact_rhs, phi, end, current, leave, settings,
                              phases.session)
         if sol.status < 0:
             raise ConvergenceError(f"contact phase integration failed: {sol.message}",
@@ -103,14 +103,14 @@ def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleT
         phi_end = float(sol.t[-1])
         last = sol.status == 0
         mask = (phi_out >= phi) & ((phi_out <= phi_end) if last else (phi_out < phi_end))
-        _record(phases, sol, phi_out, mask, table, True)
+        record_rows(phases, sol, phi_out, mask, table, True)
         if last:
             _fill_free(table, free_u, free_rows, problem)
             return CycleTrajectory.from_table(
-                phi_out, table, _state(phases, sol.y[:, -1], True), steps)
+                phi_out, table, orbit_state(phases, sol.y[:, -1], True), steps)
         next_out = int(np.searchsorted(phi_out, phi_end, side="left"))
         phi = phi_end
-        current, contact = _switch(phases, phi, sol.y[:, -1], True)
+        current, contact = switch_phase(phases, phi, sol.y[:, -1], True)
     raise ConvergenceError("contact chattering: too many contact entries/exits",
                            where=f"crank angle {math.degrees(phi):.2f} deg")
 
@@ -118,7 +118,7 @@ def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleT
 class _FreeFlight:
     """TR-BDF2 free-flight segments of one cycle (compiled or Python)."""
 
-    def __init__(self, problem: OrbitProblem, phases: _Phases, settings):
+    def __init__(self, problem: OrbitProblem, phases: Phases, settings):
         kernel = problem.compiled_force
         self.compiled = kernel is not None
         self.chunked = kernel is None  # a closed-form or tabulated force: one chunk
@@ -194,7 +194,7 @@ class _FreeFlight:
         return status, phi_new, u_new, h, steps, next_out
 
 
-def _film_jacobian(problem: OrbitProblem, phases: _Phases, phi, u, f0, params, data):
+def _film_jacobian(problem: OrbitProblem, phases: Phases, phi, u, f0, params, data):
     """∂(du/dφ)/∂u [-] from the film's own ∂F/∂(e, ė)
     (:class:`~conrod.film.capabilities.HasForceJacobian`)."""
     c, w = problem.clearance, problem.crank_speed
@@ -212,7 +212,7 @@ def _film_jacobian(problem: OrbitProblem, phases: _Phases, phi, u, f0, params, d
     return out
 
 
-def _leave_event(phases: _Phases):
+def _leave_event(phases: Phases):
     def leave(phi_event: float, u: np.ndarray) -> float:
         return phases.leave(phi_event, u)
 

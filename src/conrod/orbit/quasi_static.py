@@ -115,11 +115,11 @@ def quasi_static_cycle(
     problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float
 ) -> CycleTrajectory:
     """One cycle of the massless orbit from ``state`` (only its position is used)."""
-    from conrod.orbit.rk2 import _step_grid
+    from conrod.orbit.rk2 import step_grid
 
     if isinstance(problem.film, HasContentStep):
         return content_cycle(problem, state, step_deg, output_step_deg, with_mass=False)
-    phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
+    phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed

@@ -89,7 +89,7 @@ def rk2_compiled_cycle(
     return out, np.array([x, y, vx, vy, 1.0 if contact else 0.0]), stiffness
 
 
-def _step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
+def step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
     record_every = int(round(output_step_deg / step_deg))
     if record_every < 1 or abs(record_every * step_deg - output_step_deg) > 1e-9 * output_step_deg:
         raise CaseError(
@@ -152,7 +152,7 @@ def stable_step_cycle(problem: OrbitProblem, state: OrbitState,
 def _fixed_step_cycle(
     problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float
 ) -> CycleTrajectory:
-    phi, record_every, n_out = _step_grid(problem, step_deg, output_step_deg)
+    phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
     dt = (phi[1] - phi[0]) / problem.crank_speed

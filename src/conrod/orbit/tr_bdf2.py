@@ -252,7 +252,7 @@ def _segment(params, data, phi, end, u, h, max_step, rtol, atol, circle,
     return status, phi, u, h, steps, next_out, evaluations
 
 
-def _bind(template, name, functions):
+def bind_globals(template, name, functions):
     """``template`` with the global names in ``functions`` bound (same code, own name)."""
     bound = types.FunctionType(template.__code__, {**template.__globals__, **functions},
                                name)
@@ -274,9 +274,9 @@ def specialise(name, rhs, jacobian=None, *, compiled, cache=False):
     wrap = jit if compiled else (lambda function: function)
     functions = {"rhs": rhs}
     if jacobian is None:
-        jacobian = wrap(_bind(_fd_jacobian, f"{name}_fd_jacobian", functions))
+        jacobian = wrap(bind_globals(_fd_jacobian, f"{name}_fd_jacobian", functions))
     inline = (nb.njit(cache=cache, inline="always") if compiled  # no library of its own
               else (lambda function: function))
-    stage = inline(_bind(_stage, f"{name}_stage", functions))
-    return wrap(_bind(_segment, f"{name}_segment",
+    stage = inline(bind_globals(_stage, f"{name}_stage", functions))
+    return wrap(bind_globals(_segment, f"{name}_segment",
                       {"rhs": rhs, "jacobian": jacobian, "stage": stage}))
