@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from conrod.housing.housing import Housing
-from conrod.results.ehd import ElasticRunResults, elastic_summary_items
+from conrod.output.ehd_tables import elastic_summary_items
+from conrod.results.ehd import ElasticRunResults
 from conrod.simulation.simulation import Simulation
 from elastic_helpers import kamaz_case
 
