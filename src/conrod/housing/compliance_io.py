@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from conrod.errors import CaseError
-from conrod.io.atomic import atomic_path
+from conrod.io.atomic import write_npz
 
 SYMMETRY_TOLERANCE = 1.0e-6
 """Largest max|C − Cᵀ| / max|C| accepted [-]."""
@@ -143,7 +143,4 @@ def write_compliance(path: Path, angles: np.ndarray, compliance: np.ndarray,
                               "compliance_m_per_N": compliance}
     if inertia_base is not None:
         arrays["inertia_base_m"] = inertia_base
-    save: Any = np.savez
-    with atomic_path(path) as tmp:
-        save(tmp, **arrays)
-    return path
+    return write_npz(path, arrays)

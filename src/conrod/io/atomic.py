@@ -133,3 +133,10 @@ def write_csv(
             for row in table:
                 handle.write(",".join(str(v) for v in row) + "\n")
     return Path(target)
+
+
+def write_npz(target: str | os.PathLike[str], arrays: Mapping[str, np.ndarray]) -> Path:
+    """Write the named ``arrays`` as one uncompressed ``.npz`` to ``target`` atomically."""
+    with atomic_path(target) as tmp, open(tmp, "wb") as handle:
+        np.savez(handle, **{name: np.asarray(value) for name, value in arrays.items()})
+    return Path(target)

@@ -27,7 +27,7 @@ from functools import singledispatch
 from pathlib import Path
 from typing import Any
 
-from conrod.io.atomic import atomic_path, write_csv, write_json, write_text
+from conrod.io.atomic import atomic_path, write_csv, write_json, write_npz, write_text
 from conrod.io.result_folder import staged_result_folder
 
 MANIFEST = "manifest.json"
@@ -45,7 +45,7 @@ class TableSpec:
     title : str  Short title.
     caption : str  What the table holds, with units.
     build : callable  () → text (written as is), or columns name → 1-D array (``.csv``),
-        or items (``.json``).
+        items (``.json``) or named arrays (``.npz``).
     """
 
     file: str
@@ -129,6 +129,8 @@ def _write_table(path: Path, content: Any) -> Path:
         return write_csv(path, content)
     if path.suffix == ".json":
         return write_json(path, content)
+    if path.suffix == ".npz":
+        return write_npz(path, content)
     return write_text(path, content)
 
 

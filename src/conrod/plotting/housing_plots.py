@@ -54,55 +54,48 @@ def _magnification(radius: float, fields: list[np.ndarray]) -> float:
         np.log10(scale)) >= 5 else 2 if scale / 10 ** np.floor(np.log10(scale)) >= 2 else 1))
 
 
-def bore_deformation_figure(housing, directions_deg=(0.0, 90.0, 180.0, 270.0),
-                            load: float = 1.0e4) -> Figure:
-    """Magnified deformed bore under a cosine load of ``load`` [N] (±90°) in four
-    directions θ_W: raw (clamped model) and rigid-body corrected, each with its own scale."""
-    from conrod.housing.stresses import cosine_forces
-
+def bore_deformation_figure(results) -> Figure:
+    """Magnified bore under the cosine test loads (±90°) of a housing study
+    (:class:`conrod.results.housing.HousingResults`): raw (clamped model) and rigid-body
+    corrected, each with its own scale."""
+    housing = results.housing
     figure = Figure(figsize=(10.0, 10.0))
     panels = figure.subplots(2, 2).ravel()
-    raw_all = [housing.pressure_deformation(cosine_forces(housing.angles, load * np.array(
-        [np.cos(np.radians(d)), np.sin(np.radians(d))])), corrected=False) for d in directions_deg]
-    corrected_all = [housing.correct(raw) for raw in raw_all]
-    raw_scale = _magnification(housing.radius, raw_all)
-    corrected_scale = _magnification(housing.radius, corrected_all)
-    for axes, direction, raw, corrected in zip(panels, directions_deg, raw_all, corrected_all,
-                                               strict=True):
-        _bore_outline(axes, housing.angles, housing.radius, np.zeros_like(raw), 0.0,
+    raw_scale = _magnification(housing.radius, [case.raw for case in results.bore])
+    corrected_scale = _magnification(housing.radius, [case.corrected for case in results.bore])
+    for axes, case in zip(panels, results.bore, strict=True):
+        _bore_outline(axes, housing.angles, housing.radius, np.zeros_like(case.raw), 0.0,
                       color="0.7", lw=1.0, label="undeformed")
-        _bore_outline(axes, housing.angles, housing.radius, raw, raw_scale, color="tab:orange",
-                      label=f"raw (clamped) × {raw_scale:.0f}")
-        _bore_outline(axes, housing.angles, housing.radius, corrected, corrected_scale,
+        _bore_outline(axes, housing.angles, housing.radius, case.raw, raw_scale,
+                      color="tab:orange", label=f"raw (clamped) × {raw_scale:.0f}")
+        _bore_outline(axes, housing.angles, housing.radius, case.corrected, corrected_scale,
                       color="tab:blue", label=f"corrected ({housing.correction}) × "
                       f"{corrected_scale:.0f}")
-        theta = np.radians(direction)
+        theta = case.direction
         axes.annotate("", xy=(0.6 * housing.radius * np.cos(theta),
                               0.6 * housing.radius * np.sin(theta)), xytext=(0, 0),
                       arrowprops={"arrowstyle": "->", "color": "k"})
         axes.set_aspect("equal")
-        axes.set_title(f"load towards θ = {direction:.0f}°: corrected range "
-                       f"{np.ptp(corrected) * MICRO:.1f} µm", fontsize=9)
+        axes.set_title(f"{case.label}: corrected range "
+                       f"{np.ptp(case.corrected) * MICRO:.1f} µm", fontsize=9)
         axes.set_xticks([])
         axes.set_yticks([])
     panels[0].legend(fontsize=7, loc="lower left")
-    figure.suptitle(f"Bore under a {load / 1e3:.0f} kN cosine load (±90°); x_rod to the "
-                    "right, towards the small end")
+    figure.suptitle(f"Bore under a {results.test_load / 1e3:.0f} kN cosine load (±90°); "
+                    "x_rod to the right, towards the small end")
     return figure
 
 
-def inertia_deformation_figure(housing) -> Figure:
-    """Radial bore displacement from the rod's own inertia at TDC (φ = 0) and BDC (φ = 180°),
-    raw and corrected, against θ."""
+def inertia_deformation_figure(results) -> Figure:
+    """Radial bore displacement from the rod's own inertia at TDC and BDC, raw and
+    corrected, against θ (:class:`conrod.results.housing.HousingResults`)."""
     figure = Figure(figsize=(9.0, 4.5))
     axes = figure.subplots()
-    theta_deg = np.degrees(housing.angles)
-    for crank_deg, color in ((0.0, "tab:red"), (180.0, "tab:blue")):
-        phi = np.radians(crank_deg)
-        axes.plot(theta_deg, housing.inertia_deformation(phi, corrected=False) * MICRO,
-                  "--", color=color, label=f"φ = {crank_deg:.0f}° raw")
-        axes.plot(theta_deg, housing.inertia_deformation(phi) * MICRO, color=color,
-                  label=f"φ = {crank_deg:.0f}° corrected")
+    theta_deg = np.degrees(results.housing.angles)
+    for case, color in zip(results.inertia, ("tab:red", "tab:blue"), strict=False):
+        axes.plot(theta_deg, case.raw * MICRO, "--", color=color, label=f"{case.label} raw")
+        axes.plot(theta_deg, case.corrected * MICRO, color=color,
+                  label=f"{case.label} corrected")
     axes.set_xlabel("shell angle θ [deg] (0 = towards the small end)")
     axes.set_ylabel("radial displacement, outward + [µm]")
     axes.set_xlim(0, 360)

@@ -1,11 +1,13 @@
-"""Film pressure fields for the rod-stress study (``conrod stress``): the run whose film
-pressure loads the rod (:mod:`conrod.housing.stresses` compares the two load schemes)."""
+"""The rod-stress study (``conrod stress``): the rod under the film pressure of a run and
+under the same resultant as a cosine load (:mod:`conrod.housing.stresses` compares the two
+load schemes), as :class:`conrod.results.housing.StressResults`."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from conrod.film.base import FilmState
+from conrod.results.housing import StressResults
 from conrod.simulation.simulation import Simulation
 
 
@@ -32,3 +34,13 @@ def rigid_run_pressures(case, crank_angles_deg: list[float]):
                           shell_speed=float(cycle.shell_speed[k]), viscosity=viscosity)
         fields.append(film.solve(state, with_pressure=True).pressure)
     return np.asarray(theta), np.asarray(z), fields
+
+
+def stress_study(case, housing, crank_angles_deg: list[float]) -> StressResults:
+    """Both load schemes at every crank angle [deg], the film pressure from the run on the
+    rigid bore (:func:`rigid_run_pressures`)."""
+    theta, z, pressures = rigid_run_pressures(case, crank_angles_deg)
+    schemes = {angle: housing.stresses(p, z, np.radians(angle), theta)
+               for angle, p in zip(crank_angles_deg, pressures, strict=True)}
+    source = f"film pressure of the {case.solver.film} film on the rigid bore"
+    return StressResults(housing.structure, schemes, source)
