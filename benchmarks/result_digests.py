@@ -5,8 +5,9 @@ Run:  python benchmarks/result_digests.py record before.json
       python benchmarks/result_digests.py compare before.json [--relative 1e-9]
 
 Every shipped orbit example as shipped, and every film × integrator pair on two of them
-(the rigid passenger-car case, and the Ruston & Hornsby case, whose groove feeds the
-mass-conserving film, with and without its elastic housing), each at coarse settings
+(the rigid passenger-car case, and the Ruston & Hornsby case on its elastic housing), plus
+the Ruston & Hornsby case fed at 3 bar through its groove (so that the mass-conserving film
+runs) on its elastic housing and on a rigid bore, each at coarse settings
 (``--grid 24x8 --max-cycles 3 --no-figures --no-step-check``) in its own process. ``record``
 stores per run the exit code, the SHA-256 of every CSV and of ``summary.json`` without its
 wall times, and the headline numbers (h_min, p_max, friction power, flows) at full
@@ -38,6 +39,16 @@ HEADLINE = ("h_min_m", "p_max_Pa", "mean_total_friction_power_W", "mean_side_flo
             "mean_supply_flow_m3_s")
 
 
+VARIANTS = {
+    "ruston_hornsby_6vebx_mk3@fed": ("ruston_hornsby_6vebx_mk3", (
+        ("supply_pressure = 0.0 ", "supply_pressure = 3.0e5 "),)),
+    "ruston_hornsby_6vebx_mk3@fed-rigid": ("ruston_hornsby_6vebx_mk3", (
+        ("supply_pressure = 0.0 ", "supply_pressure = 3.0e5 "),
+        ('model = "builtin"', 'model = "rigid"'))),
+}
+"""Case variants: name → (shipped example, text replacements in its case file)."""
+
+
 def runs() -> list[tuple[str, tuple[str, ...]]]:
     """(name, extra arguments) of every run."""
     out = [(example, ()) for example in EXAMPLES]
@@ -47,7 +58,29 @@ def runs() -> list[tuple[str, tuple[str, ...]]]:
             for integrator in INTEGRATORS:
                 out.append((f"{example}+{film}+{integrator}",
                             ("--film", film, "--integrator", integrator)))
+    for variant in VARIANTS:
+        for film in ("reynolds", "mass_conserving"):
+            for integrator in INTEGRATORS:
+                out.append((f"{variant}+{film}+{integrator}",
+                            ("--film", film, "--integrator", integrator)))
     return out
+
+
+def case_file(name: str, scratch: Path) -> Path:
+    """The case file of run ``name``: a shipped example, or a variant written to
+    ``scratch`` with its relative table paths made absolute."""
+    key = name.split("+")[0]
+    if key not in VARIANTS:
+        return ROOT / "examples" / f"{key}.toml"
+    example, replacements = VARIANTS[key]
+    text = (ROOT / "examples" / f"{example}.toml").read_text(encoding="utf-8")
+    for old, new in replacements:
+        assert old in text, f"{example}: {old!r} not found"
+        text = text.replace(old, new)
+    text = text.replace('"data/', f'"{(ROOT / "examples" / "data").as_posix()}/')
+    path = scratch / f"{key.replace('@', '_')}.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
 
 
 def _scrub(value):
@@ -73,11 +106,9 @@ def _numbers(summary, prefix: str = "") -> dict:
 
 def fingerprint(name: str, extra: tuple[str, ...], scratch: Path) -> dict:
     """Exit code, digests and headline numbers of one run."""
-    example = name.split("+")[0]
     out = scratch / name
     command = [sys.executable, "-c", "from conrod.cli.app import main; main()", "run",
-               str(ROOT / "examples" / f"{example}.toml"), *extra, *COARSE,
-               "--out", str(out)]
+               str(case_file(name, scratch)), *extra, *COARSE, "--out", str(out)]
     if not name.endswith("-ehd"):
         command.append("--no-rigid")
     done = subprocess.run(command, capture_output=True, text=True, timeout=1800,
@@ -97,10 +128,10 @@ def fingerprint(name: str, extra: tuple[str, ...], scratch: Path) -> dict:
     return record
 
 
-def record_all(workers: int) -> dict:
+def record_all(workers: int, match: str = "") -> dict:
     with tempfile.TemporaryDirectory() as tmp, ThreadPoolExecutor(workers) as pool:
         futures = {name: pool.submit(fingerprint, name, extra, Path(tmp))
-                   for name, extra in runs()}
+                   for name, extra in runs() if match in name}
         return {name: future.result() for name, future in futures.items()}
 
 
@@ -133,14 +164,18 @@ def main() -> None:
     parser.add_argument("path", type=Path)
     parser.add_argument("--relative", type=float, default=1e-9)
     parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--match", default="", help="only the runs whose name contains this")
     args = parser.parse_args()
-    fingerprints = record_all(args.workers)
+    fingerprints = record_all(args.workers, args.match)
     if args.mode == "record":
-        args.path.write_text(json.dumps(fingerprints, indent=1, sort_keys=True),
+        old = (json.loads(args.path.read_text(encoding="utf-8"))
+               if args.match and args.path.exists() else {})
+        args.path.write_text(json.dumps({**old, **fingerprints}, indent=1, sort_keys=True),
                              encoding="utf-8")
         print(f"{len(fingerprints)} runs recorded in {args.path}")
         return
-    before = json.loads(args.path.read_text(encoding="utf-8"))
+    before = {name: record for name, record in
+              json.loads(args.path.read_text(encoding="utf-8")).items() if args.match in name}
     for line in compare(before, fingerprints, args.relative):
         print(line)
 

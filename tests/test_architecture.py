@@ -212,7 +212,7 @@ def test_the_case_schema_and_the_factory_read_one_registry_of_names():
 def test_every_result_file_is_in_the_manifest(tmp_path):
     """The one writer writes each registered table and figure and lists them, with
     titles and captions, in manifest.json (written last)."""
-    import conrod.plotting  # noqa: F401
+    import conrod.output  # noqa: F401  (registers the tables and figures)
     from conrod import __version__
     from conrod.cases.case import Case
     from conrod.loads.engine_loads import compute_engine_loads

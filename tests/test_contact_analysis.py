@@ -95,7 +95,7 @@ def test_hard_contact_summary_matches_seed_definitions(tmp_path):
 
 
 def test_write_files_tables_and_figures(tmp_path):
-    import conrod.plotting  # noqa: F401  (registers the figures)
+    import conrod.output  # noqa: F401  (registers the tables and figures)
     from conrod.output.registry import write_results
 
     result = analyse_contact(_case(surface_elements=90), _combustion_cycle())

@@ -60,7 +60,7 @@ def test_results_folder_holds_elastic_rigid_and_comparison(stiff_run, tmp_path):
 
     import pandas as pd
 
-    import conrod.plotting  # noqa: F401  (registers the figures)
+    import conrod.output  # noqa: F401  (registers the tables and figures)
     from conrod.output.registry import write_results
 
     write_results(stiff_run, tmp_path)

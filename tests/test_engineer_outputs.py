@@ -226,7 +226,7 @@ def test_pressure_map_peak_lies_inside_the_plot_away_from_its_edges(peak_deg):
 def test_run_registers_the_film_thickness_map_and_envelope():
     """Independent answer for the envelope: h = c − |e| at the shell angle facing the
     journal centre, so min over θ and φ of the map equals min over φ of c − |e|."""
-    import conrod.plotting  # noqa: F401
+    import conrod.output  # noqa: F401  (registers the tables and figures)
     from conrod import Case, Simulation
     from conrod.output.registry import figures
     from conrod.plotting.film_maps import film_thickness_over_cycle

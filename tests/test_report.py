@@ -18,7 +18,7 @@ import pytest
 from matplotlib.image import imread
 from typer.testing import CliRunner
 
-import conrod.plotting  # noqa: F401  (registers the figures)
+import conrod.output  # noqa: F401  (registers the tables and figures)
 from conrod import Case, Simulation
 from conrod.cli.app import _register_commands, app
 from conrod.errors import CaseError

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-import conrod.plotting  # noqa: F401  (registers the figures)
+import conrod.output  # noqa: F401  (registers the tables and figures)
 from conrod import Case, Simulation
 from conrod.io.atomic import write_csv, write_json, write_text
 from conrod.loads.engine_loads import compute_engine_loads

@@ -51,7 +51,6 @@ def register(app: typer.Typer) -> None:
 
 
 def _write(loads, out: Path) -> None:
-    import conrod.plotting  # noqa: F401  (registers the figures)
     from conrod.output.registry import write_results
 
     write_results(loads, out)

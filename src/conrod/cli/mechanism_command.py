@@ -101,7 +101,6 @@ def _advance(bar) -> None:
 
 
 def _write(results, out: Path) -> None:
-    import conrod.plotting  # noqa: F401  (registers the figures)
     from conrod.output.registry import write_results
 
     write_results(results, out)

@@ -130,7 +130,6 @@ def register(app: typer.Typer) -> None:
             "and compare (cycle_rigid.csv, summary.json comparison).")] = True,
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
-        import conrod.plotting  # noqa: F401  (registers the figures)
         from conrod.cases.case import Case
         from conrod.io.result_folder import check_output_folder
         from conrod.output.registry import write_results
@@ -150,34 +149,12 @@ def register(app: typer.Typer) -> None:
         finally:
             progress.close()
         if step_check and simulation.solver.integrator == "rk2":
-            results = _with_step_study(results, simulation, case, film, integrator,
-                                       max_cycles, n_theta, n_z)
+            from conrod.simulation.step_check import with_step_check
+
+            results = with_step_check(results, simulation)
         write_results(results, out, figures=figures)
         print_headline(results, out)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
-
-
-def _with_step_study(results, simulation, case, film, integrator, max_cycles, n_theta, n_z):
-    """``results`` with a warning when the rk2 orbit at half the step differs (h_min)."""
-    import dataclasses
-
-    from conrod.errors import CaseError, ConvergenceError
-    from conrod.results.summary import step_study_warnings
-    from conrod.simulation.simulation import Simulation
-
-    step = simulation.solver.step_deg  # None: rk2's automatic step, checked against implicit
-    finer = ({"step_deg": step / 2.0, "integrator": integrator and integrator.value}
-             if step is not None else {"integrator": "implicit"})
-    try:
-        fine = Simulation(case, film=film and film.value, max_cycles=max_cycles,
-                          n_theta=n_theta, n_z=n_z, **finer).run()
-    except (CaseError, ConvergenceError):  # no reference for this film: nothing to compare
-        return results
-    extra = tuple(step_study_warnings(results.summary, fine.summary, step))
-    if not extra:
-        return results
-    summary = dataclasses.replace(results.summary, warnings=results.summary.warnings + extra)
-    return dataclasses.replace(results, summary=summary)
 
 
 def print_headline(results: Any, out: Path) -> None:

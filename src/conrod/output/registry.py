@@ -80,7 +80,7 @@ def tables(results: Any) -> tuple[TableSpec, ...]:
 def figures(results: Any) -> tuple[FigureSpec, ...]:
     """Figures of ``results`` (registered per result type in :mod:`conrod.plotting`)."""
     raise LookupError(f"no figures registered for {type(results).__name__} "
-                      "(import conrod.plotting to register them)")
+                      "(import conrod.output to register them)")
 
 
 @singledispatch

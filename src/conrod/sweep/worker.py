@@ -22,8 +22,6 @@ def write_variant_results(results, out_dir: Path, *, figures: bool) -> None:
     """Write one variant's files with the one writer every command uses (and its manifest)."""
     from conrod.output.registry import write_results
 
-    if figures:
-        import conrod.plotting  # noqa: F401  (registers the figures)
     write_results(results, out_dir, figures=figures)
 
 
