@@ -70,7 +70,9 @@ ANGLES = np.arange(0.0, 360.0, 30.0)
 @pytest.mark.parametrize(("angles", "matrix", "message"), [
     (ANGLES, _spd(12)[:, :11], r"shape \(12, 11\).*square"),
     (ANGLES, _spd(12) + np.triu(np.full((12, 12), 1e-10), 1), r"not symmetric.*allowed: <= 1e-06"),
-    (ANGLES, -_spd(12), r"not positive definite.*allowed: > 0"),
+    (ANGLES, -_spd(12), r"no positive eigenvalue"),
+    (ANGLES, _spd(12) - 2e-6 * np.outer(np.cos(np.radians(ANGLES)), np.cos(np.radians(ANGLES))),
+     r"not positive semi-definite.*allowed: >= -1e-09 × the largest"),
     (ANGLES, np.where(np.eye(12) > 0, np.nan, _spd(12)), r"NaN"),
     (ANGLES[::-1].copy(), _spd(12), r"not strictly increasing"),
     (ANGLES + 30.0, _spd(12), r"allowed: >= 0 and < 360 deg"),
@@ -107,3 +109,35 @@ def test_missing_arrays_and_missing_file(tmp_path):
     with pytest.raises(CaseError, match=r"cannot be read"):
         Housing.from_case(kamaz_case({"model": "compliance",
                                       "compliance_file": str(tmp_path / "absent.npz")}))
+
+
+def _ring_kernel(angles_deg: np.ndarray, radius: float = 0.06, bending: float = 50.0,
+                 axial: float = 5.0e7) -> np.ndarray:
+    """Radial compliance [m/N] of a free thin ring at its nodes from its Fourier modes
+    (inextensional bending w_n = q_n R⁴/(EI (n² − 1)²) for n ≥ 2, stretching w_0 = q_0 R²/EA;
+    Timoshenko, Strength of Materials), without the translation terms n = 1: positive
+    semi-definite, its eigenvalues of cos θ and sin θ zero to round-off."""
+    theta = np.radians(angles_deg)
+    share = 2.0 * np.pi / len(theta)  # a nodal force spread over its arc: q = f / (R Δθ)
+    difference = theta[:, None] - theta[None, :]
+    kernel = np.full_like(difference, radius / (axial * 2.0 * np.pi))
+    for n in range(2, len(theta) // 2 + 1):  # every mode the nodes resolve
+        kernel += radius**3 / (bending * (n * n - 1) ** 2 * np.pi) * np.cos(n * difference)
+    return kernel * 1.0
+
+
+def test_a_positive_semidefinite_compliance_is_accepted(tmp_path):
+    """A ring kernel without its translation terms has two zero eigenvalues (round-off of
+    either sign, about 1e-21 m/N against 6e-6 m/N; the old check refused it) and is accepted; it has no translation
+    to correct, so the rigid-body correction leaves it unchanged."""
+    angles = np.arange(0.0, 360.0, 5.0)
+    kernel = _ring_kernel(angles)
+    eigenvalues = np.linalg.eigvalsh(kernel)
+    assert abs(eigenvalues[:2]).max() < 1e-12 * eigenvalues.max()  # semi-definite indeed
+    path = tmp_path / "ring.npz"
+    np.savez(path, angle_deg=angles, compliance_m_per_N=kernel)
+    housing = Housing.from_case(kamaz_case({"model": "compliance", "compliance_file": str(path)},
+                                           n_theta=72))
+    np.testing.assert_allclose(housing.compliance, kernel, rtol=1e-12, atol=0.0)
+    np.testing.assert_allclose(housing.corrected_compliance, kernel, rtol=0.0,
+                               atol=1e-10 * kernel.max())

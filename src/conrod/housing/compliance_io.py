@@ -27,6 +27,11 @@ from conrod.io.atomic import write_npz
 
 SYMMETRY_TOLERANCE = 1.0e-6
 """Largest max|C − Cᵀ| / max|C| accepted [-]."""
+SEMIDEFINITE_TOLERANCE = 1.0e-9
+"""Most negative eigenvalue accepted, relative to the largest [-]: a compliance with its
+rigid-body modes removed (a free-free FE condensation with the rigid-body correction
+applied, a ring's Fourier kernel without its translation terms) is positive semi-definite,
+its zero eigenvalues round-off of either sign."""
 
 
 def _error(field: str, path: Path, message: str) -> CaseError:
@@ -93,7 +98,9 @@ def check_angles(field: str, path: Path, angle_deg: np.ndarray) -> None:
 
 
 def check_compliance(path: Path, angle_deg: np.ndarray, matrix: np.ndarray) -> None:
-    """Square n × n, finite, symmetric within 1e-6 and positive definite; else CaseError."""
+    """Square n × n, finite, symmetric within :data:`SYMMETRY_TOLERANCE` and positive
+    semi-definite relative to its largest eigenvalue (:data:`SEMIDEFINITE_TOLERANCE`), with
+    at least one positive eigenvalue; else CaseError."""
     field = "compliance_file"
     check_angles(field, path, angle_deg)
     n = len(angle_deg)
@@ -107,10 +114,15 @@ def check_compliance(path: Path, angle_deg: np.ndarray, matrix: np.ndarray) -> N
     if asymmetry > SYMMETRY_TOLERANCE:
         raise _error(field, path, f"compliance_m_per_N is not symmetric: max|C - C^T|/max|C| "
                      f"= {asymmetry:.3g} (allowed: <= {SYMMETRY_TOLERANCE:g})")
-    smallest = float(np.linalg.eigvalsh(0.5 * (matrix + matrix.T)).min())
-    if smallest <= 0.0:
-        raise _error(field, path, f"compliance_m_per_N is not positive definite: smallest "
-                     f"eigenvalue {smallest:.3g} m/N (allowed: > 0)")
+    eigenvalues = np.linalg.eigvalsh(0.5 * (matrix + matrix.T))
+    smallest, largest = float(eigenvalues.min()), float(eigenvalues.max())
+    if largest <= 0.0:
+        raise _error(field, path, f"compliance_m_per_N has no positive eigenvalue (largest "
+                     f"{largest:.3g} m/N; allowed: a positive semi-definite matrix)")
+    if smallest < -SEMIDEFINITE_TOLERANCE * largest:
+        raise _error(field, path, f"compliance_m_per_N is not positive semi-definite: "
+                     f"smallest eigenvalue {smallest:.3g} m/N = {smallest / largest:.3g} × the "
+                     f"largest (allowed: >= {-SEMIDEFINITE_TOLERANCE:g} × the largest)")
 
 
 def read_compliance(path: Path) -> tuple[np.ndarray, np.ndarray]:
