@@ -93,12 +93,39 @@ def read_housing_mesh(path: Path, thickness: float, clamp_group: str = "clamp") 
     if clamp_name not in groups:
         raise _error(path, f"lacks a clamp group {clamp_group!r} or 'small_end_bore'")
     bore = Circle(0.0, 0.0, bore.radius)
+    _check_bore_elements(path, points, triangles, groups[BORE_GROUP], bore.radius)
     quadratic, _ = quadratic_mesh(points, triangles, {BORE_GROUP: bore})
     boundaries = {name: _facets_of(quadratic, lines) for name, lines in groups.items()}
     boundaries["clamp"] = boundaries[clamp_name]
     n_elements = quadratic.t.shape[1]
     return FeMesh(quadratic, boundaries, np.full(n_elements, thickness),
                   np.zeros(n_elements, dtype=int), ("all",), bore.radius)
+
+
+def _check_bore_elements(path: Path, points: np.ndarray, triangles: np.ndarray,
+                         lines: np.ndarray, radius: float) -> None:
+    """The bore edges become arcs (their mid-nodes move onto the circle by the sagitta
+    R(1 − cos(Δα/2))): an element thinner than twice that would fold over; CaseError."""
+    edge_to_height = {}
+    for triangle in triangles:
+        corners = points[triangle]
+        first, second = corners[1] - corners[0], corners[2] - corners[0]
+        area = 0.5 * abs(first[0] * second[1] - first[1] * second[0])
+        for a, b in ((0, 1), (1, 2), (2, 0)):
+            length = float(np.hypot(*(corners[b] - corners[a])))
+            edge_to_height[frozenset((triangle[a], triangle[b]))] = 2.0 * area / length
+    worst = 0.0
+    for a, b in lines:
+        height = edge_to_height.get(frozenset((a, b)))
+        chord = float(np.hypot(*(points[b] - points[a])))
+        span = 2.0 * np.arcsin(min(0.5 * chord / radius, 1.0))
+        sagitta = radius * (1.0 - np.cos(0.5 * span))
+        if height is not None and height > 0.0:
+            worst = max(worst, sagitta / height)
+    if worst > 0.5:
+        raise _error(path, f"the elements along {BORE_GROUP!r} are too thin for their curved "
+                     f"edges: an edge's bulge onto the circle is {worst:.2g} of its element's "
+                     "height (allowed: <= 0.5; refine the mesh along the bore)")
 
 
 def _facets_of(mesh, lines: np.ndarray) -> np.ndarray:

@@ -20,6 +20,10 @@ from conrod.housing.inertia import base_accelerations
 from conrod.housing.mesher import Circle, FeMesh, distance_mesh, quadratic_mesh
 from conrod.housing.transfer import bore_load_operator, interpolation_matrix
 
+NON_ALIGNED_ORDER = 32
+"""Gauss order on the bore facets when the film nodes are not bore nodes: a uniform
+pressure on a 144 × 12 P2 ring is then within 0.04 % of Lamé at every one of 60 film nodes
+(0.14 % with order 8) [-]."""
 _SIZE_GROWTH = 0.3
 """Growth of the target edge length with the distance from the bore [-]."""
 
@@ -41,9 +45,18 @@ class StructuralHousing:
 
     def __post_init__(self) -> None:
         self.bore_angles, self.bore_radius = self.model.bore_vertex_angles()
-        self.load_operator = bore_load_operator(self.model.bore_basis(), self.bore_angles,
-                                                self.bore_radius)
         self.interpolation = interpolation_matrix(self.bore_angles, self.film_angles)
+        hats, order = self.bore_angles, 8  # bore nodes at the film nodes: their own hats
+        if self.interpolation.shape[0] != self.interpolation.shape[1] or not np.array_equal(
+                self.interpolation, np.eye(len(self.film_angles))):
+            # other bore nodes: the load and the displacement on the film nodes' own hats,
+            # integrated on the bore facets (consistent with any bore mesh; sharing film
+            # forces onto bore nodes would load every other node of a twice finer bore),
+            # their kinks inside facets integrated by a finer rule
+            hats, order = self.film_angles, NON_ALIGNED_ORDER
+            self.interpolation = np.eye(len(self.film_angles))
+        self.load_operator = bore_load_operator(self.model.bore_basis(intorder=order), hats,
+                                                self.bore_radius)
 
     def film_load(self, forces: np.ndarray) -> np.ndarray:
         """FE load vector(s) [N] of film nodal forces (n,) or (n, k) [N]."""
