@@ -115,21 +115,22 @@ def _ring_kernel(angles_deg: np.ndarray, radius: float = 0.06, bending: float = 
                  axial: float = 5.0e7) -> np.ndarray:
     """Radial compliance [m/N] of a free thin ring at its nodes from its Fourier modes
     (inextensional bending w_n = q_n R⁴/(EI (n² − 1)²) for n ≥ 2, stretching w_0 = q_0 R²/EA;
-    Timoshenko, Strength of Materials), without the translation terms n = 1: positive
+    Timoshenko, Strength of Materials; nodal forces f_j give q_n = Σ f_j cos nθ_j/(πR)),
+    without the translation terms n = 1: positive
     semi-definite, its eigenvalues of cos θ and sin θ zero to round-off."""
     theta = np.radians(angles_deg)
-    share = 2.0 * np.pi / len(theta)  # a nodal force spread over its arc: q = f / (R Δθ)
     difference = theta[:, None] - theta[None, :]
     kernel = np.full_like(difference, radius / (axial * 2.0 * np.pi))
     for n in range(2, len(theta) // 2 + 1):  # every mode the nodes resolve
         kernel += radius**3 / (bending * (n * n - 1) ** 2 * np.pi) * np.cos(n * difference)
-    return kernel * 1.0
+    return kernel
 
 
 def test_a_positive_semidefinite_compliance_is_accepted(tmp_path):
     """A ring kernel without its translation terms has two zero eigenvalues (round-off of
-    either sign, about 1e-21 m/N against 6e-6 m/N; the old check refused it) and is accepted; it has no translation
-    to correct, so the rigid-body correction leaves it unchanged."""
+    either sign, about 1e-22 m/N against 6e-6 m/N; the old check refused it) and is
+    accepted; it has no translation to correct, so the rigid-body correction leaves it
+    unchanged."""
     angles = np.arange(0.0, 360.0, 5.0)
     kernel = _ring_kernel(angles)
     eigenvalues = np.linalg.eigvalsh(kernel)
