@@ -18,7 +18,8 @@ Orbit (``conrod run``):
   stops the journal) by more than that share;
 * minimum film thickness below the combined roughness σ while hard contact is not active
   (the asperities would touch: mixed lubrication not modelled) → warning;
-* heat-balance temperature above ``lubricant.max_temperature`` → warning;
+* heat-balance temperature above ``lubricant.max_temperature`` → warning, above
+  :data:`TEMPERATURE_LIMIT` → error (no oil film exists there);
 * peak film pressure above :data:`FILM_PRESSURE_LIMIT` → warning (a rigid bore under a
   load its film cannot carry: the lining would yield, the real bore deforms).
 
@@ -59,6 +60,13 @@ hardness of every connecting-rod lining alloy of ISO 4383:2012 (Annex A: AlSn20C
 it would flatten the lining and bend the big end, which a rigid bore ignores; it is also
 the default ``pressure_viscosity_limit``, beyond which the pressure–viscosity law is not
 used. Rigid-bore peaks of several hundred MPa are usual for big ends."""
+TEMPERATURE_LIMIT = 1000.0
+"""Heat-balance temperature above which a run is not physical [°C]: far above the
+autoignition temperature of mineral and synthetic engine oils (about 300–400 °C) and the
+melting range of the big-end lining alloys of ISO 4383 (tin- and lead-based overlays and
+AlSn linings melt at 230–630 °C); a heat balance reaching it (a load so light that the
+journal stays centred and no oil leaks, a roughness of the order of the clearance, a
+bearing metres wide) describes no lubricated bearing."""
 MECHANISM_FORCE_LIMIT = 1.0e6
 """Joint contact force above which a mechanism run is flagged [N]."""
 MECHANISM_FORCE_FACTOR = 10.0
@@ -105,6 +113,13 @@ def check_run(results: Any, case: Any, contact_radius: float | None = None) -> l
     warnings += _film_pressure_warnings(cycle)
     temperature = results.summary.effective_temperature
     limit = case.lubricant.max_temperature if case.lubricant is not None else math.inf
+    if temperature is not None and not temperature <= TEMPERATURE_LIMIT:
+        raise ConvergenceError(
+            f"implausible result: heat-balance temperature {temperature:.3g} °C (physical: "
+            f"<= {TEMPERATURE_LIMIT:g} °C, and <= lubricant.max_temperature = {limit:g} °C "
+            "for the oil data); the friction power cannot be carried away by the side flow "
+            "of this bearing — check the load, the clearance, the width and the roughness",
+            where="the heat balance of the cycle")
     if temperature is not None and temperature > limit:
         warnings.append(f"heat-balance temperature {temperature:.1f} °C is above the oil's "
                         f"valid range (lubricant.max_temperature = {limit:g} °C)")
