@@ -64,7 +64,7 @@ from conrod.ehd.coupling import (
     fixed_point_coupling,
     solve_coupling,
 )
-from conrod.ehd.memory import ElasticMemory, ElasticSettings
+from conrod.ehd.memory import ElasticMemory, ElasticSettings, extrapolated_deformation
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.capabilities import (
@@ -230,7 +230,7 @@ class ElasticFilm(FilmWrapper):
         operator = (share * self.housing.corrected_compliance if elastic
                     else self._zero_operator)
         inertia = share * self.inertia_deformation(memory.crank_angle)
-        start = (_extrapolated(before, memory) if elastic
+        start = (extrapolated_deformation(before, memory) if elastic
                  else np.zeros(len(self.housing.angles)))
         c = self.clearance
         scale = c * max(self.crank_speed, 1e-3)
@@ -438,13 +438,3 @@ def _film_closing(payload, carries_asperity: bool) -> str:
               "([contact] model = 'greenwood_tripp') so that asperity contact carries the load")
     return f"; h_min {h_min:.3g} m on the deformed film{advice}"
 
-
-def _extrapolated(before: ElasticMemory, after: ElasticMemory) -> np.ndarray:
-    """Start of the coupling at a new crank angle: the last deformation moved on at its
-    last rate, u + (u − u_prev) Δt_new/Δt_prev [m] (the squeeze term holds the rate, so a
-    start at the old deformation would begin with no bore rate at all)."""
-    moved = after.reference is before.deformation and after is not before
-    if not moved or before.reference is None or before.reference_dt <= 0.0:
-        return after.deformation
-    ratio = after.reference_dt / before.reference_dt
-    return before.deformation + ratio * (before.deformation - before.reference)

@@ -109,3 +109,14 @@ def content_bdf2(memory: ElasticMemory, previous: ElasticMemory | None) -> bool:
     """True when the film's content step is BDF2 (both contents carry their thickness)."""
     return (previous is not None and memory.inner.thickness is not None
             and previous.inner.thickness is not None)
+
+
+def extrapolated_deformation(before: ElasticMemory, after: ElasticMemory) -> np.ndarray:
+    """Start of the coupling at a new crank angle: the last deformation moved on at its
+    last rate, u + (u − u_prev) Δt_new/Δt_prev [m] (the squeeze term holds the rate, so a
+    start at the old deformation would begin with no bore rate at all)."""
+    moved = after.reference is before.deformation and after is not before
+    if not moved or before.reference is None or before.reference_dt <= 0.0:
+        return after.deformation
+    ratio = after.reference_dt / before.reference_dt
+    return before.deformation + ratio * (before.deformation - before.reference)
