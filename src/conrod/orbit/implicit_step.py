@@ -79,10 +79,12 @@ class StepPoint:
 
     @property
     def x(self) -> float:
+        """Position along film x [m]."""
         return self.position[0]
 
     @property
     def y(self) -> float:
+        """Position along film y [m]."""
         return self.position[1]
 
     def restart(self) -> StepPoint:
