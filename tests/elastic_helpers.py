@@ -61,50 +61,51 @@ def winkler_housing(geometry, n_theta: int, bedding: float):
                    correction="none")
 
 
-def captured_mass_step(film, request, memory):
-    """One implicit step of the journal with mass (:func:`conrod.ehd.mass_step.
-    mass_step` from ``memory``, BDF2 with ``memory`` as the previous one too) and the
-    residual parts its Newton iteration was given: (outcome, captured dict)."""
-    import conrod.ehd.mass_step as module
+def step_request(problem, memory, *, position_reference, velocity_reference, tau: float,
+                 dt: float, load, crank_angle: float, speeds, bdf2: bool = True):
+    """A :class:`~conrod.film.step_system.StepRequest` of ``problem`` from ``memory`` (BDF2
+    with ``memory`` as the previous one too)."""
+    from conrod.film.step_system import StepRequest
 
-    captured = {}
-    original = module.newton_balance
-
-    def capture(evaluate, respond, u0, v0, load, inertia, operator, clearance, v_scale,
-                *args, **kwargs):
-        captured.update(evaluate=evaluate, respond=respond, load=load, inertia=inertia,
-                        operator=operator, clearance=clearance, v_scale=v_scale)
-        return original(evaluate, respond, u0, v0, load, inertia, operator, clearance,
-                        v_scale, *args, **kwargs)
-
-    module.newton_balance = capture
-    try:
-        outcome = module.mass_step(film, request, memory, memory)
-    finally:
-        module.newton_balance = original
-    return outcome, captured
+    return StepRequest(np.asarray(position_reference, dtype=float),
+                       np.asarray(velocity_reference, dtype=float), tau, dt,
+                       np.array([problem.mass_x, problem.mass_y]),
+                       np.asarray(load, dtype=float), float(speeds[0]), float(speeds[1]),
+                       problem.viscosity, crank_angle, bdf2,
+                       (memory, memory) if bdf2 else (memory,))
 
 
-def step_jacobian_and_residual(outcome, captured):
-    """At the converged step: the exact Jacobian of the scaled residual (G/c, (F + W −
-    m a)/|W|) from the film response, the residual function of z = (u/c, v/v_s), z there
-    and the film payload: (jacobian, residual, z0, payload)."""
-    from conrod.ehd.newton import _inverse
+def solved_step(film, request, guess, velocity_scale: float):
+    """One implicit step of the journal with ``film``'s own unknowns
+    (:func:`conrod.orbit.journal_step.solve_journal_step`)."""
+    from conrod.orbit.journal_step import solve_journal_step
 
-    c, v_scale = captured["clearance"], captured["v_scale"]
-    n = len(outcome.memory.deformation)
-    w_scale = float(np.hypot(*captured["load"])) + 1.0
+    return solve_journal_step(film, request, np.asarray(guess, dtype=float), velocity_scale)
+
+
+def step_jacobian_and_residual(film, request, own, velocity, velocity_scale: float):
+    """At (y, v) = (``own``, ``velocity``) of the step ``request``: the Jacobian of the
+    scaled residual (G/s_y, (F + W − m a)/(|W| + 1 N)) that the Newton iteration inverts
+    (from the step system's exact blocks), the residual function of z = (y/s_y, v/s_v)
+    (each evaluation by a fresh step system, so that every film solve starts from the
+    request's memory), z there and the payload: (jacobian, residual, z0, payload)."""
+    from conrod.numerics.newton import length, scaled_jacobian
+    from conrod.orbit.journal_step import JournalStep
+
+    load = np.asarray(request.load, dtype=float)
+    w_scale = length(load) + 1.0
+    scale, n, k = film.step_system(request).scale, len(own), len(velocity)
 
     def residual(z):
-        u, v = c * z[:n], v_scale * z[n:]
-        forces, force, _, _ = captured["evaluate"](u, v)
-        g = (u - captured["operator"] @ forces - captured["inertia"]) / c
-        return np.concatenate([g, (force + captured["load"]) / w_scale])
+        system = JournalStep(film.step_system(request), request)
+        g, force, _, _ = system.evaluate(scale * z[:n], velocity_scale * z[n:])
+        return np.concatenate([g / scale, (force + load) / w_scale])
 
-    payload = captured["evaluate"](outcome.memory.deformation, outcome.velocity)[3]
-    jac = np.linalg.inv(_inverse(captured["respond"](payload), captured["operator"], n, c,
-                                 v_scale, w_scale, True))
-    z0 = np.concatenate([outcome.memory.deformation / c, outcome.velocity / v_scale])
+    system = JournalStep(film.step_system(request), request)
+    payload = system.evaluate(np.asarray(own, dtype=float),
+                              np.asarray(velocity, dtype=float))[3]
+    jac = scaled_jacobian(system.respond(payload), scale, velocity_scale, w_scale, k)
+    z0 = np.concatenate([np.asarray(own) / scale, np.asarray(velocity) / velocity_scale])
     return jac, residual, z0, payload
 
 

@@ -72,7 +72,7 @@ def test_deforming_bore_conserves_oil_like_the_rigid_film(rigid):
 
 def test_jfo_and_reynolds_agree_on_the_same_deforming_bore(rigid):
     """Two different films on the same Winkler bore (the Reynolds one massless with the
-    bore's rate in its squeeze term, :mod:`conrod.ehd.rate`): h_min within 5 % as on
+    bore's rate in its squeeze term, :mod:`conrod.film.rated_state`): h_min within 5 % as on
     the rigid bore, and both lower p_max below their rigid value. Measured (24 × 4, 2°):
     JFO 4.06 µm / 8.25 MPa, Reynolds 4.11 µm / 7.59 MPa; rigid 3.85 / 10.67 and
     4.02 / 9.96."""

@@ -1,7 +1,7 @@
-"""Joint Newton step of the journal and the deforming bore for the mass-conserving film
-(:mod:`conrod.ehd.mass_conserving_joint`): its exact Jacobian against central
-differences of the step, and the orbit it gives against the content orbit's own
-iteration around separate bore couplings."""
+"""The step system of the mass-conserving film on the deforming bore
+(:func:`conrod.ehd.bore_system.content_step_system`): its exact Jacobian against central
+differences of the step, and the orbit it gives against the orbit's own iteration around
+separate bore couplings."""
 
 from __future__ import annotations
 
@@ -11,11 +11,12 @@ import math
 import numpy as np
 import pytest
 
-import conrod.orbit.content_orbit as content_orbit
+import conrod.orbit.content_steps as content_steps
 from conrod.ehd.film import ElasticMemory
-from conrod.ehd.mass_conserving_joint import _evaluator, _responder
 from conrod.film.base import FilmState
-from conrod.film.capabilities import HasJointContentStep
+from conrod.film.capabilities import HasStepSystem
+from conrod.film.step_system import StepRequest
+from elastic_helpers import step_jacobian_and_residual
 from test_ehd_jfo_content import BEDDING, N_THETA, _film
 from test_ehd_jfo_response import STEP, _ruptured_memory
 from test_orbit_jfo import OMEGA, orbit
@@ -23,10 +24,11 @@ from test_orbit_jfo import OMEGA, orbit
 MASS = np.array([0.8, 1.1])  # [kg] moving mass, so that the inertia column is checked too
 
 
-def test_joint_jacobian_matches_central_differences():
-    """∂(f, F − m a)/∂(u, v) of one content step on a film with full and broken-film cells:
-    every block within 1e-5 of its largest central difference (1e-11 m of film thickness,
-    a velocity step that moves the end position by as much)."""
+def test_step_system_jacobian_matches_central_differences():
+    """∂(G, F − m a)/∂(u, v) of one content step on a film with full and broken-film cells
+    (backward Euler, the journal moving with mass): every block within 1e-5 of its largest
+    central difference (1e-11 m of film thickness, a velocity step that moves the end
+    position by as much)."""
     film = _film(BEDDING)
     base = film.base
     c = base.geometry.radial_clearance
@@ -38,44 +40,28 @@ def test_joint_jacobian_matches_central_differences():
     theta, _ = base.grid()
     memory = ElasticMemory(inner=inner, deformation=np.zeros(N_THETA), crank_angle=0.0,
                            elapsed=10.0)
-    tau = STEP
     v0 = np.array([state.velocity_x, state.velocity_y])
-    reference = np.array([state.eccentricity_x, state.eccentricity_y]) - tau * v0
-    speeds = (state.journal_speed, state.shell_speed)
-
-    def step(u, v):  # a fresh evaluator: every solve starts from the same memory
-        evaluate = _evaluator(film, memory, None, STEP, reference, 0.3 * v0, tau, MASS,
-                              speeds, state.viscosity)
-        return evaluate(u, v)
-
+    reference = np.array([state.eccentricity_x, state.eccentricity_y]) - STEP * v0
+    request = StepRequest(reference, 0.3 * v0, STEP, STEP, MASS, np.zeros(2), OMEGA, 0.0,
+                          state.viscosity, 0.0, False, (memory,))
     u = 0.05 * c * np.cos(2.0 * theta)
-    _, _, _, payload = step(u, v0)
-    assert 0.05 < float(np.mean(payload.step[2].fraction < 1.0 - 1e-9)) < 0.95
-    exact = _responder(film, tau, MASS, STEP)(payload)
-    h = 1e-11
-    by_bore = np.empty((N_THETA + 2, N_THETA))
-    for r in range(N_THETA):
-        shift = np.zeros(N_THETA)
-        shift[r] = h
-        plus, minus = step(u + shift, v0), step(u - shift, v0)
-        by_bore[:N_THETA, r] = (plus[0] - minus[0]) / (2.0 * h)
-        by_bore[N_THETA:, r] = (plus[1] - minus[1]) / (2.0 * h)
-    by_velocity = np.empty((N_THETA + 2, 2))
-    dv = h / tau
-    for i in range(2):
-        shift = np.zeros(2)
-        shift[i] = dv
-        plus, minus = step(u, v0 + shift), step(u, v0 - shift)
-        by_velocity[:N_THETA, i] = (plus[0] - minus[0]) / (2.0 * dv)
-        by_velocity[N_THETA:, i] = (plus[1] - minus[1]) / (2.0 * dv)
-    blocks = [(exact.nodal_by_bore, by_bore[:N_THETA]),
-              (exact.force_by_bore, by_bore[N_THETA:]),
-              (exact.nodal_by_velocity, by_velocity[:N_THETA]),
-              (exact.force_by_velocity, by_velocity[N_THETA:])]
+    scale = c * OMEGA
+    jac, residual, z0, payload = step_jacobian_and_residual(film, request, u, v0, scale)
+    assert 0.05 < float(np.mean(payload[1].fraction < 1.0 - 1e-9)) < 0.95
+    h = 1e-11 / c  # of the scaled unknowns: 1e-11 m of bore, τ δv moving the journal as far
+    numeric = np.empty_like(jac)
+    for column in range(len(z0)):
+        delta = np.zeros(len(z0))
+        delta[column] = h if column < N_THETA else h * c / (STEP * scale)
+        plus, minus = residual(z0 + delta), residual(z0 - delta)
+        numeric[:, column] = (plus - minus) / (2.0 * delta[column])
+    n = N_THETA
+    blocks = [(jac[:n, :n], numeric[:n, :n]), (jac[n:, :n], numeric[n:, :n]),
+              (jac[:n, n:], numeric[:n, n:]), (jac[n:, n:], numeric[n:, n:])]
     for analytic, differences in blocks:
-        scale = float(np.max(np.abs(differences)))
-        assert scale > 0.0 and math.isfinite(scale)
-        assert float(np.max(np.abs(analytic - differences))) < 1e-5 * scale
+        scale_of = float(np.max(np.abs(differences)))
+        assert scale_of > 0.0 and math.isfinite(scale_of)
+        assert float(np.max(np.abs(analytic - differences))) < 1e-5 * scale_of
 
 
 class _NoJointStep:
@@ -83,14 +69,14 @@ class _NoJointStep:
 
 
 def test_joint_orbit_equals_the_orbit_of_separate_couplings(monkeypatch):
-    """The periodic JFO orbit on a Winkler bore by joint Newton steps and by the orbit's
+    """The periodic JFO orbit on a Winkler bore by the step system and by the orbit's
     own velocity iteration around full bore couplings: the same h_min and p_max at every
     output angle (both converge each step to 1e-8 of the load), with under half the film
     steps. Measured (24 × 4, 2°): 4739 vs 19 935 film steps, h_min equal to 1e-9."""
     joint_film = _film(BEDDING)
-    assert isinstance(joint_film, HasJointContentStep)
+    assert isinstance(joint_film, HasStepSystem)
     joint, joint_cycle, _ = orbit(joint_film)
-    monkeypatch.setattr(content_orbit, "HasJointContentStep", _NoJointStep)
+    monkeypatch.setattr(content_steps, "HasStepSystem", _NoJointStep)
     separate_film = _film(BEDDING)
     separate, separate_cycle, _ = orbit(separate_film)
     assert joint.periodic and separate.periodic
@@ -103,8 +89,8 @@ def test_joint_orbit_equals_the_orbit_of_separate_couplings(monkeypatch):
 
 
 def test_joint_step_is_not_offered_by_plain_films():
-    """Only the elastic mass-conserving film offers the joint step; the rigid JFO film
+    """Only the elastic mass-conserving film offers the step system; the rigid JFO film
     keeps the orbit's own iteration."""
     film = _film(BEDDING)
-    assert not isinstance(film.base, HasJointContentStep)
+    assert not isinstance(film.base, HasStepSystem)
     assert dataclasses.is_dataclass(film.base)

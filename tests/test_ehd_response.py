@@ -7,10 +7,11 @@ import dataclasses
 
 import numpy as np
 
-from conrod.ehd.rate import rated, with_deformation_rate
-from conrod.ehd.response import film_response, nodal_force_weights
+from conrod.ehd.bore_system import nodal_force_weights
 from conrod.film.base import BearingGeometry, FilmState
+from conrod.film.rated_state import rated
 from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds_memory import ReynoldsMemory
 from conrod.housing.transfer import nodal_forces
 
 RADIUS, CLEARANCE, STEP = 0.04, 5.0e-5, 1.0e-4  # [m], [m], rate time step [s]
@@ -18,7 +19,7 @@ RADIUS, CLEARANCE, STEP = 0.04, 5.0e-5, 1.0e-4  # [m], [m], rate time step [s]
 
 def _setup():
     geometry = BearingGeometry(diameter=2 * RADIUS, width=0.03, radial_clearance=CLEARANCE)
-    film = with_deformation_rate(ReynoldsFilm(geometry, n_theta=36, n_z=8))
+    film = ReynoldsFilm(geometry, n_theta=36, n_z=8).with_deformation_rate()
     theta, z = film.grid()
     rng = np.random.default_rng(1)
     bore = 3e-6 * np.cos(2 * theta) + 1e-6 * rng.standard_normal(len(theta))
@@ -44,7 +45,7 @@ def test_response_matches_central_differences():
     deformed, pressure, forces, _ = evaluate(bore, velocity)
     weights = nodal_force_weights(film, theta, RADIUS)
     assert np.allclose(np.sum(weights * pressure, axis=1), forces, rtol=1e-13, atol=0.0)
-    response = film_response(film, deformed, pressure, weights, STEP)
+    response = film.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
     nodal = np.empty((len(theta), len(theta)))
     force = np.empty((2, len(theta)))
     for j in range(len(theta)):

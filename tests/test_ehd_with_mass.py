@@ -7,17 +7,17 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conrod.ehd.mass_step import MassStepRequest
 from conrod.housing.housing import Housing
-from conrod.orbit.coupled_orbit import coupled_cycle
+from conrod.orbit.implicit_step import implicit_step_cycle
 from conrod.orbit.problem import OrbitState
 from conrod.results.ehd import ElasticRunResults
 from conrod.simulation.simulation import Simulation
 from elastic_helpers import (
     assert_jacobian_columns,
-    captured_mass_step,
     kamaz_case,
+    solved_step,
     step_jacobian_and_residual,
+    step_request,
 )
 
 LIMIT_STEP_DEG = 0.5
@@ -83,17 +83,16 @@ def test_step_jacobian_matches_central_differences():
     memory = film._static_memory()
     c = problem.clearance
     dt = np.radians(1.0) / problem.crank_speed
-    request = MassStepRequest(
-        position_reference=np.array([0.55 * c, -0.3 * c]),
+    speeds = problem.loads.speeds(np.array([0.3]))
+    request = step_request(
+        problem, memory, position_reference=np.array([0.55 * c, -0.3 * c]),
         velocity_reference=np.array([0.01, -0.02]), tau=2.0 * dt / 3.0, dt=dt,
-        mass=np.array([problem.mass_x, problem.mass_y]), load=np.array([-9e3, 4e3]),
-        journal_speed=float(problem.loads.speeds(np.array([0.3]))[0][0]),
-        shell_speed=float(problem.loads.speeds(np.array([0.3]))[1][0]),
-        viscosity=problem.viscosity, crank_angle=0.3, guess=np.array([0.02, 0.01]),
-        bdf2=True)
-    outcome, captured = captured_mass_step(film, request, memory)
-    assert outcome.converged
-    jac, residual, z0, _ = step_jacobian_and_residual(outcome, captured)
+        load=np.array([-9e3, 4e3]), crank_angle=0.3, speeds=(speeds[0][0], speeds[1][0]))
+    scale = c * problem.crank_speed
+    done = solved_step(film, request, np.array([0.02, 0.01]), scale)
+    assert done.newton.converged
+    jac, residual, z0, _ = step_jacobian_and_residual(film, request, done.newton.own,
+                                                      done.velocity, scale)
     n = len(memory.deformation)
     assert_jacobian_columns(jac, residual, z0, (n, n + 1, 3, n // 2))
 
@@ -109,7 +108,7 @@ def test_time_step_order_is_that_of_bdf2():
     steps = [2.0, 1.0, 0.5, 0.25]
     orbits = []
     for step in steps:
-        cycle = coupled_cycle(problem, start, step, 4.0)
+        cycle = implicit_step_cycle(problem, start, step, 4.0, with_mass=True)
         orbits.append(np.stack([cycle.x, cycle.y], axis=1) / problem.clearance)
     half = len(orbits[0]) // 2
     differences = [float(np.max(np.hypot(*(a[half:] - b[half:]).T)))
@@ -138,7 +137,8 @@ def test_vanishing_mass_approaches_the_massless_elastic_orbit():
             massless = periodic_orbit(problem, settings, integrator="quasi_static")
             reference = np.stack([massless.last.x, massless.last.y], axis=1)
             start = massless.last.end_state
-        cycle = coupled_cycle(problem, start, LIMIT_STEP_DEG, 4.0)
+        cycle = implicit_step_cycle(problem, start, LIMIT_STEP_DEG, 4.0,
+                                    with_mass=True)
         orbit = np.stack([cycle.x, cycle.y], axis=1)
         distances.append(float(np.max(np.hypot(*(orbit - reference).T))) / problem.clearance)
     assert distances[1] < 0.5 * distances[0]

@@ -15,7 +15,7 @@ import pytest
 
 from conrod.film.base import BearingGeometry, FilmState, Groove
 from conrod.film.mass_conserving import MassConservingFilm, MassConservingMemory
-from conrod.orbit.content_orbit import content_cycle
+from conrod.orbit.implicit_step import implicit_step_cycle
 from conrod.orbit.problem import OrbitProblem, OrbitState
 from test_orbit_jfo import fed_bearing, rotating_load
 
@@ -74,7 +74,7 @@ def _settled_problem():
     problem = OrbitProblem(film, rotating_load(), MU, 1.0, 1.0)
     state = OrbitState()
     for _ in range(3):
-        state = content_cycle(problem, state, 1.0, 10.0, with_mass=False).end_state
+        state = implicit_step_cycle(problem, state, 1.0, 10.0, with_mass=False).end_state
     return problem, OrbitState(state.x, state.y, state.vx, state.vy, False, state.film_memory)
 
 
@@ -86,7 +86,7 @@ def test_bdf2_orbit_is_second_order_in_the_step():
     problem, start = _settled_problem()
     steps = [2.0, 1.0, 0.5]
     for with_mass in (False, True):
-        runs = {h: content_cycle(problem, start, h, 10.0, with_mass=with_mass)
+        runs = {h: implicit_step_cycle(problem, start, h, 10.0, with_mass=with_mass)
                 for h in steps + [0.125]}
         ref = runs[0.125]
         errors = [float(np.max(np.hypot(runs[h].x - ref.x, runs[h].y - ref.y)))
@@ -102,16 +102,16 @@ def test_orbit_with_vanishing_mass_is_the_massless_orbit():
     within 10⁻⁴ c at every output angle."""
     problem, start = _settled_problem()
     light = OrbitProblem(problem.film, problem.loads, MU, 1e-6, 1e-6)
-    massless = content_cycle(problem, start, 1.0, 10.0, with_mass=False)
-    with_mass = content_cycle(light, start, 1.0, 10.0, with_mass=True)
+    massless = implicit_step_cycle(problem, start, 1.0, 10.0, with_mass=False)
+    with_mass = implicit_step_cycle(light, start, 1.0, 10.0, with_mass=True)
     difference = np.max(np.hypot(massless.x - with_mass.x, massless.y - with_mass.y))
     assert difference / problem.clearance < 1e-4
 
 
 def test_same_input_same_orbit_bit_for_bit():
     problem, start = _settled_problem()
-    a = content_cycle(problem, start, 2.0, 10.0, with_mass=True)
-    b = content_cycle(problem, start, 2.0, 10.0, with_mass=True)
+    a = implicit_step_cycle(problem, start, 2.0, 10.0, with_mass=True)
+    b = implicit_step_cycle(problem, start, 2.0, 10.0, with_mass=True)
     assert np.array_equal(a.x, b.x) and np.array_equal(a.vy, b.vy)
     assert np.array_equal(a.end_state.film_memory.fraction, b.end_state.film_memory.fraction)
 

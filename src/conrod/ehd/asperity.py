@@ -8,7 +8,7 @@ h(θ, z) = h_rigid + P(C f + U c(φ)), so the contact circle is no longer rigid:
 pressure is taken node by node on that h. It acts like the film pressure:
 
 * on the bore nodes through the same transfer, a_j = Σ_k W_jk p_a(h_jk)
-  (:func:`conrod.ehd.response.nodal_force_weights`), added to the film's nodal forces
+  (:func:`conrod.ehd.bore_system.nodal_force_weights`), added to the film's nodal forces
   in the deformation G = u − λP(C (f + a) + U c(φ));
 * on the journal as A = −Σ p_a (w_x, w_y) with the film's force weights, added to the film
   force.
@@ -18,7 +18,7 @@ j, so ∂a_j/∂u_i = δ_ij Σ_k W_jk p_a'(h_jk) (diagonal) and ∂A/∂u_j = �
 (w_x, w_y)_jk, with p_a' = (K E'/σ) F_{5/2}'(h/σ) the exact slope of the tabulated F_{5/2}
 (log-linear between table points). The journal moves h as a bore displacement −cos θ_j
 (−sin θ_j) does, so the journal columns of an implicit step follow from these bore columns
-(:mod:`conrod.ehd.mass_step`); the asperity pressure does not depend on the velocity.
+(:mod:`conrod.ehd.bore_system`); the asperity pressure does not depend on the velocity.
 
 Where it is decided: an elastic film built with asperity parameters and the exact film
 response carries the asperity force itself (:meth:`ElasticFilm.carries_asperity`); the

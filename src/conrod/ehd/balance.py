@@ -21,43 +21,17 @@ exceeds 10 c ω.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
-FORCE_TOLERANCE = 1e-8
-"""Force balance accepted: |F + W| ≤ this × (|W| + 1 N), as the rigid orbit's Newton [-]."""
-
-ACCEPTABLE = 1e-4
-"""At the iteration limit an answer within this relative force residual — the massless
-orbit's own acceptance limit — and within 1000 × the bore tolerance is still returned; the
-per-angle diagnostics report both residuals [-]."""
+from conrod.numerics.newton import (
+    ACCEPTABLE,
+    FORCE_TOLERANCE,
+    NewtonOutcome,
+    update_limit,
+)
 
 Evaluate = object
 """(u [m], v [m/s] (2,)) → (nodal forces f [N], film force F [N] (2,), h_min [m], payload)."""
-
-
-@dataclass(frozen=True)
-class BalanceOutcome:
-    """Converged bore displacement and journal velocity with diagnostics.
-
-    deformation : ndarray  u [m].  velocity : ndarray  v [m/s] (2,).
-    payload : object  Film payload at the answer.  iterations : int  Film solves [-].
-    residual : float  max|G| [m].  force_residual : float  |F + W| / W_s [-].
-    increment : float  Last max|Δu| [m].  converged : bool.
-    updates : int  Newton (or quasi-Newton) updates taken; ``iterations`` also counts the
-        start value's solve and the line-search trials [-].
-    """
-
-    deformation: np.ndarray
-    velocity: np.ndarray
-    payload: object
-    iterations: int
-    residual: float
-    force_residual: float
-    increment: float
-    converged: bool
-    updates: int = 0
 
 
 class BalanceJacobian:
@@ -103,7 +77,7 @@ class BalanceJacobian:
 
 def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJacobian,
                   clearance: float, v_scale: float, tolerance: float, max_iterations: int,
-                  share: float) -> BalanceOutcome:
+                  share: float) -> NewtonOutcome:
     """(u, v) with G = 0 and F + W = 0 from (u0 [m], v0 [m/s]); ``load`` W [N] (2,),
     ``inertia`` P U c(φ) [m], ``operator`` P C [m/N], ``tolerance`` on max|G| [m].
     Quasi-Newton steps with backtracking on max|r|; the Jacobian is rebuilt (once per
@@ -135,7 +109,7 @@ def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJa
                                        film_force, operator, c, v_scale, w_scale)
             fresh, since = True, 0
         step = -jacobian.inverse @ r
-        step *= _limit(step, n, h_min / c, share)
+        step *= update_limit(step[:n], step[n:], h_min / c, share)
         norm, lam = float(np.max(np.abs(r))), 1.0
         while True:
             trial = residual(z + lam * step)
@@ -154,22 +128,11 @@ def solve_balance(evaluate, u0, v0, load, inertia, operator, jacobian: BalanceJa
         increment = float(c * np.max(np.abs(lam * step[:n]))) if n else 0.0
     bore = float(c * np.max(np.abs(r[:n]))) if n else 0.0
     force = float(np.max(np.abs(r[n:])))
-    return BalanceOutcome(c * z[:n], v_scale * z[n:], payload, solves, bore, force,
-                          increment, bore <= 1e3 * tolerance and force <= ACCEPTABLE, updates)
+    return NewtonOutcome(c * z[:n], v_scale * z[n:], payload, solves, bore, force, increment,
+                         bore <= 1e3 * tolerance and force <= ACCEPTABLE,
+                         bore <= tolerance and force <= FORCE_TOLERANCE, updates)
 
 
 def _converged(r: np.ndarray, n: int, c: float, tolerance: float) -> bool:
     bore = float(c * np.max(np.abs(r[:n]))) if n else 0.0
     return bore <= tolerance and float(np.max(np.abs(r[n:]))) <= FORCE_TOLERANCE
-
-
-def _limit(step: np.ndarray, n: int, h_min_scaled: float, share: float) -> float:
-    """Scale ≤ 1 keeping max|Δu| ≤ share h_min and |Δv| ≤ 10 c ω [-]."""
-    scale = 1.0
-    largest_u = float(np.max(np.abs(step[:n]))) if n else 0.0
-    if largest_u > share * max(h_min_scaled, 0.0) and largest_u > 0.0:
-        scale = share * max(h_min_scaled, 0.0) / largest_u
-    largest_v = float(np.hypot(*step[n:]))
-    if largest_v * scale > 10.0:
-        scale = 10.0 / largest_v
-    return scale

@@ -20,25 +20,30 @@ every fixed-step integrator calls after a step — and the coupling diagnostics.
 memory evolves in lock-step with a fixed step, :meth:`initial_history` is not None. The
 massless orbit (``quasi_static``) passes the exact φ of each state to
 :meth:`balance_velocity`; the orbit with mass (``auto``, ``implicit``, ``adaptive``: fixed
-BDF2 steps of :mod:`conrod.orbit.coupled_orbit`) asks :meth:`mass_step` for the end of each
-step, journal velocity and bore solved together (:mod:`conrod.ehd.mass_step`; films
-with the exact response, :meth:`supports_mass_step`). ``rk2`` is refused for those films
+BDF2 steps of :mod:`conrod.orbit.implicit_step`) asks :meth:`step_system` for the system of
+each step, journal velocity and bore solved together
+(:class:`~conrod.film.capabilities.HasStepSystem`, :mod:`conrod.ehd.bore_system`; films
+with the exact response, :meth:`supports_step_system`). ``rk2`` is refused for those films
 (the bore rate over its short step is too stiff) and runs the others, its predictor and
 corrector solves both seeing φ at the start of the step.
 
 Deformation rate. The squeeze term 12 μ ∂h/∂t includes the bore's rate ∂u/∂t, taken
-backward in time from the deformation at the previous crank angle (:mod:`conrod.ehd.rate`,
-Reynolds film; ``ElasticSettings(deformation_rate=False)`` leaves it out as Rodin 2004 does).
+backward in time from the deformation at the previous crank angle
+(:mod:`conrod.film.rated_state`: the base film ``with_deformation_rate()``, films without a
+transported content of their own; ``ElasticSettings(deformation_rate=False)`` leaves it out
+as Rodin 2004 does).
 Without it the bore moves into a journal that the massless orbit holds in place with no
 film resistance, and the force balance on the deformed bore fails. The largest rate seen
 over a step is kept in the memory (``deformation_rate`` [m/s]).
 
 The massless orbit asks :meth:`ElasticFilm.balance_velocity` for the velocity that balances
 the load, bore displacement and velocity solved together, passing the crank angle of each
-state: by Newton's method with the film's exact response on its active set for the
-isoviscous Reynolds film (:mod:`conrod.ehd.newton`, :mod:`conrod.ehd.response`),
-by the finite-difference quasi-Newton iteration of :mod:`conrod.ehd.balance` for the
-other films.
+state: by Newton's method (:mod:`conrod.numerics.newton`) with the film's exact response
+on its active set for a film answered by its pressure with an exact response
+(:class:`~conrod.film.capabilities.HasPressureEvaluation`,
+:class:`~conrod.film.capabilities.HasThicknessResponse`: the isoviscous Reynolds film), by
+the finite-difference quasi-Newton iteration of :mod:`conrod.ehd.balance` for the other
+films.
 """
 
 from __future__ import annotations
@@ -50,6 +55,7 @@ import numpy as np
 
 from conrod.ehd.asperity import DeformedAsperity, deformed_min_gap, open_radius
 from conrod.ehd.balance import BalanceJacobian, solve_balance
+from conrod.ehd.bore_system import BoreSystem, nodal_force_weights, pressure_step_system
 from conrod.ehd.coupling import (
     CouplingOutcome,
     CouplingSettings,
@@ -58,20 +64,21 @@ from conrod.ehd.coupling import (
     fixed_point_coupling,
     solve_coupling,
 )
-from conrod.ehd.memory import ElasticMemory, ElasticSettings
-from conrod.ehd.newton import ChordJacobian, newton_balance
-from conrod.ehd.rate import rated, with_deformation_rate
-from conrod.ehd.response import (
-    PressureEvaluation,
-    evaluate_pressure,
-    film_response,
-    has_exact_response,
-    nodal_force_weights,
-)
+from conrod.ehd.memory import ElasticMemory, ElasticSettings, extrapolated_deformation
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmResult, FilmState
-from conrod.film.capabilities import SupportsDeformation, film_memory, solve_film
+from conrod.film.capabilities import (
+    HasPressureEvaluation,
+    HasThicknessResponse,
+    SupportsDeformation,
+    SupportsDeformationRate,
+    film_memory,
+    solve_film,
+)
+from conrod.film.rated_state import rated
+from conrod.film.step_system import StepRequest
 from conrod.film.wrapper import FilmWrapper
+from conrod.numerics.newton import ChordJacobian, NewtonControls, UpdateLimits, solve_step
 
 
 class ElasticFilm(FilmWrapper):
@@ -99,29 +106,38 @@ class ElasticFilm(FilmWrapper):
         if len(theta) != len(housing.angles) or not np.allclose(theta, housing.angles):
             raise CaseError(f"housing: {len(housing.angles)} bore nodes do not match the "
                             f"film's {len(theta)} θ nodes (allowed: solver.n_theta nodes)")
-        self.base = with_deformation_rate(base)
+        self.base = (base.with_deformation_rate() if isinstance(base, SupportsDeformationRate)
+                     and base.initial_history() is None else base)
         self.housing = housing
         self.crank_speed = float(crank_speed)
         self.settings = settings or ElasticSettings()
         self._z = z
         self._axial_nodes = base.deformation_shape()[1]
-        self._coupling = CouplingSettings(
+        self.coupling = CouplingSettings(
             tolerance=self.settings.tolerance * base.geometry.radial_clearance,
             max_iterations=self.settings.max_iterations,
             increment_share=self.settings.increment_share)
-        directions = dominant_directions(housing.corrected_compliance, self._coupling.modes)
+        directions = dominant_directions(housing.corrected_compliance, self.coupling.modes)
         self.jacobian = JacobianCache(directions)
         self.balance_jacobian = BalanceJacobian(directions, housing.angles)
         self.rigid_jacobian = BalanceJacobian(directions[:, :0], housing.angles)
         self._zero_operator = np.zeros_like(housing.corrected_compliance)
         self.chords = {"balance": ChordJacobian(), "rigid": ChordJacobian(),
                        "coupling": ChordJacobian()}
-        self.exact = has_exact_response(self.base) and self.settings.method == "quasi_newton"
-        self._nodal = (nodal_force_weights(self.base, housing.angles, housing.radius)
-                       if self.exact else None)
-        self.contact = (DeformedAsperity.from_parameters(asperity, self._nodal,
-                                                         self.base._force_weights)
+        self.exact = (isinstance(self.base, HasPressureEvaluation)
+                      and isinstance(self.base, HasThicknessResponse)
+                      and self.base.exact_thickness_response()
+                      and self.settings.method == "quasi_newton")
+        self.nodal = (nodal_force_weights(self.base, housing.angles, housing.radius)
+                      if self.exact else None)
+        self.contact = (DeformedAsperity.from_parameters(asperity, self.nodal,
+                                                         self.base.force_weights)
                         if asperity is not None and self.exact else None)
+
+    @property
+    def clearance(self) -> float:
+        """Radial clearance c [m]."""
+        return self.base.geometry.radial_clearance
 
     def carries_asperity(self) -> bool:
         """True when the asperity contact is part of this film's force, taken on the
@@ -151,7 +167,7 @@ class ElasticFilm(FilmWrapper):
             raise CaseError("elastic film: the bore deformation is computed by the housing; "
                             "a FilmState.deformation cannot be added")
         outcome = self._couple(state, memory)
-        result, inner = self._finish(outcome.payload)
+        result, inner = outcome.payload.finish()
         result = dataclasses.replace(result, pressure=result.pressure if with_pressure
                                      else None, extra=dict(result.extra))
         u = outcome.deformation
@@ -178,7 +194,7 @@ class ElasticFilm(FilmWrapper):
         is advanced on the deformed film, the step diagnostics restart."""
         inner = memory.inner
         if hasattr(self.base, "advance_memory"):
-            deformed = dataclasses.replace(state, deformation=self._field(memory.deformation))
+            deformed = dataclasses.replace(state, deformation=self.film_field(memory.deformation))
             inner = self.base.advance_memory(deformed, inner, dt)
         start = memory.step_start if memory.step_start is not None else memory.deformation
         rate = float(np.max(np.abs(memory.deformation - start))) / dt if dt > 0 else 0.0
@@ -202,7 +218,7 @@ class ElasticFilm(FilmWrapper):
 
     def balance_velocity(self, state: FilmState, load: tuple[float, float],
                          memory: ElasticMemory, crank_angle: float
-) -> tuple[float, float, float, ElasticMemory]:
+                         ) -> tuple[float, float, float, ElasticMemory]:
         """Massless journal: velocity (v_x, v_y) [m/s] at which the film on the deformed
         bore balances ``load`` W [N], the relative force residual [-] and the memory after
         it (bore displacement and velocity solved together, :mod:`conrod.ehd.balance`).
@@ -214,32 +230,28 @@ class ElasticFilm(FilmWrapper):
         operator = (share * self.housing.corrected_compliance if elastic
                     else self._zero_operator)
         inertia = share * self.inertia_deformation(memory.crank_angle)
-        start = (_extrapolated(before, memory) if elastic
+        start = (extrapolated_deformation(before, memory) if elastic
                  else np.zeros(len(self.housing.angles)))
-        c = self.base.geometry.radial_clearance
+        c = self.clearance
         scale = c * max(self.crank_speed, 1e-3)
+        velocity = np.array([state.velocity_x, state.velocity_y])
 
         def evaluate(u: np.ndarray, v: np.ndarray):
             moving = dataclasses.replace(state, velocity_x=float(v[0]), velocity_y=float(v[1]))
             forces, h_min, payload = self.evaluator(moving, memory)(u)
-            if isinstance(payload, PressureEvaluation):
-                return forces, payload.force(self.base), h_min, payload
-            result = payload[0]
-            return forces, np.array([result.force_x, result.force_y]), h_min, payload
+            return forces, payload.force(), h_min, payload
 
         if self.exact:
-            outcome = newton_balance(
-                evaluate, self._responder(memory), start,
-                np.array([state.velocity_x, state.velocity_y]), np.asarray(load, dtype=float),
-                inertia, operator, c, scale, self._coupling.tolerance,
-                5 * self.settings.max_iterations, self.settings.increment_share,
-                chord=self.chords["balance" if elastic else "rigid"])
+            system = BoreSystem(evaluate, self._responder(memory), operator, inertia, start,
+                                UpdateLimits(self.settings.increment_share), c)
+            outcome = solve_step(system, velocity, np.asarray(load, dtype=float), NewtonControls(
+                c, scale, self.coupling.tolerance, 5 * self.settings.max_iterations,
+                self.chords["balance" if elastic else "rigid"]))
         else:
             outcome = solve_balance(
-                evaluate, start, np.array([state.velocity_x, state.velocity_y]),
-                np.asarray(load, dtype=float), inertia, operator,
+                evaluate, start, velocity, np.asarray(load, dtype=float), inertia, operator,
                 self.balance_jacobian if elastic else self.rigid_jacobian, c, scale,
-                self._coupling.tolerance, 5 * self.settings.max_iterations,
+                self.coupling.tolerance, 5 * self.settings.max_iterations,
                 self.settings.increment_share)
         if not outcome.converged:
             raise ConvergenceError(
@@ -248,28 +260,25 @@ class ElasticFilm(FilmWrapper):
                 f"{_film_closing(outcome.payload, self.carries_asperity())})",
                 where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
                 residual=outcome.force_residual * (float(np.hypot(*load)) + 1.0))
-        result, inner = self._finish(outcome.payload)
+        _, inner = outcome.payload.finish()
         after = dataclasses.replace(
-            memory, inner=inner, deformation=outcome.deformation,
-            iterations=memory.iterations + outcome.iterations,
+            memory, inner=inner, deformation=outcome.own,
+            iterations=memory.iterations + outcome.solves,
             updates=memory.updates + outcome.updates, residual=outcome.residual,
             increment=outcome.increment)
         return (float(outcome.velocity[0]), float(outcome.velocity[1]),
                 outcome.force_residual, after)
 
     # ------------------------------------------------------ journal with mass
-    def supports_mass_step(self) -> bool:
-        """True when the orbit with mass can step this film: the exact film response
-        (isoviscous Reynolds film, :mod:`conrod.ehd.mass_step`) [-]."""
+    def supports_step_system(self) -> bool:
+        """True when the journal's implicit step can take this film's bore with it: the
+        exact film response (isoviscous Reynolds film) [-]."""
         return self.exact
 
-    def mass_step(self, request, memory: ElasticMemory, previous: ElasticMemory | None = None,
-                  extra_force=None, earlier: ElasticMemory | None = None):
-        """One implicit step of the journal with mass, bore and end velocity solved together
-        (:func:`conrod.ehd.mass_step.mass_step`)."""
-        from conrod.ehd.mass_step import mass_step
-
-        return mass_step(self, request, memory, previous, extra_force, earlier)
+    def step_system(self, request: StepRequest) -> BoreSystem:
+        """The bore displacement with the journal's implicit step of ``request``
+        (:func:`conrod.ehd.bore_system.pressure_step_system`)."""
+        return pressure_step_system(self, request)
 
     # ---------------------------------------------------------------- coupling
     def _static_memory(self) -> ElasticMemory:
@@ -277,7 +286,9 @@ class ElasticFilm(FilmWrapper):
         return dataclasses.replace(self.initial_memory(),
                                    elapsed=settings.rigid_start + settings.ramp)
 
-    def _field(self, deformation: np.ndarray) -> np.ndarray:
+    def film_field(self, deformation: np.ndarray) -> np.ndarray:
+        """The bore deformation u [m] at the bore nodes as a field δ(θ, z) on the film grid
+        (alike at every z) [m]."""
         return self.housing.film_field(deformation, self._axial_nodes)
 
     def inertia_deformation(self, crank_angle: float) -> np.ndarray:
@@ -304,36 +315,37 @@ class ElasticFilm(FilmWrapper):
             reference=memory.deformation, reference_dt=dt, deformation_rate=rate)
 
     def evaluator(self, state: FilmState, memory: ElasticMemory):
-        """u [m] → (nodal forces [N], h_min [m], (result, inner memory)) of the base film
-        on the bore deformed by u, with the rate (u − reference)/dt in the squeeze term."""
+        """u [m] → (nodal forces [N], h_min [m], payload) of the base film on the bore
+        deformed by u, with the rate (u − reference)/dt in the squeeze term; the payload is
+        the film's pressure evaluation (exact path) or a :class:`SolvedPayload`."""
         inner, reference = memory.inner, memory.reference
         use_rate = self.settings.deformation_rate and reference is not None and (
             memory.reference_dt > 0.0)
 
         def evaluate(u: np.ndarray):
-            rate = self._field((u - reference) / memory.reference_dt) if use_rate else None
-            deformed = rated(state, self._field(u), rate)
+            rate = self.film_field((u - reference) / memory.reference_dt) if use_rate else None
+            deformed = rated(state, self.film_field(u), rate)
             if self.exact:  # pressure only; the characteristics once, for the answer
-                solved = evaluate_pressure(self.base, deformed, inner)
+                solved = self.base.evaluate_pressure(deformed, inner)
                 if self.contact is not None:  # asperity pressure on the deformed film
                     solved = self.contact.attach(solved)
-                forces = np.sum(self._nodal * solved.load_pressure, axis=1)
+                forces = np.sum(self.nodal * solved.load_pressure, axis=1)
                 return forces, solved.min_film_thickness(), solved
             result, after = solve_film(self.base, deformed, inner, with_pressure=True)
             forces = self.housing.nodal_forces(result.pressure, self._z)
-            return forces, result.min_film_thickness, (result, after, deformed)
+            return forces, result.min_film_thickness, SolvedPayload(result, after)
         return evaluate
 
     def _responder(self, memory: ElasticMemory):
         """payload of :meth:`evaluator` → the film's exact response there
-        (:func:`conrod.ehd.response.film_response`)."""
+        (:meth:`~conrod.film.capabilities.HasThicknessResponse.thickness_response`)."""
         use_rate = self.settings.deformation_rate and memory.reference is not None and (
             memory.reference_dt > 0.0)
         step = memory.reference_dt if use_rate else None
 
-        def respond(payload: PressureEvaluation):
+        def respond(payload):
             return self.with_contact_response(
-                film_response(self.base, payload.state, payload.pressure, self._nodal, step),
+                self.base.thickness_response(payload.state, payload, self.nodal, step),
                 payload)
         return respond
 
@@ -350,18 +362,12 @@ class ElasticFilm(FilmWrapper):
         return open_radius(self.housing.angles, self.base.geometry.radial_clearance,
                            memory.deformation, x, y)
 
-    def with_contact_response(self, response, payload: PressureEvaluation):
+    def with_contact_response(self, response, payload):
         """``response`` of the film plus the asperity contact's local terms at ``payload``
         (:meth:`conrod.ehd.asperity.DeformedAsperity.add_response`)."""
         if self.contact is None or payload.contact_slope is None:
             return response
         return self.contact.add_response(response, payload.contact_slope)
-
-    def _finish(self, payload) -> tuple[FilmResult, Any]:
-        """(film result, inner memory) of an evaluation's payload."""
-        if isinstance(payload, PressureEvaluation):
-            return payload.finish(self.base)
-        return payload[0], payload[1]
 
     def _couple(self, state: FilmState, memory: ElasticMemory) -> CouplingOutcome:
         evaluate = self.evaluator(state, memory)
@@ -369,19 +375,18 @@ class ElasticFilm(FilmWrapper):
         if share == 0.0:
             result, after = solve_film(self.base, state, memory.inner, with_pressure=True)
             zero = np.zeros(len(self.housing.angles))
-            return CouplingOutcome(zero, (result, after, state), 1, 0.0, 0.0, True)
+            return CouplingOutcome(zero, SolvedPayload(result, after), 1, 0.0, 0.0, True)
         inertia = share * self.inertia_deformation(memory.crank_angle)
         operator = share * self.housing.corrected_compliance
         if self.settings.method == "fixed_point":
             outcome = fixed_point_coupling(
                 evaluate, memory.deformation, inertia, operator, self.settings.relaxation,
-                self._coupling.tolerance, 100 * self.settings.max_iterations)
+                self.coupling.tolerance, 100 * self.settings.max_iterations)
         elif self.exact:
             outcome = self._newton_coupling(state, memory, evaluate, inertia, operator)
         else:
             outcome = solve_coupling(evaluate, memory.deformation, inertia, operator,
-                                     self.jacobian, self._coupling,
-                                     self.base.geometry.radial_clearance)
+                                     self.jacobian, self.coupling, self.clearance)
         if not outcome.converged:
             raise ConvergenceError(
                 "elastohydrodynamic coupling did not converge (residual: bore displacement, m)",
@@ -390,39 +395,46 @@ class ElasticFilm(FilmWrapper):
         return outcome
 
     def _newton_coupling(self, state, memory, evaluate, inertia, operator) -> CouplingOutcome:
-        """G(u) = 0 at fixed kinematics by :func:`conrod.ehd.newton.newton_balance`."""
-        def with_velocity(u: np.ndarray, _v: np.ndarray):
+        """G(u) = 0 at fixed kinematics by :func:`conrod.numerics.newton.solve_step` with no
+        journal degree of freedom."""
+        def fixed(u: np.ndarray, _v: np.ndarray):
             forces, h_min, payload = evaluate(u)
-            return forces, np.zeros(2), h_min, payload
+            return forces, np.zeros(0), h_min, payload
 
-        c = self.base.geometry.radial_clearance
-        outcome = newton_balance(
-            with_velocity, self._responder(memory), memory.deformation, np.zeros(2),
-            np.zeros(2), inertia, operator, c, 1.0, self._coupling.tolerance,
-            self.settings.max_iterations, self.settings.increment_share, with_velocity=False,
-            chord=self.chords["coupling"])
-        return CouplingOutcome(outcome.deformation, outcome.payload, outcome.iterations,
-                               outcome.residual, outcome.increment,
-                               outcome.residual <= self._coupling.tolerance)
+        system = BoreSystem(fixed, self._responder(memory), operator, inertia,
+                            memory.deformation, UpdateLimits(self.settings.increment_share),
+                            self.clearance)
+        outcome = solve_step(system, np.zeros(0), np.zeros(0), NewtonControls(
+            self.clearance, 1.0, self.coupling.tolerance, self.settings.max_iterations,
+            self.chords["coupling"]))
+        return CouplingOutcome(outcome.own, outcome.payload, outcome.solves, outcome.residual,
+                               outcome.increment, outcome.residual <= self.coupling.tolerance)
+
+
+@dataclasses.dataclass(frozen=True)
+class SolvedPayload:
+    """A full solve of the base film (the coupling without the exact response): its result
+    with the pressure, and the base film's memory after it."""
+
+    result: FilmResult
+    memory: Any
+
+    def force(self) -> np.ndarray:
+        """Film force on the journal (F_x, F_y) [N]."""
+        return np.array([self.result.force_x, self.result.force_y])
+
+    def finish(self) -> tuple[FilmResult, Any]:
+        """(film result, base film memory)."""
+        return self.result, self.memory
 
 
 def _film_closing(payload, carries_asperity: bool) -> str:
     """h_min on the deformed film of the last trial [m] and, without asperity contact,
     the fix for a film too thin to carry the load ('' when the payload does not say)."""
-    if not isinstance(payload, PressureEvaluation):
+    if isinstance(payload, SolvedPayload):
         return ""
     h_min = payload.min_film_thickness()
     advice = ("" if carries_asperity else "; if the film closes, enable mixed lubrication "
               "([contact] model = 'greenwood_tripp') so that asperity contact carries the load")
     return f"; h_min {h_min:.3g} m on the deformed film{advice}"
 
-
-def _extrapolated(before: ElasticMemory, after: ElasticMemory) -> np.ndarray:
-    """Start of the coupling at a new crank angle: the last deformation moved on at its
-    last rate, u + (u − u_prev) Δt_new/Δt_prev [m] (the squeeze term holds the rate, so a
-    start at the old deformation would begin with no bore rate at all)."""
-    moved = after.reference is before.deformation and after is not before
-    if not moved or before.reference is None or before.reference_dt <= 0.0:
-        return after.deformation
-    ratio = after.reference_dt / before.reference_dt
-    return before.deformation + ratio * (before.deformation - before.reference)

@@ -12,7 +12,7 @@ contains the bore's rate ∂u/∂t exactly as the discrete content balance needs
 squeezed by the bore is conserved like oil squeezed by the journal. At the end of each step
 the bore deformation solves G(u) = u − λP(C f(p(u)) + U c(φ)) = 0 with the pressure of that
 step, by semismooth Newton steps with the step's exact response on its cavitation set
-(:mod:`conrod.ehd.mass_conserving_response`, :func:`conrod.ehd.coupling.\
+(:mod:`conrod.film.mass_conserving_response`, :func:`conrod.ehd.coupling.\
 semismooth_coupling`; :func:`~conrod.ehd.coupling.secant_coupling` where the answer sits
 on a switch of that set), warm-started from the trial before and, at a new step, from the
 deformation extrapolated at its last rate; the crank angle φ of the step's end is the
@@ -22,35 +22,33 @@ rejects and which makes it halve the step; NaN never reaches a result.
 
 :class:`ElasticMassConservingFilm` declares
 :class:`~conrod.film.capabilities.HasContentStep`, so the orbit integrators take it through
-the implicit content orbit (:mod:`conrod.orbit.content_orbit`) as they take the rigid film,
-and the stiff-housing limit is the rigid orbit of the same integrator. It also declares
-:class:`~conrod.film.capabilities.HasJointContentStep`: the orbit then hands it the whole
-step, journal velocity and bore deformation in one Newton iteration
-(:mod:`conrod.ehd.mass_conserving_joint`). Between steps (the
-per-angle characteristics) the instantaneous JFO solve sees the bore's rate in its squeeze
-term (:class:`MassConservingWithDeformationRate`).
+the implicit steps of films with a content (:mod:`conrod.orbit.implicit_step`) as they take
+the rigid film, and the stiff-housing limit is the rigid orbit of the same integrator. It
+also declares :class:`~conrod.film.capabilities.HasStepSystem`: the orbit then hands it the
+whole step, journal velocity and bore deformation in one Newton iteration
+(:func:`conrod.ehd.bore_system.content_step_system`). Between steps (the per-angle
+characteristics) the instantaneous JFO solve sees the bore's rate in its squeeze term (the
+base film ``with_deformation_rate()``).
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from conrod.ehd.bore_system import BoreSystem, content_step_system, nodal_force_weights
 from conrod.ehd.coupling import CouplingOutcome, secant_coupling, semismooth_coupling
 from conrod.ehd.film import ElasticFilm, ElasticMemory, ElasticSettings
-from conrod.ehd.mass_conserving_response import content_step_response
 from conrod.ehd.memory import content_bdf2, start_deformation
-from conrod.ehd.newton import ChordJacobian
-from conrod.ehd.rate import rated
-from conrod.ehd.response import nodal_force_weights
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmResult, FilmState
-from conrod.film.capabilities import solve_film
-from conrod.film.mass_conserving import FilmFields, MassConservingFilm
+from conrod.film.capabilities import HasContentStep, HasThicknessResponse, solve_film
+from conrod.film.rated_state import rated
+from conrod.film.step_system import StepRequest
+from conrod.numerics.newton import ChordJacobian
 
 SEMISMOOTH_SOLVES = 8
 """Film solves of the semismooth Newton iteration before the secant one takes over [-]."""
@@ -60,46 +58,25 @@ DIFFERENCE_STEP: float | None = 1e-8
 content step's own noise is far below: measured quadratic Newton convergence)."""
 
 
-@dataclass
-class MassConservingWithDeformationRate(MassConservingFilm):
-    """:class:`MassConservingFilm` whose squeeze term 12μΔxΔz ∂h/∂t includes the bore's
-    rate ``RatedFilmState.deformation_rate`` [m/s] (:mod:`conrod.ehd.rate`)."""
-
-    def fields(self, state: FilmState) -> FilmFields:
-        """The base film's fields with the bore's rate added to the squeeze term."""
-        f = super().fields(state)
-        rate = getattr(state, "deformation_rate", None)
-        if rate is not None:
-            dx, dz = self.spacing()
-            f.squeeze = f.squeeze + 12.0 * state.viscosity * dx * dz * rate
-        return f
-
-
-def with_rate(film: MassConservingFilm) -> MassConservingFilm:
-    """The rate-aware version of a plain :class:`MassConservingFilm` (same settings)."""
-    if isinstance(film, MassConservingWithDeformationRate):
-        return film
-    values = {f.name: getattr(film, f.name) for f in dataclasses.fields(film) if f.init}
-    return MassConservingWithDeformationRate(**values)
-
-
 class ElasticMassConservingFilm(ElasticFilm):
-    """:class:`ElasticFilm` around a :class:`MassConservingFilm`, with the implicit
-    content step on the deforming bore (module docstring).
+    """:class:`ElasticFilm` around a mass-conserving film, with the implicit content step on
+    the deforming bore (module docstring).
 
-    base : MassConservingFilm  The JFO film.  housing : Housing  Compliance and inertia
-    fields at the film nodes.  crank_speed : float  ω [rad/s].
+    base : MassConservingFilm  The JFO film
+        (:class:`~conrod.film.mass_conserving.MassConservingFilm`).
+    housing : Housing  Compliance and inertia fields at the film nodes.
+    crank_speed : float  ω [rad/s].
     settings : ElasticSettings  Coupling controls.
     """
 
-    def __init__(self, base: MassConservingFilm, housing: Any, crank_speed: float,
+    def __init__(self, base: Any, housing: Any, crank_speed: float,
                  settings: ElasticSettings | None = None):
         super().__init__(base, housing, crank_speed, settings)
         if self.settings.deformation_rate:
-            self.base = with_rate(base)
+            self.base = base.with_deformation_rate()
         self.chords["content"] = ChordJacobian()
         self.chords["secant"] = ChordJacobian()
-        self._nodal = nodal_force_weights(base, housing.angles, housing.radius)
+        self.nodal = nodal_force_weights(base, housing.angles, housing.radius)
         self.content_calls = 0
         self.content_solves = 0
         self.content_failures = 0
@@ -114,9 +91,9 @@ class ElasticMassConservingFilm(ElasticFilm):
         :meth:`ElasticFilm.solve_with_memory`."""
         if memory.inner is None or memory.inner.thickness is None or memory.reference is None:
             return super().solve_with_memory(state, memory, with_pressure=with_pressure)
-        rate = (self._field((memory.deformation - memory.reference) / memory.reference_dt)
+        rate = (self.film_field((memory.deformation - memory.reference) / memory.reference_dt)
                 if self.settings.deformation_rate else None)
-        deformed = rated(state, self._field(memory.deformation), rate)
+        deformed = rated(state, self.film_field(memory.deformation), rate)
         result, inner = solve_film(self.base, deformed, memory.inner, with_pressure=True)
         result = dataclasses.replace(result, pressure=result.pressure if with_pressure
                                      else None, extra=dict(result.extra))
@@ -174,36 +151,35 @@ class ElasticMassConservingFilm(ElasticFilm):
             / dt, reference=memory.deformation, reference_dt=dt)
         return fx, fy, after
 
-    def joint_content_step(self, memory: ElasticMemory, previous: ElasticMemory | None,
-                           dt: float, **request):
+    def supports_step_system(self) -> bool:
+        """The content step with the journal velocity and the bore together is always
+        available [-]."""
+        return True
+
+    def step_system(self, request: StepRequest) -> BoreSystem:
         """The content step with the journal velocity and the bore deformation solved
         together by one Newton iteration with the exact Jacobian
-        (:func:`conrod.ehd.mass_conserving_joint.joint_content_step`; keywords there)."""
-        from conrod.ehd.mass_conserving_joint import joint_content_step
-
-        return joint_content_step(self, memory, previous, dt, **request)
+        (:func:`conrod.ehd.bore_system.content_step_system`)."""
+        return content_step_system(self, request)
 
     def _newton(self, evaluate, start, inertia, operator, rate_step) -> CouplingOutcome:
         """G(u) = 0 by semismooth Newton steps with the exact ∂f/∂u of the content step on
-        its converged cavitation set (:mod:`conrod.ehd.mass_conserving_response`);
+        its converged cavitation set (:mod:`conrod.film.mass_conserving_response`);
         where these do not settle within :data:`SEMISMOOTH_SOLVES` film solves (an answer
         on a switch of the set), by the secant iteration with forward-difference Jacobians
         (:func:`conrod.ehd.coupling.secant_coupling`)."""
-        dx, dz = self.base.spacing()
-
         def respond(payload):
             state, inner = payload[3], payload[2]
-            viscous = 12.0 * state.viscosity * dx * dz / rate_step
-            return content_step_response(self.base.fields(state), inner.pressure,
-                                         inner.fraction, viscous, self._nodal)
+            return self.base.thickness_response(state, inner, self.nodal,
+                                                rate_step).nodal_by_bore
 
-        quick = dataclasses.replace(self._coupling, max_iterations=SEMISMOOTH_SOLVES)
+        quick = dataclasses.replace(self.coupling, max_iterations=SEMISMOOTH_SOLVES)
         first = semismooth_coupling(evaluate, respond, start, inertia, operator, quick,
                                     self.chords["content"])
         if first.converged:
             return first
         then = secant_coupling(evaluate, respond, first.deformation, inertia, operator,
-                               self._coupling, self.chords["secant"],
+                               self.coupling, self.chords["secant"],
                                None if DIFFERENCE_STEP is None else DIFFERENCE_STEP
                                * self.base.geometry.radial_clearance)
         return dataclasses.replace(then, iterations=first.iterations + then.iterations)
@@ -216,12 +192,12 @@ class ElasticMassConservingFilm(ElasticFilm):
         latest = [warm.inner if warm is not None else None]
 
         def evaluate(u: np.ndarray):
-            deformed = dataclasses.replace(state, deformation=self._field(u))
+            deformed = dataclasses.replace(state, deformation=self.film_field(u))
             fx, fy, inner = self.base.content_step(deformed, memory.inner, dt, latest[0],
                                                    before)
             latest[0] = inner
             pressure = self.base.gauge_pressure(inner.pressure, deformed)
-            forces = np.sum(self._nodal * pressure, axis=1)
+            forces = np.sum(self.nodal * pressure, axis=1)
             return forces, float(inner.thickness.min()), (fx, fy, inner, deformed, pressure)
         return evaluate
 
@@ -237,9 +213,12 @@ def elastic_film(base: Any, housing: Any, crank_speed: float,
                  settings: ElasticSettings | None = None,
                  asperity: tuple[float, float, float, float] | None = None) -> ElasticFilm:
     """The film ``base`` on the deforming bore of ``housing``: the implicit content step for
-    an isoviscous mass-conserving film, :class:`ElasticFilm` otherwise; ``asperity``: the
-    Greenwood–Tripp parameters of mixed lubrication (taken on the deformed film by the
-    isoviscous Reynolds film, else added by the orbit on the rigid shell)."""
-    if isinstance(base, MassConservingFilm) and base.pressure_viscosity is None:
+    a film with a content step and its exact response (the isoviscous mass-conserving
+    film), :class:`ElasticFilm` otherwise; ``asperity``: the Greenwood–Tripp parameters of
+    mixed lubrication (taken on the deformed film by a film with the exact response
+    answered by its pressure, the isoviscous Reynolds film, else added by the orbit on the
+    rigid shell)."""
+    if (isinstance(base, HasContentStep) and isinstance(base, HasThicknessResponse)
+            and base.exact_thickness_response()):
         return ElasticMassConservingFilm(base, housing, crank_speed, settings)
     return ElasticFilm(base, housing, crank_speed, settings, asperity)

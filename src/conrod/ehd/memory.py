@@ -31,7 +31,8 @@ class ElasticMemory:
     clocked : bool  The crank angle comes with every force balance (massless orbit);
         False: it is advanced by ω dt in :meth:`ElasticFilm.advance_memory`.
     acceleration : ndarray or None  Journal acceleration (2,) at the end of an implicit step
-        of the orbit with mass [m/s²] (:mod:`conrod.ehd.mass_step`); None otherwise.
+        of the orbit with mass [m/s²]
+        (:func:`conrod.ehd.bore_system.pressure_step_system`); None otherwise.
     """
 
     inner: Any
@@ -62,7 +63,7 @@ class ElasticSettings:
         u ← u − ω G(u), slow, kept as the reference of the tests (fixed kinematics only).
     relaxation : float  ω of the fixed point [-].
     deformation_rate : bool  Put the bore's rate ∂u/∂t in the squeeze term
-        (:mod:`conrod.ehd.rate`; Reynolds film only).
+        (:mod:`conrod.film.rated_state`; Reynolds film only).
     ramp : float  Crank angle over which the deformation is then brought in linearly [rad]
         (a deformation switched on at once may close the gap at the journal's current
         position, for which no film solution exists).
@@ -108,3 +109,14 @@ def content_bdf2(memory: ElasticMemory, previous: ElasticMemory | None) -> bool:
     """True when the film's content step is BDF2 (both contents carry their thickness)."""
     return (previous is not None and memory.inner.thickness is not None
             and previous.inner.thickness is not None)
+
+
+def extrapolated_deformation(before: ElasticMemory, after: ElasticMemory) -> np.ndarray:
+    """Start of the coupling at a new crank angle: the last deformation moved on at its
+    last rate, u + (u − u_prev) Δt_new/Δt_prev [m] (the squeeze term holds the rate, so a
+    start at the old deformation would begin with no bore rate at all)."""
+    moved = after.reference is before.deformation and after is not before
+    if not moved or before.reference is None or before.reference_dt <= 0.0:
+        return after.deformation
+    ratio = after.reference_dt / before.reference_dt
+    return before.deformation + ratio * (before.deformation - before.reference)

@@ -10,18 +10,31 @@ declares what its inner model declares by delegating the methods.
 * :class:`SupportsDeformation` — the model honours ``FilmState.deformation``; a model that
   does not must refuse a deformation with :class:`~conrod.errors.CaseError`
   (:func:`refuse_deformation`), never ignore it;
+* :class:`SupportsDeformationRate` — a version of the model that also puts the bore's rate
+  ``RatedFilmState.deformation_rate`` in its squeeze term;
+* :class:`HasMemory` — the answer depends on an explicit memory value (warm start, film
+  content) that the integrator owns;
 * :class:`HasContentStep` — an implicit (BDF2 / backward Euler) step of a transported film
   content (mass-conserving film), the orbit's step for films with content;
-* :class:`HasJointContentStep` — that step with the journal's end velocity solved together
-  with the film's own inner unknowns (the bore deformation of an elastic film);
+* :class:`HasMixableContent` — the content as a vector, for the acceleration of the
+  cycle-to-cycle map;
+* :class:`HasStepSystem` — unknowns of the film's own (a bore displacement, ...) solved
+  together with the journal's implicit step, as a step system with exact Jacobian blocks;
+* :class:`HasThicknessResponse` — the exact response of the film's nodal loads and force to
+  a change of its film thickness by whole rows (a bore displacement), with its rate;
+* :class:`HasPressureEvaluation` — an answer by the pressure alone, the other
+  characteristics computed once for the accepted one;
 * :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
   integrator's Newton matrix);
+* :class:`HasSensitivities` — force, stiffness and damping from the film's own solver;
 * :class:`HasFlightKernel` — a compiled force and Jacobian with a warm start that the
   implicit orbit integrator runs inside its compiled free flight;
-* :class:`HasMemory` — the answer depends on an explicit memory value (warm-start field,
-  film content) that the *integrator* owns: it initialises it, threads it through every
-  solve, advances it over a step, snapshots it and restores it on a rejected step.
-  Memory values are immutable: a solve returns a new one and never changes its argument.
+* :class:`CarriesAsperityContact` — the film's force holds the asperity contact;
+* :class:`HasDeformedGap` — a deforming bore that says where its deformed film closes.
+
+A memory (:class:`HasMemory`) is owned by the *integrator*: it initialises it, threads it
+through every solve, advances it over a step, snapshots it and restores it on a rejected
+step. Memory values are immutable: a solve returns a new one and never changes its argument.
 """
 
 from __future__ import annotations
@@ -34,6 +47,7 @@ import numpy as np
 
 from conrod.errors import CaseError
 from conrod.film.base import FilmResult, FilmState
+from conrod.film.step_system import FilmResponse, StepRequest, StepSystem
 
 QuasiStaticCycle = Callable[["QuasiStaticRequest"], tuple[np.ndarray, np.ndarray, float]]
 """request → (rows (x, y, v_x, v_y, 0, 0, contact) at the output steps, end state array
@@ -149,25 +163,6 @@ class HasContentStep(Protocol):
 
 
 @runtime_checkable
-class HasJointContentStep(Protocol):
-    """A film with a content step that solves the journal's end velocity together with its
-    own inner unknowns (a deforming bore) in one Newton iteration with the exact Jacobian:
-    the content orbit hands it the whole force balance of a step instead of iterating on
-    the velocity around it."""
-
-    def joint_content_step(self, memory: Any, previous: Any, dt: float, *,
-                           position_reference: Any, velocity_reference: Any, tau: float,
-                           mass: Any, load: Any, speeds: Any, viscosity: float, guess: Any,
-                           force_tolerance: float) -> Any:
-        """The step from ``memory`` whose end position is e_r + τ v and end acceleration
-        (v − v_r)/τ (e_r ``position_reference`` [m], v_r ``velocity_reference`` [m/s],
-        τ ``tau`` [s]) balancing ``load`` W [N] with ``mass`` [kg]; returns an object with
-        ``velocity`` [m/s], ``memory``, ``force_residual`` |F + W − m a|/(|W| + 1 N) [-]
-        and ``converged``, or None when the film cannot take the step this way."""
-        ...
-
-
-@runtime_checkable
 class HasMixableContent(Protocol):
     """A film whose content (the film fraction ϑ on its grid) can be extrapolated between
     cycles with the journal position: the acceleration of the cycle-to-cycle map of the
@@ -245,19 +240,62 @@ class HasDeformedGap(Protocol):
 
 
 @runtime_checkable
-class HasCoupledMassStep(Protocol):
-    """A film whose own unknowns are solved together with the implicit step of the journal
-    with mass (the elastic bore)."""
+class HasStepSystem(Protocol):
+    """A film with unknowns of its own (the displacement of a deforming bore; a film
+    temperature, ...) that are solved together with the journal's implicit step: for a
+    step request it returns the system of its own residual G(y, v) and its force F(y, v)
+    on the journal, with the exact Jacobian blocks, which the orbit's one Newton iteration
+    solves with the journal's balance (:mod:`conrod.film.step_system`)."""
 
-    def supports_mass_step(self) -> bool:
-        """True when this configuration of the film can take the coupled step."""
+    def supports_step_system(self) -> bool:
+        """True when this configuration of the film can take the step this way."""
         ...
 
-    def mass_step(self, request: Any, memory: Any, previous: Any = None,
-                  extra_force: Any = None, earlier: Any = None) -> Any:
-        """:class:`conrod.ehd.mass_step.MassStepOutcome` of ``request`` from ``memory``
-        (``previous``: the memory one step earlier, for BDF2; ``earlier``: two steps
-        earlier, for the start value; ``extra_force(x, y)``: asperity force [N])."""
+    def step_system(self, request: StepRequest) -> StepSystem:
+        """The film's :class:`~conrod.film.step_system.StepSystem` for ``request``."""
+        ...
+
+
+@runtime_checkable
+class HasThicknessResponse(Protocol):
+    """A film that gives the exact response of its loads to its film thickness at one solve:
+    ∂f/∂u and ∂F/∂u of the nodal loads f_j = Σ_k W_jk p_jk and of the force F on the
+    journal to a displacement u_j of whole film rows (with the rate u_j/τ_r in its squeeze or
+    content term), and ∂/∂v of the journal's own squeeze term
+    (:class:`~conrod.film.step_system.FilmResponse`)."""
+
+    def exact_thickness_response(self) -> bool:
+        """True when this configuration's response is exact (isoviscous) [-]."""
+        ...
+
+    def thickness_response(self, state: FilmState, solved: Any, nodal: np.ndarray,
+                           rate_step: float | None) -> FilmResponse:
+        """The response at the solve of ``state`` whose answer is ``solved`` (it holds the
+        converged pressure, and the film fraction of a content step); ``nodal`` W
+        (n, n_z + 1) [m²]; ``rate_step`` τ_r [s] of the film-thickness rate (None: the
+        rate is not in the film's answer)."""
+        ...
+
+
+@runtime_checkable
+class HasPressureEvaluation(Protocol):
+    """A film that answers a state by its pressure alone, warm-started from its memory; the
+    other characteristics (friction, flows) are computed once, for the accepted answer
+    (:class:`~conrod.film.reynolds_response.PressureEvaluation`)."""
+
+    def evaluate_pressure(self, state: FilmState, memory: Any) -> Any:
+        """The pressure evaluation of ``state`` from ``memory`` (None: a cold start)."""
+        ...
+
+
+@runtime_checkable
+class SupportsDeformationRate(Protocol):
+    """A film that can put the bore's rate ∂u/∂t
+    (``RatedFilmState.deformation_rate``, :mod:`conrod.film.rated_state`) in its squeeze
+    term."""
+
+    def with_deformation_rate(self) -> Any:
+        """The same film, its squeeze term including the bore's rate."""
         ...
 
 

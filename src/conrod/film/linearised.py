@@ -122,13 +122,14 @@ class FilmLinearisation:
 def _directions(film, state: FilmState) -> list[tuple[np.ndarray, np.ndarray]]:
     """(∂h/∂q, ∂ḣ/∂q) at the nodes for q = e_x, e_y, ė_x, ė_y [-]."""
     shape = (film.n_theta, film.n_z + 1)
-    cos = np.broadcast_to(film._cos, shape)
-    sin = np.broadcast_to(film._sin, shape)
+    cos_theta, sin_theta = film.node_directions
+    cos = np.broadcast_to(cos_theta[:, None], shape)
+    sin = np.broadcast_to(sin_theta[:, None], shape)
     zero = np.zeros(shape)
     return [(-cos, zero), (-sin, zero), (zero, -cos), (zero, -sin)]
 
 
-def _active_matrix(a_east: np.ndarray, a_north: np.ndarray, active: np.ndarray):
+def active_matrix(a_east: np.ndarray, a_north: np.ndarray, active: np.ndarray):
     """Sparse K_AA of the flux balance restricted to the active nodes, and their index."""
     n_theta, n_nodes = active.shape
     index = -np.ones(active.shape, dtype=np.int64)
@@ -166,17 +167,17 @@ def linearise_reynolds(film, state: FilmState, method: str = "adjoint",
     one sparse LU (``"direct"``)."""
     if method not in ("adjoint", "direct"):
         raise CaseError(f"method = {method!r}: allowed 'adjoint' or 'direct'")
-    problem = film._problem(state)
+    problem = film.discrete_problem(state)
     if memory is None:
         memory = film.initial_memory()
-    pressure, _ = film._solve_pressure(problem, state, memory)
+    pressure, _ = film.solve_pressure(problem, state, memory)
     grid = film.film_grid
     omega_sum = state.journal_speed + state.shell_speed
     a_east, a_north, _ = kernel.assemble_coefficients(
         problem.h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum,
         state.viscosity)
     active = ~problem.fixed & (pressure > film.geometry.cavitation_pressure)
-    w_x, w_y = film._force_weights
+    w_x, w_y = film.force_weights
     force = np.array([-np.sum(pressure * w_x), -np.sum(pressure * w_y)])
     jacobian = np.zeros((2, 4))
     if active.any():
@@ -187,12 +188,12 @@ def linearise_reynolds(film, state: FilmState, method: str = "adjoint",
                 grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity)
             d_residuals[column] = kernel.node_imbalance(pressure, d_east, d_north, d_source)
         if method == "direct":
-            matrix, nodes = _active_matrix(a_east, a_north, active)
+            matrix, nodes = active_matrix(a_east, a_north, active)
             d_pressure = splu(matrix).solve(-d_residuals[:, nodes[0], nodes[1]].T)
             jacobian[0] = -w_x[nodes] @ d_pressure
             jacobian[1] = -w_y[nodes] @ d_pressure
         else:
-            symmetric = film._symmetric and state.deformation is None
+            symmetric = film.symmetric and state.deformation is None
             for row, weights in enumerate((w_x, w_y)):
                 adjoint = _adjoint(film, problem.h, weights, ~active, symmetric)
                 jacobian[row] = np.tensordot(d_residuals, adjoint * active, axes=2)

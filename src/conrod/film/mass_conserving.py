@@ -48,6 +48,7 @@ from conrod.film.mass_conserving_kernel import (
 )
 from conrod.film.mass_conserving_memory import FULL, FilmFields, MassConservingMemory
 from conrod.film.piezoviscosity import PressureViscosity
+from conrod.film.rated_state import state_rate
 from conrod.film.supply import nearest_theta_index, supply_mask
 
 __all__ = ["FULL", "FilmFields", "MassConservingFilm", "MassConservingMemory"]
@@ -73,6 +74,8 @@ class MassConservingFilm:
     pressure_viscosity : PressureViscosity or None  μ(p) law: the p–ϑ problem is solved
         for the reduced pressure q(p) (:mod:`conrod.film.piezoviscosity`; the Couette flux
         has no μ, so the Elrod–Adams complementarity maps exactly) and mapped back.
+    deformation_rate : bool  Add the bore's rate ``RatedFilmState.deformation_rate`` [m/s]
+        to the squeeze term of the instantaneous solve (:meth:`with_deformation_rate`).
     """
 
     geometry: BearingGeometry
@@ -85,6 +88,7 @@ class MassConservingFilm:
     method: Literal["multigrid", "sor"] = "multigrid"
     pressure_viscosity: PressureViscosity | None = None
     name: str = "mass_conserving"
+    deformation_rate: bool = False
     last_iterations: int = field(default=0, init=False)
 
     def __post_init__(self) -> None:
@@ -180,6 +184,34 @@ class MassConservingFilm:
 
         return content_step(self, state, memory, dt, warm, previous)
 
+    def with_deformation_rate(self) -> MassConservingFilm:
+        """This film with the bore's rate in the squeeze term of its instantaneous solve
+        (:class:`~conrod.film.capabilities.SupportsDeformationRate`)."""
+        return replace(self, deformation_rate=True)
+
+    def exact_thickness_response(self) -> bool:
+        """True when isoviscous (the content step is then available) [-]."""
+        return self.pressure_viscosity is None
+
+    def thickness_response(self, state: FilmState, solved: MassConservingMemory,
+                           nodal: np.ndarray, rate_step: float | None):
+        """Response of the nodal loads and the force to the film thickness at the content
+        step ``solved`` (its memory) whose content capacity is 12μΔxΔz/``rate_step``
+        (:func:`conrod.film.mass_conserving_response.content_step_response`)."""
+        from conrod.film.mass_conserving_response import content_step_response
+
+        return content_step_response(self, state, solved, nodal, rate_step)
+
+    @property
+    def node_directions(self) -> tuple[np.ndarray, np.ndarray]:
+        """(cos θ, sin θ) of the θ nodes [-]."""
+        return self._cos_theta, self._sin_theta
+
+    @property
+    def sor_factor(self) -> float:
+        """Relaxation factor of the film's sweeps [-]."""
+        return self._omega
+
     def fields(self, state: FilmState) -> FilmFields:
         """Assemble the cell-balance coefficients for one state."""
         g = self.geometry
@@ -197,6 +229,9 @@ class MassConservingFilm:
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             deformation, dx, dz, mu, g.radius * (state.journal_speed + state.shell_speed),
 )
+        rate = state_rate(state) if self.deformation_rate else None
+        if rate is not None:  # the bore's own rate in the squeeze term 12μΔxΔz ∂h/∂t
+            squeeze = squeeze + 12.0 * state.viscosity * dx * dz * rate
         if not float(h.min()) > 0.0:
             raise FilmThicknessError(
                 f"film thickness min = {float(h.min()):.3g} m (must stay > 0 m): the journal "
@@ -219,8 +254,8 @@ class MassConservingFilm:
         with_pressure: bool,
 ) -> tuple[FilmResult, np.ndarray]:
         f = self.fields(state)
-        fraction = self._fraction(history, f)
-        pressure = self._start_pressure(f, fraction, warm, state)
+        fraction = self.fraction_field(history, f)
+        pressure = self.start_pressure(f, fraction, warm, state)
         source = convection(f.couette_east, fraction) + f.squeeze * fraction
         active = f.free & (fraction >= FULL)
         sweeps, change = self._solve_full_film(pressure, active, f, source, state)
@@ -297,7 +332,7 @@ class MassConservingFilm:
             f.supply[inlet, 1:-1] = True
             f.fixed_pressure[inlet, :] = -self.reduced_cavitation(state)
         fraction = np.ones_like(f.h)
-        pressure = self._start_pressure(f, fraction, None, state)
+        pressure = self.start_pressure(f, fraction, None, state)
         if cavitation == "jfo":
             sweeps, change = elrod_adams_steady(
                 pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east, f.squeeze,
@@ -321,7 +356,9 @@ class MassConservingFilm:
         return result
 
     # ------------------------------------------------------------------- helpers
-    def _fraction(self, history: np.ndarray | None, f: FilmFields) -> np.ndarray:
+    def fraction_field(self, history: np.ndarray | None, f: FilmFields) -> np.ndarray:
+        """Film fraction ϑ [-] of ``history`` clipped to [0, 1], full on the Dirichlet nodes
+        of ``f`` (a full film when None)."""
         if history is None:
             return np.ones_like(f.h)
         fraction = np.clip(np.asarray(history, dtype=float), 0.0, 1.0)
@@ -349,8 +386,10 @@ class MassConservingFilm:
             return shifted + self.geometry.cavitation_pressure
         return law.from_reduced(shifted + self.reduced_cavitation(state), state.viscosity)
 
-    def _start_pressure(self, f: FilmFields, fraction: np.ndarray,
-                        warm: np.ndarray | None, state: FilmState) -> np.ndarray:
+    def start_pressure(self, f: FilmFields, fraction: np.ndarray,
+                       warm: np.ndarray | None, state: FilmState) -> np.ndarray:
+        """Start of the shifted pressure p̃ [Pa]: ``warm`` (else −p_cav) on the free nodes,
+        the Dirichlet values on the others, 0 where the film is broken."""
         offset = -self.reduced_cavitation(state)
         start = warm if warm is not None else np.full(f.h.shape, offset)
         pressure = np.where(f.free, start, f.fixed_pressure)

@@ -76,12 +76,12 @@ def content_step(
     else:
         capacity, known = cell * f.h, content
     first = warm if warm is not None else memory
-    fraction = np.ascontiguousarray(film._fraction(first.fraction, f))
-    pressure = film._start_pressure(f, fraction, first.pressure, state)
+    fraction = np.ascontiguousarray(film.fraction_field(first.fraction, f))
+    pressure = film.start_pressure(f, fraction, first.pressure, state)
     tolerance = max(film.tolerance, STEP_TOLERANCE)
     sweeps, change = elrod_adams_step(
         pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east, capacity,
-        np.ascontiguousarray(known), film._omega, tolerance, film.max_iterations)
+        np.ascontiguousarray(known), film.sor_factor, tolerance, film.max_iterations)
     film.last_iterations = sweeps
     if not change <= tolerance:
         raise ConvergenceError(
@@ -96,7 +96,7 @@ def _content(film: Any, f, memory: MassConservingMemory, cell: float,
              dt: float) -> np.ndarray:
     """12μΔxΔz ϑh/Δt of ``memory`` [Pa m³]; without its thickness, h^n = h − Δt ∂h/∂t
     (the backward Euler position of a rigid film)."""
-    fraction = film._fraction(memory.fraction, f)
+    fraction = film.fraction_field(memory.fraction, f)
     if memory.thickness is not None:
         return cell * fraction * memory.thickness
     return fraction * (cell * f.h - f.squeeze)
@@ -110,5 +110,5 @@ def shifted_pressure_force(film: Any, pressure: np.ndarray,
     gauge = film.gauge_pressure(pressure, state)
     line_load = gauge @ axial_weights(pressure.shape[1], dz)
     factor = -film.geometry.radius * 2.0 * math.pi / theta.size
-    return factor * float(film._cos_theta @ line_load), factor * float(
-        film._sin_theta @ line_load)
+    cos_theta, sin_theta = film.node_directions
+    return factor * float(cos_theta @ line_load), factor * float(sin_theta @ line_load)

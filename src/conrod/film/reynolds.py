@@ -20,7 +20,7 @@ orbit cheap. The memory is explicit: the orbit integrator holds it
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Literal
 
 import numpy as np
@@ -33,7 +33,9 @@ from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest
 from conrod.film.characteristics import FilmGrid
 from conrod.film.piezoviscosity import PressureViscosity
+from conrod.film.rated_state import state_rate
 from conrod.film.reynolds_memory import ReynoldsMemory, scaled_state
+from conrod.film.reynolds_results import reynolds_characteristics
 from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
 
 FrictionConvention = Literal["full_film", "film_fraction"]
@@ -107,6 +109,8 @@ class ReynoldsFilm:
     pressure_viscosity : PressureViscosity or None  μ(p) law: the solver works on the
         reduced pressure q(p) (:mod:`conrod.film.piezoviscosity`) and maps back; the
         warm-start field is q. None = isoviscous.
+    deformation_rate : bool  Add the bore's rate ``RatedFilmState.deformation_rate`` [m/s]
+        (:mod:`conrod.film.rated_state`) to the squeeze term (:meth:`with_deformation_rate`).
     """
 
     geometry: BearingGeometry
@@ -122,6 +126,7 @@ class ReynoldsFilm:
     use_symmetry: bool = True
     pressure_viscosity: PressureViscosity | None = None
     name: str = "reynolds"
+    deformation_rate: bool = False
 
     def __post_init__(self) -> None:
         if self.n_theta < 8 or self.n_theta % 2:
@@ -187,7 +192,7 @@ class ReynoldsFilm:
                           memory: ReynoldsMemory) -> tuple[float, float, ReynoldsMemory]:
         """Film force (F_x, F_y) [N] warm-started from ``memory``, and the new memory."""
         problem = self._problem(state)
-        reduced, _ = self._solve_pressure(problem, state, memory)
+        reduced, _ = self.solve_pressure(problem, state, memory)
         pressure = self._physical(reduced, state)
         w_x, w_y = self._force_weights
         sum_x, sum_y, *_ = kernel.force_and_extremes(pressure, w_x, w_y, problem.h)
@@ -222,6 +227,51 @@ class ReynoldsFilm:
 
         return flight_kernel(self, memory, newton_tolerance)
 
+    def with_deformation_rate(self) -> ReynoldsFilm:
+        """This film with the bore's rate in its squeeze term
+        (:class:`~conrod.film.capabilities.SupportsDeformationRate`)."""
+        return replace(self, deformation_rate=True)
+
+    def evaluate_pressure(self, state: FilmState, memory: ReynoldsMemory | None = None):
+        """The pressure alone at ``state`` warm-started from ``memory``
+        (:class:`~conrod.film.reynolds_response.PressureEvaluation`)."""
+        from conrod.film.reynolds_response import evaluate_pressure
+
+        return evaluate_pressure(self, state, memory)
+
+    def exact_thickness_response(self) -> bool:
+        """True when isoviscous: a pressure-dependent viscosity maps the solved field
+        nonlinearly to the pressure [-]."""
+        return self.pressure_viscosity is None
+
+    def thickness_response(self, state: FilmState, solved: Any, nodal: np.ndarray,
+                           rate_step: float | None):
+        """Response of the nodal loads and the force to the film thickness at the solve
+        ``solved`` (:func:`conrod.film.reynolds_response.thickness_response`)."""
+        from conrod.film.reynolds_response import thickness_response
+
+        return thickness_response(self, state, solved.pressure, nodal, rate_step)
+
+    @property
+    def force_weights(self) -> tuple[np.ndarray, np.ndarray]:
+        """(w_x, w_y) with the film force F = −Σ p (w_x, w_y) [m²]."""
+        return self._force_weights
+
+    @property
+    def node_directions(self) -> tuple[np.ndarray, np.ndarray]:
+        """(cos θ, sin θ) of the θ nodes [-]."""
+        return self._cos_nodes, self._sin_nodes
+
+    @property
+    def symmetric(self) -> bool:
+        """True when only z ≤ 0 is solved for an undeformed film (mid-plane symmetry)."""
+        return self._symmetric
+
+    def discrete_problem(self, state: FilmState) -> Any:
+        """The discrete problem of ``state``: film thickness h and its rate [m, m/s], the
+        Dirichlet nodes and values, the cavitation bound."""
+        return self._problem(state)
+
     def solve(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
         """All film characteristics for one state (cold solve)."""
         return self.solve_with_memory(state, self.initial_memory(),
@@ -232,9 +282,9 @@ class ReynoldsFilm:
         """All characteristics (friction convention in ``extra``) warm-started from
         ``memory``, and the memory after the solve."""
         problem = self._problem(state)
-        reduced, info = self._solve_pressure(problem, state, memory)
+        reduced, info = self.solve_pressure(problem, state, memory)
         pressure = self._physical(reduced, state)
-        result = self._characteristics(problem, reduced, pressure, state, info)
+        result = self.characteristics(problem, reduced, pressure, state, info)
         if with_pressure:
             result.pressure = pressure
         return result, self._memory_after(memory, reduced, state)
@@ -279,6 +329,9 @@ class ReynoldsFilm:
         h, h_rate = kernel.film_gap(g.radial_clearance, state.eccentricity_x,
                                     state.eccentricity_y, state.velocity_x, state.velocity_y,
                                     self._cos_nodes, self._sin_nodes, self.n_z + 1)
+        rate = state_rate(state) if self.deformation_rate else None
+        if rate is not None:  # the bore's own rate in the squeeze term
+            h_rate = h_rate + rate
         if state.deformation is not None:
             if np.shape(state.deformation) != h.shape:
                 raise CaseError(
@@ -350,7 +403,7 @@ class ReynoldsFilm:
 )
         return sweeps, change
 
-    def _solve_pressure(self, problem: _Problem, state: FilmState,
+    def solve_pressure(self, problem: _Problem, state: FilmState,
                         memory: ReynoldsMemory) -> tuple[np.ndarray, dict]:
         """Converged pressure [Pa] on the fine grid and solver diagnostics."""
         warm = self.warm_start and memory.pressure is not None
@@ -377,46 +430,9 @@ class ReynoldsFilm:
         return pressure, {"sweeps": float(total), "relative_update": change,
                           "warm_start": float(warm), "multigrid": float(self.method == "multigrid")}
 
-    def _characteristics(self, problem: _Problem, reduced: np.ndarray, pressure: np.ndarray,
-                         state: FilmState, info: dict) -> FilmResult:
-        """Characteristics; flows and cavitation from the solved (reduced) field, forces,
-        p_max and shear from the pressure with μ(p)."""
-        grid, h = self.film_grid, problem.h
-        p_cav = problem.cavitation
-        omega_sum = state.journal_speed + state.shell_speed
-        a_east, a_north, source = problem.coefficients or kernel.assemble_coefficients(
-            h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, state.viscosity
-        )
-        lost, leaking, supply, cavitated_width = kernel.flow_balance(
-            reduced, a_east, a_north, source, problem.fixed, p_cav, grid.axial_weights)
-        to_flow = 1.0 / (12.0 * state.viscosity)
-        fraction = None
-        if self.friction == "film_fraction":
-            direction = 1 if omega_sum >= 0.0 else -1
-            fraction = kernel.film_fraction_swift_stieber(
-                reduced, h, problem.fixed, p_cav, direction)
-        law = self.pressure_viscosity
-        viscosity = (state.viscosity if law is None
-                     else state.viscosity * law.viscosity_ratio(pressure, state.viscosity))
-        torque_j, torque_b = chars.friction_torques(
-            pressure, h, grid, state.journal_speed, state.shell_speed, viscosity, fraction)
-        w_x, w_y = self._force_weights
-        sum_x, sum_y, i_p, j_p, i_h, j_h = kernel.force_and_extremes(pressure, w_x, w_y, h)
-        fx, fy = -sum_x, -sum_y
-        h_min, h_angle = chars.minimum_film_at(h, grid, i_h, j_h)
-        p_max, p_angle = chars.peak_pressure_at(pressure, grid, i_p, j_p)
-        info = dict(info)
-        info["cavitation_flow_m3_per_s"] = lost * to_flow
-        info["friction_full_film"] = float(self.friction == "full_film")
-        if law is not None:
-            info.update(law.diagnostics(reduced, pressure, state.viscosity))
-        return FilmResult(
-            force_x=fx, force_y=fy,
-            friction_torque_journal=torque_j, friction_torque_shell=torque_b,
-            side_flow=-leaking * to_flow, supply_flow=supply * to_flow,
-            min_film_thickness=h_min, min_film_angle=h_angle,
-            max_pressure=p_max, max_pressure_angle=p_angle,
-            cavitated_fraction=cavitated_width * grid.d_theta / (2.0 * math.pi * grid.width),
-            friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
-            extra=info,
-)
+    def characteristics(self, problem: _Problem, reduced: np.ndarray, pressure: np.ndarray,
+                        state: FilmState, info: dict) -> FilmResult:
+        """All characteristics of a solve of ``problem``: flows and cavitation from the
+        solved (reduced) field, forces, p_max and shear from the pressure with μ(p)
+        (:func:`conrod.film.reynolds_results.reynolds_characteristics`)."""
+        return reynolds_characteristics(self, problem, reduced, pressure, state, info)

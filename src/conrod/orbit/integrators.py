@@ -6,18 +6,40 @@ Each integrator integrates one cycle, ``cycle(problem, state, settings)`` with t
 on to the next cycle. A new integrator is a class with ``name`` and ``cycle`` registered
 in :data:`conrod.registry.INTEGRATORS`, or any such object handed to
 :class:`~conrod.simulation.simulation.Simulation`.
+
+An integrator also declares what it can run (:func:`declared` reads a declaration with its
+default for an integrator that does not make it):
+
+* ``with_mass`` — the journal moves with its mass (False: the massless orbit whose
+  velocity balances the load) [default True];
+* ``fixed_step`` — it advances a film memory that evolves in lock-step with a fixed step
+  (a film content, the bore of an elastic film without the exact response) [False];
+* ``journal_step`` — it solves a film's own unknowns together with the journal
+  (:class:`~conrod.film.capabilities.HasStepSystem`: the implicit steps of
+  :mod:`conrod.orbit.implicit_step`, or the massless balance of the film and its bore)
+  [False];
+* ``massless_start`` — with ``[solver] massless_start`` it starts from the periodic
+  massless orbit (:mod:`conrod.orbit.periodic`) [False].
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any, Protocol, runtime_checkable
 
 from conrod.errors import CaseError
-from conrod.film.capabilities import HasContentStep
+from conrod.orbit.implicit_step import (
+    implicit_step_cycle,
+    implicit_step_deg,
+    needs_journal_step,
+    steps_implicitly,
+)
 from conrod.orbit.problem import OrbitProblem, OrbitState
 from conrod.orbit.trajectory import CycleTrajectory
+
+DECLARATION_DEFAULTS = {"with_mass": True, "fixed_step": False, "journal_step": False,
+                        "massless_start": False}
+"""What an integrator that does not declare it is taken to do (module docstring)."""
 
 
 @runtime_checkable
@@ -31,20 +53,37 @@ class Integrator(Protocol):
         ...
 
 
+def declared(integrator: Any, declaration: str) -> bool:
+    """The integrator's ``declaration`` (module docstring), its default when it makes
+    none [-]."""
+    return bool(getattr(integrator, declaration, DECLARATION_DEFAULTS[declaration]))
+
+
+def resolved(integrator: Any, problem: OrbitProblem) -> Any:
+    """The integrator that runs ``problem``: the one an automatic integrator chooses
+    (``choose(problem)``), else ``integrator`` itself."""
+    choose = getattr(integrator, "choose", None)
+    return choose(problem) if choose is not None else integrator
+
+
 @dataclass(frozen=True)
 class AdaptiveIntegrator:
     """Implicit, error-controlled (SciPy Radau/BDF/LSODA) with contact phases."""
 
     name: str = "adaptive"
+    with_mass: bool = True
+    fixed_step: bool = False
+    journal_step: bool = True
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
-        """One cycle; a film on an elastic bore runs the fixed-step orbit with mass of
-        :mod:`conrod.orbit.coupled_orbit` (steps ≤ ``max_step_deg``); refuses another film
-        whose content evolves in lock-step with a fixed step."""
+        """One cycle; a film whose own unknowns are solved with the journal's step (the
+        elastic bore) runs the fixed implicit steps of :mod:`conrod.orbit.implicit_step`
+        (steps ≤ ``max_step_deg``); refuses another film whose content evolves in lock-step
+        with a fixed step."""
         from conrod.orbit.adaptive import adaptive_cycle
 
-        if _coupled(problem):
-            return _coupled_cycle(problem, state, settings)
+        if needs_journal_step(problem.film):
+            return _fixed_step_cycle(problem, state, settings)
         if problem.has_film_content:
             raise CaseError(
                 f"solver.integrator = 'adaptive': the {problem.film.name} film carries a "
@@ -63,11 +102,12 @@ class AutomaticIntegrator:
     a fixed step."""
 
     name: str = "auto"
+    fixed_step: bool = True
+    journal_step: bool = True
 
     def choose(self, problem: OrbitProblem) -> Integrator:
         """The integrator used for ``problem``."""
-        if problem.has_film_content and not isinstance(problem.film, HasContentStep) and (
-                not _coupled(problem)):
+        if problem.has_film_content and not steps_implicitly(problem):
             return QuasiStaticIntegrator()
         return ImplicitIntegrator()
 
@@ -82,23 +122,20 @@ class ImplicitIntegrator:
     contact phases; compiled with the film force for films with a compiled kernel."""
 
     name: str = "implicit"
+    with_mass: bool = True
+    fixed_step: bool = False
+    journal_step: bool = True
+    massless_start: bool = True
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
         """One cycle; a film with a transported content that steps it implicitly
-        (mass-conserving) runs the BDF2 orbit with mass of :mod:`conrod.orbit.content_orbit`
-        at the largest step ≤ ``max_step_deg`` that divides ``output_step_deg``; so does a
-        film on an elastic bore, whose bore deformation is solved with the journal's step
-        (:mod:`conrod.orbit.coupled_orbit`)."""
+        (mass-conserving) or whose own unknowns are solved with the journal's step (the
+        elastic bore) runs the fixed BDF2 steps of :mod:`conrod.orbit.implicit_step` with
+        mass at the largest step ≤ ``max_step_deg`` that divides ``output_step_deg``."""
         from conrod.orbit.implicit import implicit_cycle
 
-        if problem.has_film_content and isinstance(problem.film, HasContentStep):
-            from conrod.orbit.content_orbit import content_cycle
-
-            output = settings.output_step_deg
-            step = output / math.ceil(output / settings.max_step_deg - 1e-9)
-            return content_cycle(problem, state, step, output, with_mass=True)
-        if _coupled(problem):
-            return _coupled_cycle(problem, state, settings)
+        if steps_implicitly(problem):
+            return _fixed_step_cycle(problem, state, settings)
         return implicit_cycle(problem, state, settings)
 
 
@@ -107,6 +144,9 @@ class HeunIntegrator:
     """Second-order Runge–Kutta (Heun) at the fixed step ``[solver] step_deg``."""
 
     name: str = "rk2"
+    with_mass: bool = True
+    fixed_step: bool = True
+    journal_step: bool = False
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
         """One cycle of fixed-step Heun integration."""
@@ -121,6 +161,9 @@ class QuasiStaticIntegrator:
     ``[solver] quasi_static_step_deg``."""
 
     name: str = "quasi_static"
+    with_mass: bool = False
+    fixed_step: bool = True
+    journal_step: bool = True
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
         """One cycle of the massless orbit."""
@@ -130,16 +173,9 @@ class QuasiStaticIntegrator:
                                   settings.output_step_deg)
 
 
-def _coupled(problem: OrbitProblem) -> bool:
-    """The film solves its own unknowns (the elastic bore) with the journal's step."""
-    from conrod.orbit.coupled_orbit import coupled_mass_film
-
-    return coupled_mass_film(problem)
-
-
-def _coupled_cycle(problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
-    """One cycle of :func:`conrod.orbit.coupled_orbit.coupled_cycle` at the largest step ≤
-    ``max_step_deg`` that divides ``output_step_deg``."""
-    from conrod.orbit.coupled_orbit import coupled_cycle, coupled_step_deg
-
-    return coupled_cycle(problem, state, coupled_step_deg(settings), settings.output_step_deg)
+def _fixed_step_cycle(problem: OrbitProblem, state: OrbitState,
+                      settings: Any) -> CycleTrajectory:
+    """One cycle with mass by :func:`conrod.orbit.implicit_step.implicit_step_cycle` at the
+    largest step ≤ ``max_step_deg`` that divides ``output_step_deg``."""
+    return implicit_step_cycle(problem, state, implicit_step_deg(settings),
+                               settings.output_step_deg, with_mass=True)

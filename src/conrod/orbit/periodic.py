@@ -43,7 +43,8 @@ import numpy as np
 from conrod import registry
 from conrod.film.capabilities import HasMixableContent
 from conrod.orbit.acceleration import AndersonMixing
-from conrod.orbit.integrators import Integrator
+from conrod.orbit.implicit_step import needs_journal_step
+from conrod.orbit.integrators import Integrator, declared, resolved
 from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
 from conrod.orbit.progress import reporting
 from conrod.orbit.trajectory import CycleTrajectory
@@ -155,14 +156,9 @@ def _mixing(problem: OrbitProblem, chosen: Integrator, settings) -> _Mixing | No
     if not getattr(settings, "accelerate_cycles", False) or (problem.has_film_content
                                                               and not mixable):
         return None
-    from conrod.orbit.integrators import AutomaticIntegrator, QuasiStaticIntegrator
-
-    if isinstance(chosen, AutomaticIntegrator):
-        chosen = chosen.choose(problem)
     limit = MIXING_LIMIT * problem.contact_radius / problem.clearance
-    return _Mixing(AndersonMixing(limit), not isinstance(chosen, QuasiStaticIntegrator),
+    return _Mixing(AndersonMixing(limit), declared(resolved(chosen, problem), "with_mass"),
                    problem.film if problem.has_film_content else None)
-    # an integrator object of unknown kind is treated as one with mass
 
 
 @dataclass
@@ -220,15 +216,13 @@ def _next_start(mixing: _Mixing | None, start: OrbitState, end: OrbitState,
 
 
 def _implicit(chosen: Integrator, problem: OrbitProblem) -> bool:
-    """The orbit with mass by ``implicit`` that the massless start pays for: not for a film
-    on an elastic bore, whose massless orbit costs as much as the one with mass (KamAZ-740,
-    36 × 8: periodic after 3 cycles from rest either way)."""
-    from conrod.orbit.coupled_orbit import coupled_mass_film
-    from conrod.orbit.integrators import AutomaticIntegrator, ImplicitIntegrator
-
-    if isinstance(chosen, AutomaticIntegrator):
-        chosen = chosen.choose(problem)
-    return isinstance(chosen, ImplicitIntegrator) and not coupled_mass_film(problem)
+    """An orbit with mass that the massless start pays for (an integrator that declares
+    ``massless_start``, :mod:`conrod.orbit.integrators`): not for a film whose own unknowns
+    are solved with the journal's step (the elastic bore), whose massless orbit costs as
+    much as the one with mass (KamAZ-740, 36 × 8: periodic after 3 cycles from rest either
+    way)."""
+    return (declared(resolved(chosen, problem), "massless_start")
+            and not needs_journal_step(problem.film))
 
 
 def _massless_start(problem: OrbitProblem, settings) -> OrbitState | None:

@@ -34,7 +34,7 @@ from conrod.film.massless import (
     newton_velocity,
 )
 from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
-from conrod.orbit.content_orbit import content_cycle
+from conrod.orbit.implicit_step import implicit_step_cycle as content_cycle
 from conrod.orbit.memory import FilmSession
 from conrod.orbit.problem import OrbitProblem, OrbitState
 from conrod.orbit.progress import AngleReports

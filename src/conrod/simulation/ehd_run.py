@@ -13,39 +13,39 @@ from conrod.contact.analysis import analyse_contact
 from conrod.ehd.cycle import elastic_cycle
 from conrod.errors import CaseError
 from conrod.film.capabilities import HasContentStep
+from conrod.orbit.implicit_step import needs_journal_step
+from conrod.orbit.integrators import declared, resolved
 from conrod.results.ehd import ElasticRunResults
-
-FIXED_STEP_INTEGRATORS = ("auto", "quasi_static", "rk2")
-"""Integrators that run an elastic film without the exact response (mass-conserving,
-pressure-dependent viscosity): its memory advances in lock-step with a fixed step
-(``auto`` picks quasi_static)."""
-WITH_MASS_INTEGRATORS = ("auto", "implicit", "adaptive")
-"""Integrators that run the journal with mass on the elastic bore: fixed BDF2 steps of the
-journal and the bore together (:mod:`conrod.orbit.coupled_orbit`)."""
 
 
 def check_integrator(simulation) -> None:
     """CaseError naming the field, before anything runs, for an integrator that cannot
-    run the elastic film: ``rk2`` for the isoviscous Reynolds film (its explicit step of a
-    few hundredths of a degree makes the bore rate in the squeeze term stiff; the implicit
-    steps of :mod:`conrod.orbit.coupled_orbit` run it), ``implicit``/``adaptive`` for a
-    film without the exact response (mass-conserving, pressure-dependent viscosity)."""
+    run the elastic film, by what the integrator declares
+    (:func:`conrod.orbit.integrators.declared`): one that does not solve the film's bore
+    with the journal (``rk2``) for the isoviscous Reynolds film, whose bore is solved only
+    with the journal's implicit step (rk2's explicit step of a few hundredths of a degree
+    makes the bore rate in the squeeze term stiff; the implicit steps of
+    :mod:`conrod.orbit.implicit_step` run it); one that does not advance a memory in
+    lock-step with a fixed step (``implicit``, ``adaptive``) for a film without the exact
+    response (mass-conserving, pressure-dependent viscosity)."""
     integrator = simulation.integrator()
-    name = integrator if isinstance(integrator, str) else integrator.name
-    with_mass = bool(simulation.film_model().supports_mass_step())
-    allowed = WITH_MASS_INTEGRATORS + ("quasi_static",) if with_mass else (
-        FIXED_STEP_INTEGRATORS)
-    if name in allowed:
-        return
-    if with_mass:
+    if isinstance(integrator, str):
+        integrator = registry.integrator(integrator)
+    name = integrator.name
+    film = simulation.film_model()
+    if needs_journal_step(film):
+        if declared(integrator, "journal_step"):
+            return
         raise CaseError(
             f"solver.integrator = {name!r} with an elastic [housing]: its explicit step of "
             "a few hundredths of a degree makes the bore rate in the squeeze term too stiff "
             "for the coupling (allowed: implicit, adaptive or auto for the journal with "
             "mass, quasi_static for the massless journal)")
+    if declared(integrator, "fixed_step"):
+        return
     raise CaseError(
         f"solver.integrator = {name!r} with an elastic [housing]: the "
-        f"{simulation.film_model().base.name} film's memory advances in lock-step with a "
+        f"{film.base.name} film's memory advances in lock-step with a "
         "fixed step, which an error-controlled integrator cannot hold (allowed: "
         "quasi_static or auto for the massless journal, rk2 for the journal with mass)")
 
@@ -54,16 +54,15 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     """Elastic answer, diagnostics and (unless skipped) the rigid companion run."""
     check_integrator(simulation)
     start = time.perf_counter()
-    results, thermal = simulation._run(progress)
+    results, thermal = simulation.run_orbit(progress)
     problem, orbit = thermal.problem, thermal.orbit
     integrator = simulation.integrator()
     if isinstance(integrator, str):
         integrator = registry.integrator(integrator)
-    if hasattr(integrator, "choose"):  # the automatic integrator: the one it chose
-        integrator = integrator.choose(problem)
+    integrator = resolved(integrator, problem)  # an automatic integrator: the one it chose
     name = integrator.name
     diagnostics = elastic_cycle(problem, results.cycle, orbit.last.film_memory,
-                                massless=name == "quasi_static")
+                                massless=not declared(integrator, "with_mass"))
     film = problem.film
     if film.carries_asperity():  # contact columns from the asperity on the deformed film
         results = dataclasses.replace(results, contact=analyse_contact(
@@ -73,11 +72,11 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     companion = simulation.rigid_companion(integrator=name)  # same journal model as above
     rigid = None
     if companion is not None:
-        rigid = companion._run(_staged(progress, "rigid "))[0]
+        rigid = companion.run_orbit(_staged(progress, "rigid "))[0]
     info = {
         "housing_model": simulation.case.housing.model,
         "bore_nodes": int(len(film.housing.angles)),
-        "coupling_tolerance_m": film._coupling.tolerance,
+        "coupling_tolerance_m": film.coupling.tolerance,
         "rigid_start_deg": float(np.degrees(film.settings.rigid_start)),
         "jacobian_builds": film.jacobian.builds + film.balance_jacobian.builds + sum(
             chord.builds for chord in film.chords.values()),

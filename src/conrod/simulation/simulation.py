@@ -195,7 +195,7 @@ class Simulation:
         an elastic housing the elastic answer, its diagnostics and the rigid companion
         (:class:`conrod.results.ehd.ElasticRunResults`)."""
         if not self.elastic():
-            results = self._run(progress)[0]
+            results = self.run_orbit(progress)[0]
             if self.housing() is None:
                 return results
             note = (f"[housing] model = {self.case.housing.model!r} not coupled: film "
@@ -221,8 +221,14 @@ class Simulation:
         return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
                           housing="rigid", **self._overrides)
 
-    def _run(self, progress: ProgressCallback | None = None):
-        """(RunResults, the converged thermal orbit)."""
+    def run_orbit(self, progress: ProgressCallback | None = None
+                  ) -> tuple[RunResults, ThermalOrbit]:
+        """The orbit of this simulation's film as it is, without the elastic parts of
+        :meth:`run`: the periodic orbit (with the heat balance), its characteristics,
+        contact post-processing and plausibility warnings, and the converged
+        :class:`ThermalOrbit` (problem, orbit) it came from. :meth:`run` returns its
+        results for a rigid bore; the elastic run (:mod:`conrod.simulation.ehd_run`) adds
+        the bore's diagnostics to it and runs it again on the rigid companion."""
         start = time.perf_counter()
         thermal = self._thermal_orbit(self.problem(), progress)
         orbit, problem, cycle = thermal.orbit, thermal.problem, thermal.cycle
@@ -256,7 +262,7 @@ class Simulation:
         return model
 
     def _thermal_orbit(self, problem: OrbitProblem, progress: ProgressCallback | None
-    ) -> _ThermalOrbit:
+    ) -> ThermalOrbit:
         """Orbit, its characteristics and the effective temperature, iterated when μ
         depends on T (heat balance); the characteristics are solved once per orbit."""
         lubricant, s = self._lubricant, self.solver
@@ -272,7 +278,7 @@ class Simulation:
             target = _heat_balance_temperature(cycle, lubricant)
             if (target is None or iteration == iterations
                     or abs(target - temperature) <= s.thermal_tolerance):
-                return _ThermalOrbit(orbit, current, cycle, target, cycles, iteration)
+                return ThermalOrbit(orbit, current, cycle, target, cycles, iteration)
             temperature = relaxed_update(temperature, target)
             viscosity = lubricant.viscosity_at(temperature)
             state = orbit.last.end_state
@@ -295,8 +301,11 @@ class Simulation:
 
 
 @dataclasses.dataclass(frozen=True)
-class _ThermalOrbit:
-    """The converged orbit of the heat balance and what was computed along with it."""
+class ThermalOrbit:
+    """The converged orbit of the heat balance and what was computed along with it: the
+    periodic orbit, its problem (at the converged viscosity), the cycle characteristics,
+    the effective temperature [°C] (None without a heat balance), the cycles integrated and
+    the heat-balance iterations [-]."""
 
     orbit: PeriodicOrbit
     problem: OrbitProblem

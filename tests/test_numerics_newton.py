@@ -1,4 +1,4 @@
-"""The Newton iteration of the coupled bore (:mod:`conrod.ehd.newton`) on a system with
+"""The Newton iteration of a step system (:mod:`conrod.numerics.newton`) on a system with
 a known root: a stiffening spring bed, f(u) = −(u + u³) at every node, against the bore
 u = P C f + U, i.e. G(u) = u + (u + u³)·k − U = 0 node by node (k the diagonal compliance),
 whose root is the real root of a cubic (numpy.roots)."""
@@ -8,8 +8,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conrod.ehd.newton import ChordJacobian, newton_balance
-from conrod.ehd.response import FilmResponse
+from conrod.numerics.newton import (
+    ChordJacobian,
+    NewtonControls,
+    StepBlocks,
+    UpdateLimits,
+    solve_step,
+)
 
 COMPLIANCE = np.array([0.5, 1.0, 2.0])
 """Diagonal compliance k of the three nodes [m/N]."""
@@ -17,14 +22,21 @@ INERTIA = np.array([0.3, 0.8, 1.5])
 """Imposed displacement U [m]."""
 
 
-def _evaluate(u: np.ndarray, _v: np.ndarray):
-    return -(u + u**3), np.zeros(2), 1e3, u.copy()
+class _SpringBed:
+    """G(u) = u − k f(u) − U with f(u) = −(u + u³), no journal degree of freedom."""
 
+    limits = UpdateLimits(0.5)
 
-def _respond(u: np.ndarray) -> FilmResponse:
-    n = len(u)
-    return FilmResponse(-np.diag(1.0 + 3.0 * u**2), np.zeros((n, 2)), np.zeros((2, n)),
-                        np.zeros((2, 2)))
+    def __init__(self, start: np.ndarray):
+        self.start = start
+
+    def evaluate(self, u: np.ndarray, _v: np.ndarray):
+        return u + COMPLIANCE * (u + u**3) - INERTIA, np.zeros(0), 1e3, u.copy()
+
+    def respond(self, u: np.ndarray) -> StepBlocks:
+        n = len(u)
+        return StepBlocks(np.diag(_jacobian(u)), np.zeros((n, 0)), np.zeros((0, n)),
+                          np.zeros((0, 0)))
 
 
 def _roots() -> np.ndarray:
@@ -42,9 +54,8 @@ def _jacobian(u: np.ndarray) -> np.ndarray:
 def _solve(refresh: bool, start: np.ndarray, carried: np.ndarray):
     chord = ChordJacobian()
     chord.inverse = np.diag(carried)
-    return newton_balance(_evaluate, _respond, start, np.zeros(2), np.zeros(2), INERTIA,
-                          np.diag(COMPLIANCE), 1.0, 1.0, 1e-13, 60, 0.5,
-                          with_velocity=False, chord=chord, refresh_after_first=refresh)
+    return solve_step(_SpringBed(start), np.zeros(0), np.zeros(0),
+                      NewtonControls(1.0, 1.0, 1e-13, 60, chord, refresh_after_first=refresh))
 
 
 @pytest.mark.parametrize("refresh", [False, True])
@@ -52,8 +63,8 @@ def test_newton_reaches_the_root_of_the_cubic(refresh):
     root = _roots()
     outcome = _solve(refresh, root + 0.05, 1.0 / _jacobian(np.zeros(3)))  # stale: from u = 0
     assert outcome.converged
-    np.testing.assert_allclose(outcome.deformation, root, rtol=0, atol=1e-12)
-    assert 1 <= outcome.updates <= outcome.iterations - 1  # the start value costs a solve
+    np.testing.assert_allclose(outcome.own, root, rtol=0, atol=1e-12)
+    assert 1 <= outcome.updates <= outcome.solves - 1  # the start value costs a solve
 
 
 def test_a_fresh_jacobian_after_the_first_update_saves_the_stalling_chord_updates():
@@ -69,6 +80,6 @@ def test_a_fresh_jacobian_after_the_first_update_saves_the_stalling_chord_update
     start = root + np.array([1e-2, 0.0, 1e-5])
     chord_only, refreshed = _solve(False, start, carried), _solve(True, start, carried)
     for outcome in (chord_only, refreshed):
-        np.testing.assert_allclose(outcome.deformation, root, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(outcome.own, root, rtol=0, atol=1e-12)
     assert refreshed.updates == 3
     assert chord_only.updates == 4

@@ -1,4 +1,4 @@
-"""Compiled kernel of :mod:`conrod.ehd.response`: the change of the discrete flow
+"""Compiled kernel of :mod:`conrod.film.reynolds_response`: the change of the discrete flow
 balance of :mod:`conrod.film.reynolds_kernel` per unit bore displacement at one row.
 
 A bore displacement u_j raises h by u_j on the whole row j (and ḣ by ``rate`` u_j). In the

@@ -15,27 +15,42 @@ step) does not move. For a fixed set,
 .. math:: ∂R/∂x\\;∂x/∂u_r = −∂R/∂u_r
 
 is one sparse LU and n back-substitutions, and the nodal forces f_j = Σ_k W_jk p(θ_j, z_k)
-follow linearly. Unlike the Reynolds response (:mod:`conrod.ehd.response`), the
+follow linearly. Unlike the Reynolds response (:mod:`conrod.film.reynolds_response`), the
 film fraction of the broken-film cells and its transport are in it, which is what makes
 the coupled Newton iteration converge in a few steps.
 """
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
 
+from conrod.film.mass_conserving_results import axial_weights
+from conrod.film.step_system import FilmResponse
 
-def content_step_response(fields, pressure: np.ndarray, fraction: np.ndarray,
-                          capacity_per_thickness: float, nodal: np.ndarray) -> np.ndarray:
-    """∂f/∂u (n × n) [N/m] of the content step at its converged shifted pressure p̃ [Pa]
-    and film fraction ϑ [-] on ``fields`` (:class:`conrod.film.mass_conserving.FilmFields`
-    of the deformed end state); ``capacity_per_thickness`` K/h = κ 12μΔxΔz/Δt
-    [Pa m]; ``nodal`` W (n, n_z + 1) [m²] from
-    :func:`conrod.ehd.response.nodal_force_weights`."""
-    d_pressure = pressure_by_bore(fields, pressure, fraction, capacity_per_thickness)
-    return np.einsum("rjk,jk->jr", d_pressure, nodal)
+
+def content_step_response(film: Any, state, solved, nodal: np.ndarray,
+                          rate_step: float) -> FilmResponse:
+    """∂f/∂u (n × n) [N/m] and ∂F/∂u (2 × n) [N/m] of the content step of ``film`` at its
+    converged shifted pressure p̃ [Pa] and film fraction ϑ [-] (``solved``, the memory after
+    the step) on the (deformed) end state ``state``; the content capacity is
+    K/h = κ 12μΔxΔz/Δt = 12μΔxΔz/``rate_step`` [Pa m] (κ = 1 backward Euler, 3/2 BDF2);
+    ``nodal`` W (n, n_z + 1) [m²]. The journal velocity enters the step only through its
+    position, so the velocity blocks are zero."""
+    dx, dz = film.spacing()
+    viscous = 12.0 * state.viscosity * dx * dz / rate_step
+    d_pressure = pressure_by_bore(film.fields(state), solved.pressure, solved.fraction,
+                                  viscous)
+    nodal_response = np.einsum("rjk,jk->jr", d_pressure, nodal)
+    theta, _ = film.grid()
+    trig = np.stack([np.cos(theta), np.sin(theta)], axis=1)
+    force = force_by_bore(d_pressure, axial_weights(solved.pressure.shape[1], dz),
+                          trig[:, 0], trig[:, 1], film.geometry.radius)
+    return FilmResponse(nodal_response, np.zeros((nodal.shape[0], 2)), force,
+                        np.zeros((2, 2)))
 
 
 def force_by_bore(d_pressure: np.ndarray, line_weights: np.ndarray,

@@ -1,0 +1,251 @@
+"""The elastic films' step systems: the bore displacement solved with the journal's step.
+
+The bore displacement u [m] at the film nodes solves
+
+.. math:: G(u, v) = u − λP\\big(C f(u, v) + U c(φ)\\big) = 0
+
+(Rodin 2004, eqs. 7–9: compliance C, inertia deformation U c(φ), rigid-body correction P,
+ramp share λ), f the nodal loads of the film on the bore deformed by u. :class:`BoreSystem`
+is that residual with its exact Jacobian blocks
+
+.. math:: ∂G/∂u = I − λPC\\,∂f/∂u,\\quad ∂G/∂v = −λPC\\,∂f/∂v
+
+and the film force F(u, v) on the journal with ∂F/∂u, ∂F/∂v, from the film's response
+(:class:`~conrod.film.capabilities.HasThicknessResponse`), for the Newton iteration of
+:mod:`conrod.numerics.newton`: at fixed journal kinematics, for the massless journal's
+velocity, and in the implicit step of the journal (:class:`~conrod.film.capabilities.\
+HasStepSystem`, :func:`pressure_step_system` for a film answered by its pressure,
+:func:`content_step_system` for the mass-conserving film's content step).
+
+In the implicit step the journal's end position e = e_r + τ v moves h at film row j by
+−τ(cos θ_j, sin θ_j)·δv, as a bore displacement u_j = −τ cos θ_j (−τ sin θ_j) does, so the
+velocity columns of the step are those of the bore, d/dv = −τ Σ_j (cos θ_j, sin θ_j) ∂/∂u_j
+(:func:`journal_columns`): with the bore's rate over τ in the film's answer, the journal's
+own squeeze term is already in them (τ ∂/∂e + ∂/∂v = −τ Σ_j (cos θ_j, sin θ_j) D_j, D_j
+with its rate term 1/τ); without it, ∂/∂v of the film is added. One sparse LU of the film
+gives the whole Jacobian of the step, and each iterate costs one film solve.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from conrod.ehd.memory import content_bdf2, start_deformation
+from conrod.film.base import FilmState
+from conrod.film.step_system import FilmResponse, StepRequest
+from conrod.numerics.newton import ChordJacobian, NewtonOutcome, StepBlocks, UpdateLimits
+
+STEP_SOLVES = 40
+"""Most film steps of the mass-conserving film's step system before the step is left to the
+orbit's own iteration [-]."""
+
+FilmEvaluate = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, float, Any]]
+"""(u [m], v [m/s]) → (nodal loads f [N], film force F [N], h_min [m], payload)."""
+
+
+@dataclass
+class BoreSystem:
+    """G(u, v) = u − λP(C f + U c(φ)) and the film force F of a film evaluation.
+
+    film_evaluate : FilmEvaluate  The film on the bore deformed by u.
+    film_respond : callable  payload → :class:`~conrod.film.step_system.FilmResponse`.
+    operator : ndarray  λ P C [m/N].  inertia : ndarray  λ P U c(φ) [m].
+    start : ndarray  Start of u [m].  limits : UpdateLimits  Rodin's Δ safeguard.
+    scale : float  Radial clearance c, the scale of u and G [m].
+    tolerance : float  max|G| accepted [m].  max_solves : int  Film solves at most [-].
+    chord : ChordJacobian  The Jacobian carried from the last iteration of this kind.
+    on_finish : callable or None  outcome → the film memory at the end of a step.
+    """
+
+    film_evaluate: FilmEvaluate
+    film_respond: Callable[[Any], FilmResponse]
+    operator: np.ndarray
+    inertia: np.ndarray
+    start: np.ndarray
+    limits: UpdateLimits
+    scale: float
+    tolerance: float = 0.0
+    max_solves: int = 0
+    chord: ChordJacobian | None = None
+    on_finish: Callable[[NewtonOutcome], Any] | None = None
+
+    def evaluate(self, own: np.ndarray, velocity: np.ndarray):
+        """(G [m], F [N], h_min [m], payload) at the displacement u and velocity v."""
+        forces, force, h_min, payload = self.film_evaluate(own, velocity)
+        return own - self.operator @ forces - self.inertia, force, h_min, payload
+
+    def respond(self, payload: Any) -> StepBlocks:
+        """∂G/∂u, ∂G/∂v, ∂F/∂u, ∂F/∂v from the film's response at ``payload``."""
+        response = self.film_respond(payload)
+        identity = np.eye(len(self.start))
+        return StepBlocks(identity - self.operator @ response.nodal_by_bore,
+                          -(self.operator @ response.nodal_by_velocity),
+                          response.force_by_bore, response.force_by_velocity)
+
+    def finish(self, outcome: NewtonOutcome) -> Any:
+        """The film memory at the end of the step of ``outcome``."""
+        assert self.on_finish is not None
+        return self.on_finish(outcome)
+
+
+def nodal_force_weights(film, angles: np.ndarray, radius: float) -> np.ndarray:
+    """W (n, n_z + 1) with f_j = Σ_k W_jk p(θ_j, z_k): R Δθ_j times the trapezoidal
+    weights in z (as :func:`conrod.housing.transfer.nodal_forces`) [m²]."""
+    from conrod.housing.transfer import arc_weights
+
+    _, z = film.grid()
+    widths = np.zeros(len(z))
+    gaps = np.diff(z)
+    widths[:-1] += 0.5 * gaps
+    widths[1:] += 0.5 * gaps
+    return (radius * arc_weights(angles))[:, None] * widths[None, :]
+
+
+def directions(angles: np.ndarray) -> np.ndarray:
+    """(cos θ_j, sin θ_j) of the bore nodes (n, 2) [-]."""
+    return np.stack([np.cos(angles), np.sin(angles)], axis=1)
+
+
+def journal_columns(response: FilmResponse, tau: float, trig: np.ndarray,
+                    rate_included: bool) -> FilmResponse:
+    """The film's response with its velocity columns those of the implicit step,
+    −τ Σ_j (cos θ_j, sin θ_j) ∂/∂u_j, plus the film's own ∂/∂v unless the bore's rate over
+    τ is in its answer (``rate_included``) (module docstring)."""
+    nodal_by_velocity = -tau * response.nodal_by_bore @ trig
+    force_by_velocity = -tau * response.force_by_bore @ trig
+    if not rate_included:  # the journal's own squeeze term
+        nodal_by_velocity = nodal_by_velocity + response.nodal_by_velocity
+        force_by_velocity = force_by_velocity + response.force_by_velocity
+    return FilmResponse(response.nodal_by_bore, nodal_by_velocity, response.force_by_bore,
+                        force_by_velocity)
+
+
+def carried_chord(film, key: str) -> ChordJacobian:
+    """The film's carried Jacobian of the iterations of kind ``key``."""
+    if key not in film.chords:
+        film.chords[key] = ChordJacobian()
+    return film.chords[key]
+
+
+def _state(request: StepRequest, velocity: np.ndarray, deformation=None) -> FilmState:
+    """The film state at the end of the step with the end velocity ``velocity``."""
+    x, y = request.position(velocity)
+    return FilmState(eccentricity_x=float(x), eccentricity_y=float(y),
+                     velocity_x=float(velocity[0]), velocity_y=float(velocity[1]),
+                     journal_speed=request.journal_speed, shell_speed=request.shell_speed,
+                     viscosity=request.viscosity, deformation=deformation)
+
+
+def pressure_step_system(film, request: StepRequest) -> BoreSystem:
+    """The step system of an elastic film answered by its pressure at the end of the step
+    (:class:`conrod.ehd.film.ElasticFilm` on the isoviscous Reynolds film): the bore's rate
+    in the squeeze term is (u − u_r)/τ with u_r of the step formula (:func:`bore_reference`),
+    the start of u extrapolated through the last step points (:func:`bore_start`)."""
+    settings, memory = film.settings, request.memory
+    at_end = dataclasses.replace(
+        memory, crank_angle=request.crank_angle,
+        elapsed=memory.elapsed + film.crank_speed * request.dt, clocked=True,
+        reference=bore_reference(memory, request.previous, request.bdf2),
+        reference_dt=request.tau, iterations=0, updates=0)
+    share = settings.share(at_end.elapsed)
+    tau, trig = request.tau, directions(film.housing.angles)
+    rate = tau if settings.deformation_rate else None
+
+    def evaluate(own: np.ndarray, velocity: np.ndarray):
+        forces, h_min, payload = film.evaluator(_state(request, velocity), at_end)(own)
+        return forces, payload.force(), h_min, payload
+
+    def respond(payload) -> FilmResponse:
+        response = film.with_contact_response(  # asperity terms with the bore's
+            film.base.thickness_response(payload.state, payload, film.nodal, rate), payload)
+        return journal_columns(response, tau, trig, settings.deformation_rate)
+
+    def finish(outcome: NewtonOutcome):
+        after = dataclasses.replace(
+            at_end, inner=outcome.payload.memory(), deformation=outcome.own,
+            iterations=outcome.solves, updates=outcome.updates, residual=outcome.residual,
+            increment=outcome.increment,
+            deformation_rate=float(np.max(np.abs(outcome.own - memory.deformation)))
+            / request.dt)
+        velocity = np.asarray(outcome.velocity, dtype=float)
+        return dataclasses.replace(after, acceleration=(velocity - request.velocity_reference)
+                                   / tau)
+
+    start = (bore_start(memory, request.previous, request.earlier) if share > 0.0
+             else np.zeros_like(memory.deformation))
+    return BoreSystem(
+        evaluate, respond, share * film.housing.corrected_compliance,
+        share * film.inertia_deformation(request.crank_angle), start,
+        UpdateLimits(settings.increment_share, -tau * trig), film.clearance,
+        film.coupling.tolerance, 5 * settings.max_iterations,
+        carried_chord(film, "mass_elastic" if share > 0.0 else "mass_rigid"), finish)
+
+
+def content_step_system(film, request: StepRequest) -> BoreSystem:
+    """The step system of the mass-conserving film on the deforming bore
+    (:class:`conrod.ehd.mass_conserving_ehd.ElasticMassConservingFilm`): f and F of the
+    film's implicit content step on h = c − e_x cos θ − e_y sin θ + u, whose content balance
+    holds the bore's rate; the journal velocity enters it only through the end position.
+    Each film step starts from the last one of the iteration."""
+    memory, previous, dt = request.memory, request.previous, request.dt
+    turned = film.crank_speed * dt
+    angle, elapsed = memory.crank_angle + turned, memory.elapsed + turned
+    share = film.settings.share(elapsed)
+    bdf2 = content_bdf2(memory, previous)
+    rate_step = dt / (1.5 if bdf2 else 1.0)
+    tau, trig = request.tau, directions(film.base.grid()[0])
+    before = previous.inner if previous is not None else None
+    latest = [None]
+
+    def evaluate(own: np.ndarray, velocity: np.ndarray):
+        state = _state(request, velocity, film.film_field(own))
+        fx, fy, inner = film.base.content_step(state, memory.inner, dt, latest[0], before)
+        latest[0] = inner
+        forces = np.sum(film.nodal * film.base.gauge_pressure(inner.pressure, state), axis=1)
+        return forces, np.array([fx, fy]), float(inner.thickness.min()), (state, inner)
+
+    def respond(payload) -> FilmResponse:
+        state, inner = payload
+        response = film.base.thickness_response(state, inner, film.nodal, rate_step)
+        return journal_columns(response, tau, trig, True)
+
+    def finish(outcome: NewtonOutcome):
+        film.joint_calls += 1
+        film.joint_solves += outcome.solves
+        return dataclasses.replace(
+            memory, inner=outcome.payload[1], deformation=outcome.own, crank_angle=angle,
+            elapsed=elapsed, iterations=outcome.solves, updates=outcome.updates,
+            residual=outcome.residual, increment=outcome.increment,
+            deformation_rate=float(np.max(np.abs(outcome.own - memory.deformation))) / dt,
+            reference=memory.deformation, reference_dt=dt)
+
+    start = (start_deformation(memory, None, previous) if share > 0.0
+             else np.zeros_like(memory.deformation))
+    key = f"joint_{'elastic' if share > 0.0 else 'rigid'}_{'bdf2' if bdf2 else 'euler'}"
+    return BoreSystem(
+        evaluate, respond, share * film.housing.corrected_compliance,
+        share * film.inertia_deformation(angle), start,
+        UpdateLimits(film.settings.increment_share, -tau * trig), film.clearance,
+        film.coupling.tolerance, STEP_SOLVES, carried_chord(film, key), finish)
+
+
+def bore_reference(memory, previous, bdf2: bool) -> np.ndarray:
+    """u_r of the bore rate (u − u_r)/τ: u_n (backward Euler) or (4u_n − u_{n−1})/3 [m]."""
+    if not bdf2 or previous is None:
+        return memory.deformation
+    return (4.0 * memory.deformation - previous.deformation) / 3.0
+
+
+def bore_start(memory, previous, earlier=None) -> np.ndarray:
+    """Start value of u at the end of the step: u_n extrapolated linearly, or
+    quadratically when ``earlier`` (two steps back) is given [m]."""
+    if previous is None:
+        return memory.deformation
+    if earlier is not None:
+        return 3.0 * (memory.deformation - previous.deformation) + earlier.deformation
+    return 2.0 * memory.deformation - previous.deformation

@@ -1,0 +1,79 @@
+"""The step system of every film that declares one
+(:class:`~conrod.film.capabilities.HasStepSystem`): its exact Jacobian blocks, with the
+journal's inertia, against central differences of the step's residual at the converged end
+of one BDF2 step, on a Winkler bore (the fed bearing of the JFO orbit tests, 24 × 4)."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from conrod.ehd.film import ElasticSettings
+from conrod.ehd.mass_conserving_ehd import elastic_film
+from conrod.film.base import FilmState
+from conrod.film.capabilities import HasStepSystem
+from conrod.film.mass_conserving import MassConservingFilm
+from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.step_system import StepRequest
+from elastic_helpers import (
+    WINKLER_SETTINGS,
+    assert_jacobian_columns,
+    solved_step,
+    step_jacobian_and_residual,
+    winkler_housing,
+)
+from test_ehd_jfo_response import _ruptured_memory
+from test_orbit_jfo import OMEGA, fed_bearing
+
+N_THETA = 24
+BEDDING = 2e-9  # [m/N]
+MASS = np.array([0.8, 1.1])  # [kg]
+VISCOSITY = 0.02  # [Pa s]
+
+
+def _film(base):
+    settings = ElasticSettings(cycle=2 * math.pi, **WINKLER_SETTINGS)
+    return elastic_film(base, winkler_housing(fed_bearing(), N_THETA, BEDDING), OMEGA,
+                        settings)
+
+
+def _memory(film, c: float):
+    """The film's memory past its rigid start (for the content film: a film content with
+    broken-film cells after a few content steps)."""
+    memory = dataclasses.replace(film.initial_memory(), elapsed=10.0)
+    if memory.inner is None or not hasattr(memory.inner, "fraction"):
+        return memory
+    state = FilmState(eccentricity_x=0.6 * c, eccentricity_y=0.2 * c,
+                      velocity_x=0.05 * c * OMEGA, velocity_y=-0.1 * c * OMEGA,
+                      journal_speed=OMEGA, viscosity=VISCOSITY)
+    return dataclasses.replace(memory, inner=_ruptured_memory(film.base, state))
+
+
+FILMS = {
+    "reynolds": lambda: _film(ReynoldsFilm(fed_bearing(), n_theta=N_THETA, n_z=4)),
+    "mass_conserving": lambda: _film(MassConservingFilm(fed_bearing(), n_theta=N_THETA,
+                                                        n_z=4)),
+}
+
+
+@pytest.mark.parametrize("name", sorted(FILMS))
+def test_step_system_blocks_match_central_differences(name):
+    """Every column of the scaled Jacobian (bore nodes 0, 5, 12 and both velocity
+    components) within 1e-5 of its largest entry of the central differences."""
+    film = FILMS[name]()
+    assert isinstance(film, HasStepSystem) and film.supports_step_system()
+    c = film.geometry.radial_clearance
+    memory = _memory(film, c)
+    dt = np.radians(1.0) / OMEGA
+    request = StepRequest(np.array([0.6 * c, 0.2 * c]), np.array([0.05, -0.1]) * c * OMEGA,
+                          2.0 * dt / 3.0, dt, MASS, np.array([-1200.0, -300.0]), OMEGA, 0.0,
+                          VISCOSITY, 0.3, True, (memory, memory))
+    scale = c * OMEGA
+    done = solved_step(film, request, request.velocity_reference, scale)
+    assert done is not None and done.newton.converged
+    jac, residual, z0, _ = step_jacobian_and_residual(film, request, done.newton.own,
+                                                      done.velocity, scale)
+    assert_jacobian_columns(jac, residual, z0, (0, 5, 12, N_THETA, N_THETA + 1))
