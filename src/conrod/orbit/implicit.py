@@ -103,7 +103,7 @@ def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleT
         phi_end = float(sol.t[-1])
         last = sol.status == 0
         mask = (phi_out >= phi) & ((phi_out <= phi_end) if last else (phi_out < phi_end))
-        record_rows(phases, sol, phi_out, mask, table, True)
+        record_rows(phases, sol, phi_out, mask, table, True, settings)
         if last:
             _fill_free(table, free_u, free_rows, problem)
             return CycleTrajectory.from_table(
