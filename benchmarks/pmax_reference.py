@@ -36,7 +36,8 @@ tenth of both neighbours while the reference's is not).
 
 Cost: for each shipped orbit example (the piezoviscous one left out: slow), the periodic
 orbit with the example's own settings, then one more cycle from its end timed (best of
-three) with its steps counted, and the headline p_max and h_min of the run.
+three, of twenty for a cycle under 0.1 s) with its steps counted, and the headline p_max
+and h_min of the run.
 """
 
 from __future__ import annotations
@@ -240,11 +241,12 @@ def measure_cost(label: str) -> None:
         problem = sim.problem()
         orbit = periodic_orbit(problem, sim.solver)
         cycle = cycle_characteristics(problem, orbit.last)
-        best, steps = float("inf"), 0
-        for _ in range(3):
+        best, steps, done = float("inf"), 0, 0
+        while done < (3 if best >= 0.1 else 20):  # a fast cycle: best of more
             start = time.perf_counter()
             again = integrate_cycle(problem, orbit.last.end_state, sim.solver)
             best, steps = min(best, time.perf_counter() - start), again.steps
+            done += 1
         worst_jump = float(np.max(np.abs(np.diff(np.append(cycle.p_max, cycle.p_max[0])))))
         rows[name] = {"integrator": str(sim.solver.integrator), "seconds_per_cycle": best,
                       "steps_per_cycle": int(steps), "cycles": orbit.cycles,
@@ -254,6 +256,11 @@ def measure_cost(label: str) -> None:
                       "largest_p_max_jump_MPa": worst_jump / 1e6,
                       "dips": dips(cycle.p_max)}
         print(name, rows[name], flush=True)
+    stored = json.loads(STORE.read_text(encoding="utf-8")) if STORE.exists() else {}
+    for name, earlier in stored.get(label, {}).get("cost", {}).items():
+        if name in rows and earlier["steps_per_cycle"] == rows[name]["steps_per_cycle"]:
+            rows[name]["seconds_per_cycle"] = min(rows[name]["seconds_per_cycle"],
+                                                  earlier["seconds_per_cycle"])
     _store(label, "cost", rows)
 
 
@@ -279,25 +286,104 @@ def _cell(measures: dict | None) -> str:
             f"{_pct(measures['peak'])}{dips_text}")
 
 
+FINDINGS = """\
+## Findings
+
+- Cause (``before``): the rows of the TR-BDF2 free flight (``auto``/``implicit``) were cubic
+  Hermite interpolants between step ends. Positions there were right to the tolerance,
+  velocities were not: the interpolant carries the step-end derivatives, whose
+  acceleration error is the step-end velocity error times the film's stiffness (10³–10⁶
+  per radian on a loaded film), and the squeeze pressure solved at the interpolated state
+  was off by up to 97 % in single rows and by up to 25 % at the cycle maximum (grooved,
+  two-land bearings: bearings 5, 9, 11). ``adaptive`` rows were SciPy's dense output,
+  with the same weakness in milder form (up to 5.8 %; Radau's collocation polynomial).
+- Fix (``after``): ``implicit`` ends a step on every output angle, so each row is an
+  accepted step end; ``adaptive`` keeps the dense output's positions and solves the row's
+  velocities from the equation of motion. Short film: worst row 97 % → 0.61 %
+  (``implicit``), 5.8 % → 0.12 % (``adaptive``); cycle maximum within 0.015 %; no dips.
+  With the old rows ``implicit`` never met the periodicity tolerance of 1e-7 here (40
+  cycles on every bearing: the interpolated rows differed from cycle to cycle); now
+  after 4–15 cycles on 10 of the 12 bearings and 3 with the Reynolds film.
+- Left: the Reynolds film (24 × 8) with ``implicit`` keeps single low-pressure rows off by
+  up to 8.7 % (bearing 2 at 285°, p_max 15 MPa of a 408 MPa peak: 0.3 % of the peak). The
+  row is an accepted step end whose velocity is 1.7e-2 c ω off: the step's error
+  estimate (0.36 of the tolerance) missed a non-smooth change of the cavitated film force;
+  the next step was cut to 0.002°. ``absolute_tolerance`` 1e-6 removes it (2.9× the steps).
+- Not this integrator: ``rk2``'s automatic step fails on every bearing (its first trial
+  cycle at 1° diverges towards the shell, where the damping measured is 10¹⁶ times the
+  stable limit, so it asks for a step of 1e-16°; exit, not a wrong number);
+  ``quasi_static`` fails its velocity solve on four of the six grooved bearings (and on
+  one Reynolds run); ``adaptive`` with the Reynolds film exceeds its budget of film
+  evaluations. ``quasi_static`` rows are the massless orbit's own (within 0.06 % of its
+  0.05° run); its 5.5 % (short) and 11 % (Reynolds) against the reference are the mass.
+"""
+"""Conclusions from the stored measurements, written into the report verbatim."""
+
+
 def write_table() -> None:
     """``benchmarks/pmax_reference.md`` from every label in the store."""
     store = json.loads(STORE.read_text(encoding="utf-8"))
     lines = ["# p_max against a converged reference", "",
              "Written by `python benchmarks/pmax_reference.py table` from "
-             "`benchmarks/pmax_reference.json` (method in the script's docstring).", "",
-             "Cells: largest relative p_max error over the cycle, "
-             "max_φ |p/p_ref − 1|, at its crank angle / error of the cycle's largest p_max; "
-             "'dips': single rows whose p_max falls below a tenth of both neighbours (beyond "
-             "the reference's own). `quasi_static` is massless, the reference has mass: its "
-             "error against its own refined run is listed below the table.", ""]
+             "`benchmarks/pmax_reference.json` (method in the script's docstring): "
+             "`before` is the code before every output row was a converged state, "
+             "`after` the code with it.", ""]
+    lines += _summary_table(store) + [FINDINGS]
+    lines += ["Cells below: largest relative p_max error over the cycle, "
+              "max_φ |p/p_ref − 1|, at its crank angle / error of the cycle's largest p_max; "
+              "'dips': single rows whose p_max falls below a tenth of both neighbours "
+              "(beyond the reference's own). `quasi_static` is massless, the reference has "
+              "mass: its error against its own refined run is listed below the table.", ""]
     for label, content in store.items():
-        if "bearings" not in content:
-            continue
-        lines += _bearing_table(label, content)
-    for label, content in store.items():
-        if "cost" in content:
-            lines += _cost_table(label, content)
+        if "bearings" in content:
+            lines += _bearing_table(label, content)
+    lines += _cost_table(store)
     REPORT.write_text("\n".join(lines) + "\n", encoding="utf-8")
+
+
+def _worst(content: dict) -> dict:
+    """(integrator, film) → (worst row error, worst cycle-max error, worst h_min / c,
+    dips, failed runs, runs) over the bearings."""
+    worst: dict = {}
+    for row in content["bearings"]["rows"]:
+        for name, measures in row["integrators"].items():
+            key = (name, row["film"])
+            best = worst.get(key, (0.0, 0.0, 0.0, 0, 0, 0))
+            if "error" in measures:
+                worst[key] = best[:4] + (best[4] + 1, best[5] + 1)
+                continue
+            worst[key] = (max(best[0], measures["max_relative"]),
+                          max(best[1], abs(measures["peak"])),
+                          max(best[2], measures["h_min"]), best[3] + measures["dips"],
+                          best[4], best[5] + 1)
+    return worst
+
+
+def _summary_table(store: dict) -> list[str]:
+    labels = [label for label, content in store.items() if "bearings" in content]
+    worst = {label: _worst(store[label]) for label in labels}
+    keys = sorted({key for label in labels for key in worst[label]})
+    arrow = " → ".join
+    lines = ["## Summary", "", "Worst over the bearings, " + arrow(labels) + ":", "",
+             "| integrator | film | largest p_max error over the cycle | error of the cycle's "
+             "largest p_max | largest h_min error / c | single-row dips | failed runs |",
+             "| --- | --- | --- | --- | --- | --- | --- |"]
+    for key in keys:
+        cells = [[], [], [], [], []]
+        for label in labels:
+            value = worst[label].get(key)
+            if value is None:
+                cells = [c + ["–"] for c in cells]
+                continue
+            relative, peak, h_min, dips_count, failed, runs = value
+            ok = failed < runs
+            cells[0].append(_pct(relative) if ok else "–")
+            cells[1].append(_pct(peak) if ok else "–")
+            cells[2].append(f"{h_min:.1e}" if ok else "–")
+            cells[3].append(str(dips_count))
+            cells[4].append(f"{failed}/{runs}")
+        lines.append(f"| {key[0]} | {key[1]} | " + " | ".join(arrow(c) for c in cells) + " |")
+    return lines + [""]
 
 
 def _bearing_table(label: str, content: dict) -> list[str]:
@@ -306,7 +392,6 @@ def _bearing_table(label: str, content: dict) -> list[str]:
              f"{bearings['count']} bearings, seed {bearings['seed']}; {content['machine']}.",
              "", "| bearing | film | reference p_max, h_min | " + " | ".join(INTEGRATORS)
              + " |", "| --- | --- | --- | " + " | ".join("---" for _ in INTEGRATORS) + " |"]
-    worst = {}
     notes = []
     for row in bearings["rows"]:
         ref = row["reference"]
@@ -316,12 +401,6 @@ def _bearing_table(label: str, content: dict) -> list[str]:
         for name in INTEGRATORS:
             measures = row["integrators"].get(name)
             cells.append(_cell(measures))
-            if measures and "error" not in measures:
-                key = (name, row["film"])
-                best = worst.get(key, (0.0, 0.0, 0.0, 0))
-                worst[key] = (max(best[0], measures["max_relative"]),
-                              max(best[1], abs(measures["peak"])),
-                              max(best[2], measures["h_min"]), best[3] + measures["dips"])
             if name == "quasi_static" and measures and "own_reference" in measures:
                 notes.append(f"{row['bearing']} ({row['film']}): quasi_static against "
                              f"its own 0.05° run: {_cell(measures['own_reference'])}")
@@ -331,27 +410,33 @@ def _bearing_table(label: str, content: dict) -> list[str]:
                          f"h_min {row['cross_check'].get('h_min', float('nan')):.1e} c")
         lines.append(f"| {row['bearing']} | {row['film']} | {ref_text} | "
                      + " | ".join(cells) + " |")
-    lines += ["", "Worst over the bearings (largest relative p_max error over the cycle / "
-              "largest |error of the cycle's p_max| / largest h_min error / dips):", "",
-              "| integrator | film | p_max(φ) | cycle max p_max | h_min / c | dips |",
-              "| --- | --- | --- | --- | --- | --- |"]
-    for (name, film), (relative, peak, h_min, count) in sorted(worst.items()):
-        lines.append(f"| {name} | {film} | {_pct(relative)} | {_pct(peak)} | {h_min:.1e} | "
-                     f"{count} |")
     lines += [""] + [f"- {note}" for note in notes] + [""]
     return lines
 
 
-def _cost_table(label: str, content: dict) -> list[str]:
-    lines = [f"## Shipped examples, {label}", "", content["machine"] + ".", "",
-             "| example | integrator | time per cycle | steps per cycle | p_max | h_min | "
-             "largest jump of p_max between rows | dips |",
+def _cost_table(store: dict) -> list[str]:
+    labels = [label for label, content in store.items() if "cost" in content]
+    if not labels:
+        return []
+    arrow = " → ".join
+    lines = ["## Shipped examples", "",
+             f"Each example with its own settings, {arrow(labels)}; time of one cycle from "
+             "the periodic state, the least of all repetitions (" + store[labels[0]]["machine"]
+             + "); p_max and h_min of the run; the largest change of p_max between two "
+             "neighbouring rows.", "",
+             "| example | integrator | steps per cycle | time per cycle | p_max | h_min | "
+             "largest jump between rows | dips |",
              "| --- | --- | --- | --- | --- | --- | --- | --- |"]
-    for name, row in content["cost"].items():
-        lines.append(f"| {name} | {row['integrator']} | {row['seconds_per_cycle'] * 1e3:.1f} ms"
-                     f" | {row['steps_per_cycle']} | {row['p_max_MPa']:.2f} MPa at "
-                     f"{row['p_max_deg']:.0f}° | {row['h_min_um']:.4f} µm | "
-                     f"{row['largest_p_max_jump_MPa']:.1f} MPa | {row['dips']} |")
+    for name in store[labels[0]]["cost"]:
+        rows = [store[label]["cost"][name] for label in labels]
+        lines.append(
+            f"| {name} | {rows[0]['integrator']} | "
+            + arrow(str(r["steps_per_cycle"]) for r in rows) + " | "
+            + arrow(f"{r['seconds_per_cycle'] * 1e3:.1f} ms" for r in rows) + " | "
+            + arrow(f"{r['p_max_MPa']:.2f} MPa at {r['p_max_deg']:.0f}°" for r in rows) + " | "
+            + arrow(f"{r['h_min_um']:.5f} µm" for r in rows) + " | "
+            + arrow(f"{r['largest_p_max_jump_MPa']:.1f} MPa" for r in rows) + " | "
+            + arrow(str(r["dips"]) for r in rows) + " |")
     return lines + [""]
 
 
