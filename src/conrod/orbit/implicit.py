@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from conrod.errors import CaseError, ConvergenceError
+from conrod.errors import CaseError, ConvergenceError, FilmThicknessError
 from conrod.film.base import FilmState
 from conrod.film.capabilities import HasFlightKernel, HasForceJacobian
 from conrod.orbit.adaptive import (
@@ -103,7 +103,7 @@ def implicit_cycle(problem: OrbitProblem, state: OrbitState, settings) -> CycleT
         phi_end = float(sol.t[-1])
         last = sol.status == 0
         mask = (phi_out >= phi) & ((phi_out <= phi_end) if last else (phi_out < phi_end))
-        record_rows(phases, sol, phi_out, mask, table, True)
+        record_rows(phases, sol, phi_out, mask, table, True, settings)
         if last:
             _fill_free(table, free_u, free_rows, problem)
             return CycleTrajectory.from_table(
@@ -141,9 +141,8 @@ class _FreeFlight:
             jacobian = None
             if problem.asperity is None and isinstance(problem.film, HasForceJacobian):
                 jacobian = functools.partial(_film_jacobian, problem, phases)
-            self.segment = specialise(
-                "python", lambda phi, u, params, data: phases.free_rhs(phi, u), jacobian,
-                compiled=False)
+            self.segment = specialise("python", functools.partial(_guarded_rhs, phases),
+                                      jacobian, compiled=False)
             self.params = ()
         self.data = (phases.angles, phases.table, float(problem.loads.cycle),
                      float(problem.viscosity), float(problem.clearance),
@@ -192,6 +191,17 @@ class _FreeFlight:
                 f"{math.hypot(u_new[0], u_new[1]):.4f}); {self.hint}",
                 where=f"crank angle {math.degrees(phi_new):.2f} deg")
         return status, phi_new, u_new, h, steps, next_out
+
+
+def _guarded_rhs(phases: Phases, phi, u, params, data) -> np.ndarray:
+    """du/dφ [-] of the free flight solved in Python; NaN where a Newton iterate or a
+    predicted stage lies beyond the shell (the film cannot be solved there), which the
+    step takes as a failed iteration and retries shorter (the compiled Reynolds force of
+    :mod:`conrod.film.reynolds_flight` gives NaN there too)."""
+    try:
+        return phases.free_rhs(phi, u)
+    except FilmThicknessError:
+        return np.full(4, np.nan)
 
 
 def _film_jacobian(problem: OrbitProblem, phases: Phases, phi, u, f0, params, data):
