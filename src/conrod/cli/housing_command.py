@@ -14,10 +14,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from conrod.cases.case import Case
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
 
@@ -37,6 +35,9 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))  # before any computation
+        import numpy as np
+
+        from conrod.cases.case import Case
         from conrod.housing.housing import Housing
         from conrod.output.registry import write_results
         from conrod.simulation.housing_study import MICRO_PER_KILO, housing_study

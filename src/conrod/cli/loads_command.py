@@ -8,14 +8,14 @@ Writes (atomically, only after every input check passed):
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from conrod.cases.case import Case
 from conrod.cli.app import exits_cleanly
-from conrod.io.result_folder import check_output_folder
-from conrod.loads.engine_loads import compute_engine_loads
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.cases.case import Case
 
 
 def register(app: typer.Typer) -> None:
@@ -33,7 +33,12 @@ def register(app: typer.Typer) -> None:
         ] = 1.0,
     ) -> None:
         """Engine loads on the big-end bearing: table, summary, polar and wear diagrams."""
+        from conrod.io.result_folder import check_output_folder
+
         check_output_folder(out, inputs=(case_file,))
+        from conrod.cases.case import Case
+        from conrod.loads.engine_loads import compute_engine_loads
+
         case = Case.from_toml(case_file)
         if case.load is not None:  # the table is the bearing load, as in `conrod run`
             _table_loads(case, out)

@@ -12,23 +12,18 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
-import numpy as np
 import typer
 
-from conrod.cases.base import range_error
-from conrod.cases.case import Case
 from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
 from conrod.errors import CaseError
 from conrod.io.interrupts import raise_if_interrupted
-from conrod.io.result_folder import check_output_folder
-from conrod.mechanism.regimes import SweepRun
-from conrod.mechanism.results import MechanismRun
-from conrod.mechanism.setup import MechanismCase, mechanism_case
-from conrod.mechanism.simulation import simulate
-from conrod.results.plausibility import check_mechanism
-from conrod.sweep.mechanism import parse_sweep_option, run_sweep
+
+if TYPE_CHECKING:  # pragma: no cover
+    import numpy as np
+
+    from conrod.mechanism.setup import MechanismCase
 
 SWEEP_LIMITS = {"speed": (0.0, 30000.0, "rpm"), "load": (0.0, 5.0, "-")}
 """Allowed (exclusive lower, inclusive upper) bounds of swept values and their unit."""
@@ -36,6 +31,11 @@ SWEEP_LIMITS = {"speed": (0.0, 30000.0, "rpm"), "load": (0.0, 5.0, "-")}
 
 def sweep_values(options: list[str], base: MechanismCase) -> tuple[np.ndarray, np.ndarray]:
     """Speeds [rpm] and load scales [-] from ``--sweep`` options (defaults: the case's)."""
+    import numpy as np
+
+    from conrod.cases.base import range_error
+    from conrod.sweep.mechanism import parse_sweep_option
+
     values = {"speed": np.array([base.speed_rpm]), "load": np.array([base.load_scale])}
     for option in options:
         try:
@@ -68,7 +68,17 @@ def register(app: typer.Typer) -> None:
             "--accept-warnings", help=ACCEPT_WARNINGS_HELP)] = False,
     ) -> None:
         """Slider-crank with clearances in both rod bearings: gaps, forces, impacts ([D3])."""
+        from conrod.io.result_folder import check_output_folder
+
         check_output_folder(out, inputs=(case_file,))
+        from conrod.cases.case import Case
+        from conrod.mechanism.regimes import SweepRun
+        from conrod.mechanism.results import MechanismRun
+        from conrod.mechanism.setup import mechanism_case
+        from conrod.mechanism.simulation import simulate
+        from conrod.results.plausibility import check_mechanism
+        from conrod.sweep.mechanism import run_sweep
+
         case = Case.from_toml(case_file)
         base = mechanism_case(case)
         if sweep:

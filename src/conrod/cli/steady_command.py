@@ -18,12 +18,8 @@ from enum import StrEnum
 
 import typer
 
-from conrod.cases.bearing import MAX_RELATIVE_CLEARANCE
-from conrod.cases.solver import MAX_GRID_NODES
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
-from conrod.film.base import BearingGeometry
-from conrod.film.steady import raimondi_boyd_point, solve_for_load
 
 
 class Model(StrEnum):
@@ -47,6 +43,8 @@ FRICTION_OPTION = typer.Option(Friction.full_film, help="Friction convention")
 
 def parse_grid(text: str | None) -> tuple[int, int] | None:
     """'144x32' → (144, 32) intervals; None stays None."""
+    from conrod.cases.solver import MAX_GRID_NODES
+
     if text is None:
         return None
     try:
@@ -102,6 +100,10 @@ def register(app: typer.Typer) -> None:
         as_json: bool = typer.Option(False, "--json", help="Print JSON"),
 ) -> None:
         """Steady bearing characteristics under Raimondi & Boyd's full-bearing conditions."""
+        from conrod.cases.bearing import MAX_RELATIVE_CLEARANCE
+        from conrod.film.base import BearingGeometry
+        from conrod.film.steady import raimondi_boyd_point, solve_for_load
+
         cells = parse_grid(grid)
         if eccentricity is not None:
             if length_to_diameter is None:

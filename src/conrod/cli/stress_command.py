@@ -9,14 +9,15 @@ and ``von_mises_<scheme>_<angle>deg.png`` for every angle.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
-import numpy as np
 import typer
 
-from conrod.cases.case import Case
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.cases.case import Case
 
 
 def parse_angles(text: str | None, case: Case) -> list[float]:
@@ -34,6 +35,8 @@ def parse_angles(text: str | None, case: Case) -> list[float]:
         return angles
     if case.housing.stress_angles:
         return list(case.housing.stress_angles)
+    import numpy as np
+
     from conrod.loads.engine_loads import compute_engine_loads
 
     loads = compute_engine_loads(case)
@@ -56,6 +59,7 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))  # before any computation
+        from conrod.cases.case import Case
         from conrod.housing.housing import Housing
         from conrod.output.registry import write_results
         from conrod.simulation.stress_study import stress_study
