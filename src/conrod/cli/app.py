@@ -20,10 +20,16 @@ import warnings
 from collections.abc import Callable, Sequence
 from typing import Annotated, Any, TypeVar
 
-import typer
-
 from conrod.errors import CaseError, ConvergenceError
-from conrod.io.interrupts import EXIT_INTERRUPTED, deferred_interrupts
+from conrod.io.interrupts import (
+    EXIT_INTERRUPTED,
+    INTERRUPTED_MESSAGE,
+    deferred_interrupts,
+    interrupts_stop_at_once,
+)
+
+with interrupts_stop_at_once():  # Ctrl-C while the command line loads: one line, exit 130
+    import typer
 
 EXIT_OK, EXIT_DEFECT, EXIT_BAD_INPUT, EXIT_NOT_CONVERGED = 0, 1, 2, 3
 EXIT_WARNINGS, EXIT_WRITE_FAILED = 4, 5
@@ -112,7 +118,7 @@ def exits_cleanly(command: F) -> F:
             typer.echo(f"not converged: {error}", err=True)
             raise typer.Exit(code=EXIT_NOT_CONVERGED) from None
         except KeyboardInterrupt:
-            typer.echo("interrupted (nothing written)", err=True)
+            typer.echo(INTERRUPTED_MESSAGE, err=True)
             raise typer.Exit(code=EXIT_INTERRUPTED) from None
         except OSError as error:
             where = f": {error.filename}" if error.filename else ""
@@ -152,7 +158,8 @@ def _one_line_warning(message: Any, category: Any, *args: Any, **kwargs: Any) ->
 
 def main() -> None:
     """Entry point of the ``conrod`` console script."""
-    encoding_safe_streams()
-    warnings.formatwarning = _one_line_warning
-    _register_commands()
-    app()
+    with interrupts_stop_at_once():  # a command defers Ctrl-C once it computes
+        encoding_safe_streams()
+        warnings.formatwarning = _one_line_warning
+        _register_commands()
+        app()

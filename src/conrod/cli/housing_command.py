@@ -18,6 +18,7 @@ import typer
 
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
+from conrod.io.interrupts import interrupts_stop_at_once
 
 
 def register(app: typer.Typer) -> None:
@@ -35,14 +36,15 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))  # before any computation
-        import numpy as np
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            import numpy as np
 
-        from conrod.cases.case import Case
-        from conrod.housing.housing import Housing
-        from conrod.output.registry import write_results
-        from conrod.simulation.housing_study import MICRO_PER_KILO, housing_study
+            from conrod.cases.case import Case
+            from conrod.housing.housing import Housing
+            from conrod.output.registry import write_results
+            from conrod.simulation.housing_study import MICRO_PER_KILO, housing_study
 
-        case = Case.from_toml(case_file)
+            case = Case.from_toml(case_file)
         case.require("housing", "bearing")
         if case.housing.model == "rigid":
             raise CaseError("housing.model = 'rigid': nothing to compute (allowed: builtin, "

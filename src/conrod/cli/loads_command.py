@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from conrod.cli.app import exits_cleanly
+from conrod.io.interrupts import interrupts_stop_at_once
 
 if TYPE_CHECKING:  # pragma: no cover
     from conrod.cases.case import Case
@@ -36,10 +37,11 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))
-        from conrod.cases.case import Case
-        from conrod.loads.engine_loads import compute_engine_loads
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            from conrod.cases.case import Case
+            from conrod.loads.engine_loads import compute_engine_loads
 
-        case = Case.from_toml(case_file)
+            case = Case.from_toml(case_file)
         if case.load is not None:  # the table is the bearing load, as in `conrod run`
             _table_loads(case, out)
             return

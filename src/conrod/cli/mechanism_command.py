@@ -18,7 +18,7 @@ import typer
 
 from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
 from conrod.errors import CaseError
-from conrod.io.interrupts import raise_if_interrupted
+from conrod.io.interrupts import interrupts_stop_at_once, raise_if_interrupted
 
 if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
@@ -71,15 +71,16 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))
-        from conrod.cases.case import Case
-        from conrod.mechanism.regimes import SweepRun
-        from conrod.mechanism.results import MechanismRun
-        from conrod.mechanism.setup import mechanism_case
-        from conrod.mechanism.simulation import simulate
-        from conrod.results.plausibility import check_mechanism
-        from conrod.sweep.mechanism import run_sweep
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            from conrod.cases.case import Case
+            from conrod.mechanism.regimes import SweepRun
+            from conrod.mechanism.results import MechanismRun
+            from conrod.mechanism.setup import mechanism_case
+            from conrod.mechanism.simulation import simulate
+            from conrod.results.plausibility import check_mechanism
+            from conrod.sweep.mechanism import run_sweep
 
-        case = Case.from_toml(case_file)
+            case = Case.from_toml(case_file)
         base = mechanism_case(case)
         if sweep:
             speeds, loads = sweep_values(sweep, base)

@@ -20,6 +20,7 @@ import typer
 
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
+from conrod.io.interrupts import interrupts_stop_at_once
 
 
 class Model(StrEnum):
@@ -100,9 +101,10 @@ def register(app: typer.Typer) -> None:
         as_json: bool = typer.Option(False, "--json", help="Print JSON"),
 ) -> None:
         """Steady bearing characteristics under Raimondi & Boyd's full-bearing conditions."""
-        from conrod.cases.bearing import MAX_RELATIVE_CLEARANCE
-        from conrod.film.base import BearingGeometry
-        from conrod.film.steady import raimondi_boyd_point, solve_for_load
+        with interrupts_stop_at_once():  # starting: nothing computed yet
+            from conrod.cases.bearing import MAX_RELATIVE_CLEARANCE
+            from conrod.film.base import BearingGeometry
+            from conrod.film.steady import raimondi_boyd_point, solve_for_load
 
         cells = parse_grid(grid)
         if eccentricity is not None:

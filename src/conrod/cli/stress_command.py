@@ -15,6 +15,7 @@ import typer
 
 from conrod.cli.app import exits_cleanly
 from conrod.errors import CaseError
+from conrod.io.interrupts import interrupts_stop_at_once
 
 if TYPE_CHECKING:  # pragma: no cover
     from conrod.cases.case import Case
@@ -59,12 +60,13 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))  # before any computation
-        from conrod.cases.case import Case
-        from conrod.housing.housing import Housing
-        from conrod.output.registry import write_results
-        from conrod.simulation.stress_study import stress_study
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            from conrod.cases.case import Case
+            from conrod.housing.housing import Housing
+            from conrod.output.registry import write_results
+            from conrod.simulation.stress_study import stress_study
 
-        case = Case.from_toml(case_file)
+            case = Case.from_toml(case_file)
         case.require("stress", "engine", "bearing", "lubricant")
         if case.housing.model not in ("builtin", "mesh"):
             raise CaseError(f"housing.model = {case.housing.model!r}: stresses need a finite-"
