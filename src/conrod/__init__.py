@@ -17,6 +17,9 @@ import os
 from typing import TYPE_CHECKING, Any
 
 from conrod._version import __version__
+from conrod.io.numba_cache import tolerate_unreadable_cache
+
+tolerate_unreadable_cache()  # an unreadable cached kernel is compiled again, not an error
 
 _PUBLIC = {
     "BearingGeometry": "conrod.film.base",
