@@ -12,12 +12,13 @@ traceback; results are written as a whole or not at all (:mod:`conrod.io.result_
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import importlib
 import os
 import sys
 import warnings
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Annotated, Any, TypeVar
 
 from conrod.errors import CaseError, ConvergenceError
@@ -97,6 +98,34 @@ def finish(warnings: Sequence[str], accept_warnings: bool, converged: bool = Tru
         typer.echo(f"finished with {len(warnings)} warning(s) (exit 4; --accept-warnings "
                    "to exit 0)", err=True)
         raise typer.Exit(code=EXIT_WARNINGS)
+
+
+@contextlib.contextmanager
+def printing_after_results(out: str | os.PathLike[str]) -> Iterator[None]:
+    """Print on stdout what a command says once its results are written to ``out``.
+
+    A standard output that fails then (the reader of a pipe stopped reading, a full disk)
+    is no failed result: the exit code stays that of the results. A closed pipe is
+    ignored (its reader wanted no more); another failure is one warning line on stderr.
+    """
+    try:
+        yield
+        sys.stdout.flush()
+    except OSError as error:
+        discard_stdout()
+        if not isinstance(error, BrokenPipeError):
+            reason = error.strerror or str(error) or type(error).__name__
+            typer.echo(f"warning: standard output could not be written ({reason}); the "
+                       f"results are complete in {out}", err=True)
+
+
+def discard_stdout() -> None:
+    """Send what is left of stdout to the null device, so that no later flush (at the
+    latest when the interpreter exits) fails again on a broken stdout."""
+    with contextlib.suppress(OSError, ValueError):
+        null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(null, sys.stdout.fileno())
+        os.close(null)
 
 
 ACCEPT_WARNINGS_HELP = ("Exit 0 although the written results carry warnings (default: exit 4) "

@@ -16,7 +16,7 @@ from typing import Annotated
 
 import typer
 
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import exits_cleanly, printing_after_results
 from conrod.errors import CaseError
 from conrod.io.interrupts import interrupts_stop_at_once
 
@@ -52,6 +52,8 @@ def register(app: typer.Typer) -> None:
         housing = Housing.from_case(case, use_cache=cache)
         write_results(housing_study(housing, case), out)
         diagonal = np.diag(housing.corrected_compliance) * MICRO_PER_KILO
-        typer.echo(f"{case.housing.model} housing, {len(housing.angles)} film nodes, "
-                   f"corrected compliance diagonal {diagonal.min():.2f}..{diagonal.max():.2f} "
-                   f"um/kN ({housing.info.get('seconds', 0.0):.2f} s) -> {out}")
+        with printing_after_results(out):
+            typer.echo(f"{case.housing.model} housing, {len(housing.angles)} film nodes, "
+                       f"corrected compliance diagonal {diagonal.min():.2f}.."
+                       f"{diagonal.max():.2f} um/kN ({housing.info.get('seconds', 0.0):.2f} s) "
+                       f"-> {out}")

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import exits_cleanly, printing_after_results
 from conrod.io.interrupts import interrupts_stop_at_once
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -49,12 +49,11 @@ def register(app: typer.Typer) -> None:
         loads = compute_engine_loads(case, step_deg=step)
         _write(loads, out)
         summary = loads.summary()
-        typer.echo(
-            f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
-            f"{summary['peak_load_crank_angle_deg']:.1f} deg, "
-            f"mean {summary['mean_load_N'] / 1e3:.2f} kN, "
-            f"oil hole at {summary['oil_hole_angle_deg']:.1f} deg -> {out}"
-        )
+        with printing_after_results(out):
+            typer.echo(f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
+                       f"{summary['peak_load_crank_angle_deg']:.1f} deg, "
+                       f"mean {summary['mean_load_N'] / 1e3:.2f} kN, "
+                       f"oil hole at {summary['oil_hole_angle_deg']:.1f} deg -> {out}")
 
 
 def _write(loads, out: Path) -> None:
@@ -71,6 +70,7 @@ def _table_loads(case: Case, out: Path) -> None:
     loads = load_cycle_from_table(case.load, case.resolve(case.load.table))
     _write(loads, out)
     summary = table_load_summary(loads)
-    typer.echo(f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
-               f"{summary['peak_load_crank_angle_deg']:.1f} deg, mean "
-               f"{summary['mean_load_N'] / 1e3:.2f} kN (load table, bearing frame) -> {out}")
+    with printing_after_results(out):
+        typer.echo(f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
+                   f"{summary['peak_load_crank_angle_deg']:.1f} deg, mean "
+                   f"{summary['mean_load_N'] / 1e3:.2f} kN (load table, bearing frame) -> {out}")

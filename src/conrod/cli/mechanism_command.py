@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
+from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish, printing_after_results
 from conrod.errors import CaseError
 from conrod.io.interrupts import interrupts_stop_at_once, raise_if_interrupted
 
@@ -91,18 +91,20 @@ def register(app: typer.Typer) -> None:
             finished = SweepRun(result, time.perf_counter() - started)
             _write(finished, out)
             best = result.best()
-            typer.echo(f"most informative regime: {best['speed_rpm']:g} rpm, load "
-                       f"{best['load_scale']:g} (κ = {best['impact_velocity_ratio']:.3g}) -> {out}")
+            with printing_after_results(out):
+                typer.echo(f"most informative regime: {best['speed_rpm']:g} rpm, load "
+                           f"{best['load_scale']:g} (κ = {best['impact_velocity_ratio']:.3g}) "
+                           f"-> {out}")
             return
         results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)
         run = MechanismRun(results, base.speed_rpm, base.load_scale,
                            tuple(check_mechanism(results, base.mechanism)))
         summary = run.summary()
         _write(run, out)
-        typer.echo(
-            f"{summary['impacts_per_cycle']} impacts/cycle; max impact velocity big end "
-            f"{summary['max_impact_velocity_big_end_m_s']:.3g} m/s, small end "
-            f"{summary['max_impact_velocity_small_end_m_s']:.3g} m/s -> {out}")
+        with printing_after_results(out):
+            typer.echo(f"{summary['impacts_per_cycle']} impacts/cycle; max impact velocity big "
+                       f"end {summary['max_impact_velocity_big_end_m_s']:.3g} m/s, small end "
+                       f"{summary['max_impact_velocity_small_end_m_s']:.3g} m/s -> {out}")
         finish(summary["warnings"], accept_warnings)
 
 

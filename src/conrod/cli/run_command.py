@@ -10,7 +10,7 @@ from typing import Annotated, Any
 
 import typer
 
-from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
+from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish, printing_after_results
 from conrod.io.interrupts import interrupts_stop_at_once, raise_if_interrupted
 from conrod.registry import FILM_NAMES, INTEGRATOR_NAMES
 
@@ -155,7 +155,8 @@ def register(app: typer.Typer) -> None:
 
             results = with_step_check(results, simulation)
         write_results(results, out, figures=figures)
-        print_headline(results, out)
+        with printing_after_results(out):
+            print_headline(results, out)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
 
 

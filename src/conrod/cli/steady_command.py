@@ -14,11 +14,12 @@ from __future__ import annotations
 
 import json
 import math
+import sys
 from enum import StrEnum
 
 import typer
 
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import EXIT_WRITE_FAILED, discard_stdout, exits_cleanly
 from conrod.errors import CaseError
 from conrod.io.interrupts import interrupts_stop_at_once
 
@@ -73,12 +74,21 @@ def unit_of(key: str) -> str:
 
 
 def _print(values: dict, as_json: bool) -> None:
-    if as_json:
-        typer.echo(json.dumps(values, indent=2))
-        return
-    for key, value in values.items():
-        shown = f"{value:.6g}" if isinstance(value, float) else str(value)
-        typer.echo(f"{key:32s} {shown}{unit_of(key)}")
+    """The results on stdout: here they are the command's result, so a stdout that fails
+    (a closed pipe, a full disk) is results not written (exit 5)."""
+    try:
+        if as_json:
+            typer.echo(json.dumps(values, indent=2))
+        else:
+            for key, value in values.items():
+                shown = f"{value:.6g}" if isinstance(value, float) else str(value)
+                typer.echo(f"{key:32s} {shown}{unit_of(key)}")
+        sys.stdout.flush()
+    except OSError as error:
+        discard_stdout()
+        reason = error.strerror or str(error) or type(error).__name__
+        typer.echo(f"error: cannot write the results to standard output ({reason})", err=True)
+        raise typer.Exit(code=EXIT_WRITE_FAILED) from None
 
 
 def register(app: typer.Typer) -> None:

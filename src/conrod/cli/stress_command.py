@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import exits_cleanly, printing_after_results
 from conrod.errors import CaseError
 from conrod.io.interrupts import interrupts_stop_at_once
 
@@ -75,8 +75,10 @@ def register(app: typer.Typer) -> None:
         housing = Housing.from_case(case)
         results = stress_study(case, housing, crank_angles)
         write_results(results, out)
-        typer.echo(f"rod loaded by the {results.pressure_source}")
-        for angle, comparison in results.schemes.items():
-            typer.echo(f"{angle:g} deg: max von Mises {comparison['pressure'].maximum / 1e6:.0f} "
-                       f"MPa (pressure) vs {comparison['cosine'].maximum / 1e6:.0f} MPa (cosine)")
-        typer.echo(f"-> {out}")
+        with printing_after_results(out):
+            typer.echo(f"rod loaded by the {results.pressure_source}")
+            for angle, comparison in results.schemes.items():
+                typer.echo(f"{angle:g} deg: max von Mises "
+                           f"{comparison['pressure'].maximum / 1e6:.0f} MPa (pressure) vs "
+                           f"{comparison['cosine'].maximum / 1e6:.0f} MPa (cosine)")
+            typer.echo(f"-> {out}")
