@@ -9,6 +9,9 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
+import pytest
+
 from hardening_helpers import cheap_table_run, mutated, write_case
 
 SRC = Path(__file__).resolve().parents[1] / "src"
@@ -54,3 +57,59 @@ def test_a_truncated_numba_cache_file_is_discarded_and_compiled_again(tmp_path):
 def _strip_time(path: Path) -> list[str]:
     return [line for line in path.read_text(encoding="utf-8").splitlines()
             if "wall_time_s" not in line]
+
+
+def _table(cache_dir):
+    from conrod.film.base import BearingGeometry
+    from conrod.film.short_bearing import ShortBearingFilm
+    from conrod.film.table import TabulatedFilm
+
+    geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6)
+    return TabulatedFilm(ShortBearingFilm(geometry), n_eps=5, n_direction=8,
+                         cache_dir=cache_dir)
+
+
+@pytest.mark.parametrize("place", ["a file", "below a file", "/proc"])
+def test_an_unusable_table_cache_folder_is_skipped_with_one_warning(tmp_path, monkeypatch,
+                                                                    place):
+    from conrod.errors import CacheWarning
+    from conrod.film import table
+
+    monkeypatch.setattr(table, "UNUSABLE_FOLDERS", set())
+    monkeypatch.setattr(table, "KEPT_IN_MEMORY", {})
+    (tmp_path / "taken").write_text("not a folder")
+    folder = {"a file": tmp_path / "taken", "below a file": tmp_path / "taken" / "tables",
+              "/proc": Path("/proc/conrod-tables")}[place]
+    reference = _table(tmp_path / "good")
+    with pytest.warns(CacheWarning) as caught:
+        film = _table(folder)
+        again = _table(folder)  # the same process: kept in memory, no second warning
+    assert [str(w.message) for w in caught] == [
+        f"film table cache folder {str(folder)!r} cannot be used "
+        f"({_reason(folder)}); going on without it (tables built in this process are kept "
+        "in memory)"]
+    assert not film.loaded_from_cache and again.tables is film.tables
+    for name, values in reference.tables.items():
+        np.testing.assert_array_equal(film.tables[name], values)
+
+
+def _reason(folder: Path) -> str:
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        return error.strerror
+    raise AssertionError(f"{folder} is usable")
+
+
+def test_a_run_whose_table_cache_folder_is_a_file_exits_0_with_one_warning(tmp_path):
+    home = tmp_path / "home"
+    home.mkdir()
+    (home / ".cache").write_text("a file where the cache folder would go")
+    case = write_case(tmp_path, mutated(mutated(cheap_table_run(), ("solver", "film"), "table"),
+                                        ("solver", "max_cycles"), 6))
+    done = _run(case, tmp_path / "out", HOME=str(home))
+    assert done.returncode == 0, done.stderr
+    assert _warnings(done.stderr) == [
+        f"warning: film table cache folder '{home}/.cache/conrod/tables' cannot be used (Not "
+        "a directory); going on without it (tables built in this process are kept in memory)"]
+    assert (tmp_path / "out" / "manifest.json").is_file()

@@ -17,10 +17,14 @@ Tables are stored as ``<sha256>.npz`` in ``cache_dir`` (default ``~/.cache/conro
 the key hashing the geometry, the base model and its grid, and the table grid. Each file
 stores a SHA-256 checksum of its tables; a file that is unreadable, truncated, of the wrong
 shape, non-finite or fails the checksum is rebuilt with a :class:`~conrod.errors.CacheWarning`.
+A cache folder that cannot be used (not creatable, not writable, a file in its place, no
+home folder) is skipped with one :class:`~conrod.errors.CacheWarning`: the table is built
+for this run only.
 """
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import hashlib
 import json
@@ -57,11 +61,16 @@ from conrod.io.atomic import atomic_path
 
 TABLE_FORMAT = 4
 """Bumped whenever the stored content changes meaning (part of the cache key) [-]."""
-DEFAULT_CACHE_DIR = Path.home() / ".cache" / "conrod" / "tables"
+DEFAULT_CACHE_DIR = Path("~") / ".cache" / "conrod" / "tables"
 QUANTITIES = ("log_magnitude", "turning", "side_flow", "supply_flow", "max_pressure",
               "peak_cos", "peak_sin", "cavitated")
 PER_SPEED = ("side_flow", "supply_flow", "max_pressure")
 """Tabulated per unit squeeze speed (scale with |v_s|); the rest are direction-only."""
+UNUSABLE_FOLDERS: set[str] = set()
+"""Cache folders found unusable in this process (each warned about once)."""
+KEPT_IN_MEMORY: dict[str, dict[str, np.ndarray]] = {}
+"""Tables built in this process whose cache folder was unusable, by cache key: a film built
+again in the same run (a rigid companion, a second stage) does not rebuild them."""
 REFERENCE_VISCOSITY = 0.01
 """Viscosity of the table solves [Pa s] (results are scaled out)."""
 REFERENCE_RATE = 100.0
@@ -166,20 +175,37 @@ class TabulatedFilm:
         return folder.expanduser() / f"{self.cache_key()}.npz"
 
     def _load_or_build(self) -> dict[str, np.ndarray]:
-        path = self.cache_path()
-        if self.use_cache and path.exists():
-            tables = read_cached_tables(path, (self.n_eps, self.n_direction))
-            if tables is not None:
-                self.loaded_from_cache = True
-                return tables
-        start = time.perf_counter()
-        tables = build_squeeze_tables(self.base, self.eccentricities(), self.directions())
-        self.build_seconds = time.perf_counter() - start
-        if self.use_cache:
-            save: Any = np.savez  # numpy's stub types the keyword arrays as allow_pickle
+        if not self.use_cache:
+            return self._build()
+        key = self.cache_key()
+        if key in KEPT_IN_MEMORY:  # built earlier in this process; its folder is unusable
+            return KEPT_IN_MEMORY[key]
+        try:
+            path = self.cache_path()
+            tables = (read_cached_tables(path, (self.n_eps, self.n_direction))
+                      if path.exists() else None)
+        except (OSError, RuntimeError) as error:  # RuntimeError: no home folder
+            warn_cache_unusable(self.cache_dir, error)
+            KEPT_IN_MEMORY[key] = self._build()
+            return KEPT_IN_MEMORY[key]
+        if tables is not None:
+            self.loaded_from_cache = True
+            return tables
+        tables = self._build()
+        save: Any = np.savez  # numpy's stub types the keyword arrays as allow_pickle
+        try:
             with atomic_path(path) as tmp:
                 save(tmp, checksum=np.frombuffer(tables_checksum(tables), dtype=np.uint8),
                      **tables)
+        except OSError as error:
+            warn_cache_unusable(self.cache_dir, error)
+            KEPT_IN_MEMORY[key] = tables
+        return tables
+
+    def _build(self) -> dict[str, np.ndarray]:
+        start = time.perf_counter()
+        tables = build_squeeze_tables(self.base, self.eccentricities(), self.directions())
+        self.build_seconds = time.perf_counter() - start
         return tables
 
     def directions(self) -> np.ndarray:
@@ -303,28 +329,50 @@ def tables_checksum(tables: dict[str, np.ndarray]) -> bytes:
     return digest.digest()
 
 
+def warn_cache_unusable(cache_dir: str | Path | None, error: BaseException) -> None:
+    """A :class:`CacheWarning`, once per folder and process: the table cache folder cannot
+    be used; the run goes on, its tables kept in memory (:data:`KEPT_IN_MEMORY`)."""
+    folder = Path(cache_dir) if cache_dir is not None else DEFAULT_CACHE_DIR
+    with contextlib.suppress(RuntimeError):
+        folder = folder.expanduser()
+    if str(folder) in UNUSABLE_FOLDERS:
+        return
+    UNUSABLE_FOLDERS.add(str(folder))
+    reason = getattr(error, "strerror", None) or str(error) or type(error).__name__
+    warnings.warn(f"film table cache folder {str(folder)!r} cannot be used ({reason}); "
+                  "going on without it (tables built in this process are kept in memory)",
+                  CacheWarning, stacklevel=4)
+
+
 def read_cached_tables(path: Path, shape: tuple[int, int]) -> dict[str, np.ndarray] | None:
     """Tables stored at ``path`` if intact: readable, every quantity of ``shape``, finite,
     matching the stored checksum. Otherwise None, with a :class:`CacheWarning` (the caller
-    rebuilds and overwrites the file)."""
+    rebuilds and overwrites the file). A file that cannot be opened raises ``OSError``
+    (the folder cannot be used)."""
+    with open(path, "rb") as handle:
+        tables, reason = _intact_tables(handle, shape)
+    if reason:
+        warnings.warn(f"film table cache {str(path)!r} is corrupt ({reason}); rebuilding it",
+                      CacheWarning, stacklevel=3)
+        return None
+    return tables
+
+
+def _intact_tables(handle: Any, shape: tuple[int, int]) -> tuple[dict[str, np.ndarray], str]:
+    """(tables, "") when the stored tables are intact, else ({}, what is wrong)."""
     try:
-        with open(path, "rb") as handle, np.load(handle, allow_pickle=False) as stored:
+        with np.load(handle, allow_pickle=False) as stored:
             tables = {q: np.array(stored[q], dtype=np.float64) for q in QUANTITIES}
             checksum = bytes(np.asarray(stored["checksum"], dtype=np.uint8))
     except Exception as error:  # truncated, garbage, empty, old format: all mean rebuild
-        reason = f"unreadable ({type(error).__name__})"
-    else:
-        if any(values.shape != shape for values in tables.values()):
-            reason = "wrong table shape"
-        elif not all(np.all(np.isfinite(values)) for values in tables.values()):
-            reason = "non-finite values"
-        elif checksum != tables_checksum(tables):
-            reason = "checksum mismatch"
-        else:
-            return tables
-    warnings.warn(f"film table cache {str(path)!r} is corrupt ({reason}); rebuilding it",
-                  CacheWarning, stacklevel=3)
-    return None
+        return {}, f"unreadable ({type(error).__name__})"
+    if any(values.shape != shape for values in tables.values()):
+        return {}, "wrong table shape"
+    if not all(np.all(np.isfinite(values)) for values in tables.values()):
+        return {}, "non-finite values"
+    if checksum != tables_checksum(tables):
+        return {}, "checksum mismatch"
+    return tables, ""
 
 
 def random_state(rng: np.random.Generator, clearance: float, eps_max: float) -> FilmState:
