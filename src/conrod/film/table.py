@@ -17,9 +17,8 @@ Tables are stored as ``<sha256>.npz`` in ``cache_dir`` (default ``~/.cache/conro
 the key hashing the geometry, the base model and its grid, and the table grid. Each file
 stores a SHA-256 checksum of its tables; a file that is unreadable, truncated, of the wrong
 shape, non-finite or fails the checksum is rebuilt with a :class:`~conrod.errors.CacheWarning`.
-A cache folder that cannot be used (not creatable, not writable, a file in its place, no
-home folder) is skipped with one :class:`~conrod.errors.CacheWarning`: the table is built
-for this run only.
+A cache folder that cannot be used (a file in its place, not writable, no home folder) is
+skipped with one :class:`~conrod.errors.CacheWarning`; the tables are kept in memory.
 """
 
 from __future__ import annotations
@@ -38,7 +37,7 @@ from typing import Any
 import numba as nb
 import numpy as np
 
-from conrod.errors import CacheWarning, CaseError
+from conrod.errors import CacheWarning, CaseError, ConvergenceError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 from conrod.film.capabilities import (
     CompiledKernel,
@@ -69,8 +68,7 @@ PER_SPEED = ("side_flow", "supply_flow", "max_pressure")
 UNUSABLE_FOLDERS: set[str] = set()
 """Cache folders found unusable in this process (each warned about once)."""
 KEPT_IN_MEMORY: dict[str, dict[str, np.ndarray]] = {}
-"""Tables built in this process whose cache folder was unusable, by cache key: a film built
-again in the same run (a rigid companion, a second stage) does not rebuild them."""
+"""Tables built in this process whose cache folder was unusable, by cache key."""
 REFERENCE_VISCOSITY = 0.01
 """Viscosity of the table solves [Pa s] (results are scaled out)."""
 REFERENCE_RATE = 100.0
@@ -260,8 +258,14 @@ class TabulatedFilm:
         eps, cos_psi, sin_psi, v_r, v_t = squeeze_velocity(
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             state.journal_speed + state.shell_speed, c)
+        if eps >= 1.0:
+            raise self.beyond_range(eps, "the journal touches the shell")
         values = self._interpolate(eps, v_r, v_t)
         mu = state.viscosity
+        if eps > self.eccentricity_max and not (values["max_pressure"] >= 0.0 and all(
+                math.isfinite(value) for value in values.values())):
+            raise self.beyond_range(eps, "the extrapolated film is not physical (p_max = "
+                                    f"{mu * values['max_pressure']:.3g} Pa)")
         f_r, f_t = (mu * self.force_scale * values[k] for k in ("radial", "tangential"))
         eps_c = min(eps, 1.0 - 1e-9)
         couette = (2.0 * math.pi * mu * g.radius**3 * g.width
@@ -281,6 +285,14 @@ class TabulatedFilm:
             friction_power=abs((wedge - couette) * sliding),
             extra={"eccentricity_ratio": eps},
 )
+
+    def beyond_range(self, eps: float, why: str) -> ConvergenceError:
+        """The error of a state past the last eccentricity node (``why`` it is unusable)."""
+        gap = self.geometry.radial_clearance * (1.0 - eps)
+        return ConvergenceError(
+            f"journal eccentricity ratio {eps:.6g} (h_min = {gap:.3g} m) is beyond the table's "
+            f"eccentricity range (<= {self.eccentricity_max:g}), where {why}: the film of this "
+            "table cannot carry the load there")
 
     def _interpolate(self, eps: float, v_r: float, v_t: float) -> dict[str, float]:
         """Dimensionless force (radial, tangential) × |v_s| and the other quantities."""
