@@ -39,7 +39,9 @@ def register(app: typer.Typer) -> None:
         check_output_folder(out, inputs=(case_file,))
         with interrupts_stop_at_once():  # starting: nothing computed or written yet
             from conrod.cases.case import Case
-            from conrod.loads.engine_loads import compute_engine_loads
+            from conrod.loads.engine_loads import check_step, compute_engine_loads
+
+            check_step(step, "--step")
 
             case = Case.from_toml(case_file)
         if case.load is not None:  # the table is the bearing load, as in `conrod run`

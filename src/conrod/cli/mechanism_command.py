@@ -25,8 +25,9 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from conrod.mechanism.setup import MechanismCase
 
-SWEEP_LIMITS = {"speed": (0.0, 30000.0, "rpm"), "load": (0.0, 5.0, "-")}
-"""Allowed (exclusive lower, inclusive upper) bounds of swept values and their unit."""
+SWEEP_LIMITS = {"speed": (">=", 1.0, 30000.0, "rpm"), "load": (">", 0.0, 5.0, "-")}
+"""Allowed lower bound (inclusive or not), inclusive upper bound and unit of swept values
+(speeds as ``engine.speed``)."""
 
 
 def sweep_values(options: list[str], base: MechanismCase) -> tuple[np.ndarray, np.ndarray]:
@@ -42,10 +43,12 @@ def sweep_values(options: list[str], base: MechanismCase) -> tuple[np.ndarray, n
             name, numbers = parse_sweep_option(option)
         except ValueError as error:
             raise CaseError(str(error)) from None
-        low, high, unit = SWEEP_LIMITS[name]
-        bad = numbers[(numbers <= low) | (numbers > high)]
+        relation, low, high, unit = SWEEP_LIMITS[name]
+        too_low = numbers < low if relation == ">=" else numbers <= low
+        bad = numbers[too_low | (numbers > high)]
         if bad.size:
-            raise range_error(f"--sweep {name}", float(bad[0]), f"> {low:g} and <= {high:g}", unit)
+            raise range_error(f"--sweep {name}", float(bad[0]),
+                              f"{relation} {low:g} and <= {high:g}", unit)
         values[name] = numbers
     return values["speed"], values["load"]
 

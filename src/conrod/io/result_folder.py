@@ -97,6 +97,15 @@ def check_output_folder(out: str | os.PathLike[str], option: str = "--out",
     return path
 
 
+def check_before_writing(out: str | os.PathLike[str], option: str) -> Path:
+    """:func:`check_output_folder` for a writer called from Python (``option`` names its
+    argument), unless a command of this process already checked ``out``."""
+    if not isinstance(out, str | os.PathLike):
+        raise CaseError(f"{option} = {out!r}: a folder path is required (str or Path)")
+    path = Path(out).absolute()
+    return path if path in _CHECKED else check_output_folder(out, option)
+
+
 def _check_lengths(path: Path, shown: str) -> None:
     """Refuse names and paths the file system cannot hold (with room for the results)."""
     existing = next(folder for folder in path.parents if os.path.isdir(folder))
