@@ -36,7 +36,7 @@ import math
 from pydantic import Field, model_validator
 
 from conrod.cases.base import Section, range_error
-from conrod.film.base import BearingGeometry, FeedHole, Groove
+from conrod.film.base import GEOMETRY_LIMITS, BearingGeometry, FeedHole, Groove
 
 MIN_SIZE = 1.0e-3
 """Smallest journal diameter and bearing width [m] (1 mm)."""
@@ -120,11 +120,17 @@ class BearingSection(Section):
         """Clearance thin against the radius (features: :meth:`check_features_inside_width`,
         called for the whole case by :func:`conrod.cases.rules.check_case`)."""
         radius = 0.5 * self.diameter
+        low, high = GEOMETRY_LIMITS["length_to_diameter"]
+        if not low * self.diameter <= self.width <= high * self.diameter:
+            raise range_error("bearing.width", self.width, f">= {low * self.diameter:g} m "
+                              f"and <= {high * self.diameter:g} m, {low:g} to {high:g} x "
+                              "bearing.diameter")
         if self.radial_clearance is not None:
+            smallest = max(MIN_CLEARANCE, GEOMETRY_LIMITS["clearance_to_radius"][0] * radius)
             largest = MAX_RELATIVE_CLEARANCE * radius
-            if self.radial_clearance > largest:
+            if not smallest <= self.radial_clearance <= largest:
                 raise range_error("bearing.radial_clearance", self.radial_clearance,
-                                  f">= {MIN_CLEARANCE:g} and <= {MAX_RELATIVE_CLEARANCE:g} x "
+                                  f">= {smallest:g} and <= {MAX_RELATIVE_CLEARANCE:g} x "
                                   f"journal radius = {largest:g}", "m")
         return self
 
