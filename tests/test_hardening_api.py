@@ -105,3 +105,22 @@ def test_a_valid_film_state_still_solves():
     state = FilmState(eccentricity_x=10e-6, eccentricity_y=0.0, journal_speed=300.0,
                       viscosity=np.float64(0.01))
     assert film.solve(state).force_x < 0.0
+
+
+def test_case_readers_and_builders_name_a_missing_case():
+    from conrod.film.mobility import MobilityFilm
+    from conrod.film.table import TabulatedFilm
+    from conrod.loads.table_load import load_cycle_from_table
+
+    assert _refused(Case.from_toml, None).startswith(
+        "Case.from_toml: path = None: a case-file path is required")
+    assert _refused(conrod.run, {"bearing": {}}).startswith(
+        "run: case = dict: a conrod.Case or a case-file path is required")
+    assert _refused(mechanism_case, None).startswith(
+        "mechanism_case: case = NoneType: a conrod.Case is required")
+    assert _refused(TabulatedFilm, None).startswith(
+        "TabulatedFilm: base = NoneType: a film model is required")
+    assert _refused(MobilityFilm, None) == (
+        "MobilityFilm: geometry = NoneType: a conrod.BearingGeometry is required")
+    assert _refused(load_cycle_from_table, None, None).startswith(
+        "load_cycle_from_table: section = NoneType, path = None: ")

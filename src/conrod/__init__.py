@@ -59,8 +59,12 @@ def run(case: Case | str | os.PathLike[str], **options) -> RunResults:
     ``Simulation(case, **options).run()``; ``options`` as :class:`Simulation` (``film``,
     ``integrator``, ``max_cycles``, ...)."""
     from conrod.cases.case import Case
+    from conrod.errors import CaseError
     from conrod.simulation.simulation import Simulation
 
+    if not isinstance(case, Case | str | os.PathLike):
+        raise CaseError(f"run: case = {type(case).__name__}: a conrod.Case or a case-file path "
+                        "is required (Case.from_dict(data) for a dict)")
     if not isinstance(case, Case):
         case = Case.from_toml(case)
     return Simulation(case, **options).run()

@@ -17,8 +17,7 @@ Tables are stored as ``<sha256>.npz`` in ``cache_dir`` (default ``~/.cache/conro
 the key hashing the geometry, the base model and its grid, and the table grid. Each file
 stores a SHA-256 checksum of its tables; a file that is unreadable, truncated, of the wrong
 shape, non-finite or fails the checksum is rebuilt with a :class:`~conrod.errors.CacheWarning`.
-A cache folder that cannot be used (a file in its place, not writable, no home folder) is
-skipped with one :class:`~conrod.errors.CacheWarning`; the tables are kept in memory.
+A cache folder that cannot be used is skipped with one :class:`~conrod.errors.CacheWarning`.
 """
 
 from __future__ import annotations
@@ -133,15 +132,19 @@ class TabulatedFilm:
     loaded_from_cache: bool = field(default=False, init=False)
 
     def __post_init__(self) -> None:
+        if not isinstance(self.base, FilmModel):
+            raise CaseError(f"TabulatedFilm: base = {type(self.base).__name__}: a film model "
+                            "is required (e.g. ReynoldsFilm(geometry))")
         self.geometry = self.base.geometry
         check_tabulable(self.geometry)
         if getattr(self.base, "pressure_viscosity", None) is not None:
             raise CaseError("table film over a piezoviscous base: not allowed (the table "
                             "assumes force ∝ μω); use the base film directly")
-        if self.n_eps < 3 or self.n_direction < 8 or self.n_direction % 2:
+        if not all(type(n) is int for n in (self.n_eps, self.n_direction)) or (
+                self.n_eps < 3 or self.n_direction < 8 or self.n_direction % 2):
             raise CaseError(f"table grid n_eps = {self.n_eps}, n_direction = {self.n_direction}: "
                             "allowed n_eps >= 3, n_direction even >= 8")
-        if not 0.0 < self.eccentricity_max < 1.0:
+        if not (isinstance(self.eccentricity_max, float) and 0.0 < self.eccentricity_max < 1.0):
             raise CaseError(f"eccentricity_max = {self.eccentricity_max}: allowed (0, 1) [-]")
         g = self.geometry
         self.s_step = stretched(self.eccentricity_max) / (self.n_eps - 1)
@@ -184,8 +187,7 @@ class TabulatedFilm:
                       if path.exists() else None)
         except (OSError, RuntimeError) as error:  # RuntimeError: no home folder
             warn_cache_unusable(self.cache_dir, error)
-            KEPT_IN_MEMORY[key] = self._build()
-            return KEPT_IN_MEMORY[key]
+            return KEPT_IN_MEMORY.setdefault(key, self._build())
         if tables is not None:
             self.loaded_from_cache = True
             return tables
@@ -347,13 +349,12 @@ def warn_cache_unusable(cache_dir: str | Path | None, error: BaseException) -> N
     folder = Path(cache_dir) if cache_dir is not None else DEFAULT_CACHE_DIR
     with contextlib.suppress(RuntimeError):
         folder = folder.expanduser()
-    if str(folder) in UNUSABLE_FOLDERS:
-        return
-    UNUSABLE_FOLDERS.add(str(folder))
-    reason = getattr(error, "strerror", None) or str(error) or type(error).__name__
-    warnings.warn(f"film table cache folder {str(folder)!r} cannot be used ({reason}); "
-                  "going on without it (tables built in this process are kept in memory)",
-                  CacheWarning, stacklevel=4)
+    if str(folder) not in UNUSABLE_FOLDERS:
+        UNUSABLE_FOLDERS.add(str(folder))
+        reason = getattr(error, "strerror", None) or str(error) or type(error).__name__
+        warnings.warn(f"film table cache folder {str(folder)!r} cannot be used ({reason}); "
+                      "going on without it (tables built in this process are kept in memory)",
+                      CacheWarning, stacklevel=4)
 
 
 def read_cached_tables(path: Path, shape: tuple[int, int]) -> dict[str, np.ndarray] | None:
