@@ -113,3 +113,61 @@ def test_a_run_whose_table_cache_folder_is_a_file_exits_0_with_one_warning(tmp_p
         f"warning: film table cache folder '{home}/.cache/conrod/tables' cannot be used (Not "
         "a directory); going on without it (tables built in this process are kept in memory)"]
     assert (tmp_path / "out" / "manifest.json").is_file()
+
+
+class _CacheFile:
+    def __init__(self):
+        self._index_name = "short_bearing.kernel_force-30.py311.nbi"
+
+
+class _Cache:
+    """Stands for numba's per-function cache: loading finds a file cut short, saving a
+    full disk."""
+
+    def __init__(self, folder: Path, module: str):
+        def kernel():
+            return None
+
+        kernel.__module__ = module
+        self._py_func, self._cache_path, self._cache_file = kernel, folder, _CacheFile()
+
+    def load_overload(self, sig, target_context):
+        import pickle
+
+        raise pickle.UnpicklingError("pickle data was truncated")
+
+    def save_overload(self, sig, data):
+        import errno
+
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+
+def test_the_guard_turns_unreadable_and_unwritable_caches_into_one_warning_each(
+        tmp_path, monkeypatch):
+    import pickle
+    import types
+
+    from conrod.errors import CacheWarning
+    from conrod.io import numba_cache
+
+    (tmp_path / "short_bearing.kernel_force-30.py311.nbi").write_bytes(b"\x80")
+    (tmp_path / "short_bearing.kernel_force-30.py311.1.nbc").write_bytes(b"\x80")
+    (tmp_path / "other.kernel-9.py311.nbi").write_bytes(b"kept")
+    caching = types.SimpleNamespace(Cache=type("Cache", (_Cache,), {}))
+    numba_cache.guard(caching)
+    for expected in ("could not be read (pickle data was truncated); discarded, compiling it "
+                     "again", "could not be written (No space left on device); going on "
+                     "without it"):
+        monkeypatch.setattr(numba_cache, "_state", {"warned": False})
+        cache = caching.Cache(tmp_path, "conrod.film.short_bearing")
+        with pytest.warns(CacheWarning) as caught:
+            if "read" in expected:
+                assert cache.load_overload(None, None) is None
+            else:
+                cache.save_overload(None, None)
+        [warning] = [str(w.message) for w in caught]
+        assert warning.startswith(f"compiled-kernel cache of 'short_bearing.kernel_force' in "
+                                  f"{str(tmp_path)!r} {expected}")
+    assert [p.name for p in tmp_path.iterdir()] == ["other.kernel-9.py311.nbi"]
+    with pytest.raises(pickle.UnpicklingError):  # numba's other users: as numba does
+        caching.Cache(tmp_path, "someone.else").load_overload(None, None)

@@ -66,7 +66,11 @@ def guard(caching: ModuleType) -> None:
             return
         try:
             save(self, sig, data)
-        except Exception as error:  # the index could not be read (or removed): not cached
+        except OSError as error:  # the folder takes no file (full, read-only): not cached
+            name, folder, _ = _files(self)
+            warn_once(f"compiled-kernel cache of {name!r} in {folder!r} could not be written "
+                      f"({error.strerror or error}); going on without it")
+        except Exception as error:  # its index could not be read (nor removed): not cached
             discard(self, error)
 
     load_overload.conrod_guarded = True  # type: ignore[attr-defined]
@@ -84,10 +88,16 @@ def _own(cache: Any) -> bool:
     return str(getattr(function, "__module__", "")).startswith(OWN_PREFIX)
 
 
-def discard(cache: Any, error: BaseException) -> None:
-    """Remove the index and data files of ``cache``'s kernel; warn once per process."""
+def _files(cache: Any) -> tuple[str, str, str]:
+    """(kernel name, cache folder, index file name) of a numba cache."""
     folder = str(numba_attribute(cache, "_cache_path"))
     index_name = str(numba_attribute(numba_attribute(cache, "_cache_file"), "_index_name"))
+    return index_name.split("-")[0], folder, index_name
+
+
+def discard(cache: Any, error: BaseException) -> None:
+    """Remove the index and data files of ``cache``'s kernel; warn once per process."""
+    name, folder, index_name = _files(cache)
     base = index_name.removesuffix(".nbi")
     with contextlib.suppress(OSError):
         for entry in os.scandir(folder):
@@ -95,12 +105,16 @@ def discard(cache: Any, error: BaseException) -> None:
                                             and entry.name.endswith(".nbc")):
                 with contextlib.suppress(OSError):
                     os.remove(entry.path)
+    warn_once(f"compiled-kernel cache of {name!r} in {folder!r} could not be read "
+              f"({str(error) or type(error).__name__}); discarded, compiling it again "
+              "(slower this once)")
+
+
+def warn_once(message: str) -> None:
+    """One :class:`CacheWarning` per process (one bad file is enough to know)."""
     if not _state["warned"]:
         _state["warned"] = True
-        reason = str(error) or type(error).__name__
-        warnings.warn(f"compiled-kernel cache of {base.split('-')[0]!r} in {folder!r} could "
-                      f"not be read ({reason}); discarded, compiling it again (slower this "
-                      "once)", CacheWarning, stacklevel=2)
+        warnings.warn(message, CacheWarning, stacklevel=3)
 
 
 class _GuardOnImport:
