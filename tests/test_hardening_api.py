@@ -64,7 +64,7 @@ def test_write_results_below_a_file_is_refused_before_writing(tmp_path):
     assert _refused(conrod.write_results, loads, taken / "x") == (
         f"write_results: out_dir {str(taken / 'x')!r}: {str(taken)!r} is a file, not a folder")
     assert _refused(conrod.write_results, object(), tmp_path / "out").startswith(
-        "write_results: results = object: not a conrod result")
+        "write_results: results = object: no tables registered for object")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["taken"]
 
 

@@ -42,7 +42,6 @@ def register(app: typer.Typer) -> None:
             from conrod.loads.engine_loads import check_step, compute_engine_loads
 
             check_step(step, "--step")
-
             case = Case.from_toml(case_file)
         if case.load is not None:  # the table is the bearing load, as in `conrod run`
             _table_loads(case, out)

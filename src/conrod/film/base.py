@@ -83,11 +83,16 @@ def check_range(owner: str, name: str, value: Any, low: float, high: float, unit
     ``value`` is a real number in [``low``, ``high``] (``low`` excluded with ``low_open``)."""
     lower = f"> {low:g}" if low_open else f">= {low:g}"
     allowed = f"(allowed: {lower} and <= {high:g} {unit})"
-    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
+    if not _is_number(value):
         raise CaseError(f"{owner} {name} = {value!r}: a number is required {allowed}")
     above_low = value > low if low_open else value >= low
     if not (above_low and value <= high):
         raise CaseError(f"{owner} {name} = {value!r}: out of range {allowed}")
+
+
+def _is_number(value: Any) -> bool:
+    """A real number (not a bool)."""
+    return not isinstance(value, bool) and isinstance(value, int | float | np.integer | np.floating)
 
 
 def _refuse_positional(cls: type, args: tuple, why: str, example: str) -> None:
@@ -139,7 +144,10 @@ class BearingGeometry:
         check_range(owner, "radial_clearance", self.radial_clearance, low * self.radius,
                     high * self.radius, f"m, i.e. {low:g} to {high:g} x journal radius")
         check_range(owner, "supply_pressure", self.supply_pressure, 0.0, 1.0e9, "Pa")
-        check_range(owner, "cavitation_pressure", self.cavitation_pressure, -1.0e6, 0.0, "Pa")
+        cavitation = self.cavitation_pressure
+        if not (_is_number(cavitation) and math.isfinite(cavitation) and cavitation <= 0.0):
+            raise CaseError(f"{owner} cavitation_pressure = {cavitation!r}: out of range "
+                            "(allowed: finite and <= 0 Pa; very negative: no cavitation)")
         for name, kind in (("grooves", Groove), ("feed_holes", FeedHole)):
             items = getattr(self, name)
             if not isinstance(items, tuple) or not all(isinstance(i, kind) for i in items):

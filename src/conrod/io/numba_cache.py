@@ -8,7 +8,8 @@ disk, a killed process, an interrupted copy) or otherwise unreadable makes numba
 Under :func:`tolerate_unreadable_cache` loading one of conrod's kernels from such a file
 discards that kernel's cache files instead, warns once per process
 (:class:`~conrod.errors.CacheWarning`, one line), and numba compiles the kernel and saves a
-good cache; the results are the same as with a good cache.
+good cache; the results are the same as with a good cache. A cache that cannot be written
+(a full disk) is one warning too: the kernel is simply not cached.
 
 .. code-block:: python
 
@@ -124,7 +125,8 @@ class _GuardOnImport:
     def find_spec(self, fullname: str, path: Any, target: Any = None) -> Any:
         if fullname != CACHING_MODULE:
             return None
-        sys.meta_path.remove(self)
+        with contextlib.suppress(ValueError):
+            sys.meta_path.remove(self)
         spec = importlib.machinery.PathFinder.find_spec(fullname, path)
         if spec is not None and spec.loader is not None:
             spec.loader = _GuardingLoader(spec.loader)

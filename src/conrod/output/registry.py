@@ -71,6 +71,10 @@ class FigureSpec:
     build: Callable[[], Any]
 
 
+class UnregisteredResultError(CaseError, TypeError):
+    """:func:`write_results` given an object of a type without registered tables."""
+
+
 @singledispatch
 def tables(results: Any) -> tuple[TableSpec, ...]:
     """Tables of ``results`` (registered per result type)."""
@@ -99,9 +103,10 @@ def write_results(
     SHA-256 to the manifest); return the paths written (manifest last). Arguments that
     are not a registered result, a usable folder or a bool raise :class:`CaseError`."""
     if tables.dispatch(type(results)) is tables.dispatch(object):
-        raise CaseError(f"write_results: results = {type(results).__name__}: not a conrod "
-                        "result (allowed: what Simulation.run(), compute_engine_loads(), ... "
-                        "return)")
+        name = type(results).__name__
+        raise UnregisteredResultError(f"write_results: results = {name}: no tables registered "
+                                      f"for {name} (allowed: what Simulation.run(), "
+                                      "compute_engine_loads(), ... return)")
     if not isinstance(figures, bool):
         raise CaseError(f"write_results: figures = {figures!r}: True or False is required")
     check_before_writing(out_dir, "write_results: out_dir")
