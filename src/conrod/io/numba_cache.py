@@ -24,9 +24,12 @@ import os
 import sys
 import warnings
 from types import ModuleType
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 from conrod.errors import CacheWarning
+
+if TYPE_CHECKING:  # pragma: no cover
+    from importlib.abc import Loader
 
 CACHING_MODULE = "numba.core.caching"
 """The numba module whose ``Cache`` loads and saves compiled kernels."""
@@ -129,7 +132,7 @@ class _GuardOnImport:
             sys.meta_path.remove(self)
         spec = importlib.machinery.PathFinder.find_spec(fullname, path)
         if spec is not None and spec.loader is not None:
-            spec.loader = _GuardingLoader(spec.loader)
+            spec.loader = cast("Loader", _GuardingLoader(spec.loader))
         return spec
 
 
