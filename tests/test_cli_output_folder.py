@@ -116,3 +116,31 @@ def test_a_folder_holding_only_the_input_file_is_accepted(tmp_path):
     check_output_folder(tmp_path, inputs=(case,))
     with pytest.raises(CaseError, match=r"\(case.toml\)"):  # without naming it: foreign
         check_output_folder(tmp_path, option="--out")
+
+
+def test_a_255_byte_folder_name_is_written_and_rewritten(tmp_path):
+    """The staging folder beside it has a name that fits too (the long name is cut and
+    tagged with its hash)."""
+    out = tmp_path / ("r" * 255)
+    for _ in range(2):  # new, then the previous result exchanged for the new one
+        with staged_result_folder(out) as stage:
+            (stage / "cycle.csv").write_text("a\n1\n", encoding="utf-8")
+    assert sorted(p.name for p in out.iterdir()) == ["cycle.csv", "manifest.json"]
+    assert [p.name for p in tmp_path.iterdir()] == [out.name]
+
+
+@pytest.mark.parametrize("command", ["run", "loads", "mechanism", "housing", "stress"])
+@pytest.mark.parametrize("too_long", ["name", "path"])
+def test_over_long_out_names_and_paths_exit_2_before_computing(runner, tmp_path, command,
+                                                               too_long):
+    if too_long == "name":
+        out, expected = tmp_path / ("n" * 256), "a folder name of 256 bytes is too long " \
+            "(allowed: <= 255 bytes per name)"
+    else:
+        out = tmp_path.joinpath(*["p" * 200] * 20)
+        expected = f"a path of {len(str(out))} bytes is too long (allowed: <= 3896 bytes"
+    result = runner.invoke(app, [command, CASE, "--out", str(out)])
+    assert result.exit_code == 2, result.output
+    [line] = result.output.strip().splitlines()
+    assert line.startswith(f"error: --out {str(out)!r}: {expected}")
+    assert list(tmp_path.iterdir()) == []

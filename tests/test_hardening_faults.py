@@ -48,8 +48,8 @@ def no_computation(monkeypatch):
         raise AssertionError("computation started before the output check")
 
     monkeypatch.setattr("conrod.simulation.simulation.Simulation.run", forbidden)
-    monkeypatch.setattr("conrod.cli.mechanism_command.simulate", forbidden)
-    monkeypatch.setattr("conrod.cli.loads_command.compute_engine_loads", forbidden)
+    monkeypatch.setattr("conrod.mechanism.simulation.simulate", forbidden)
+    monkeypatch.setattr("conrod.loads.engine_loads.compute_engine_loads", forbidden)
 
 
 @pytest.mark.parametrize("command", ["run", "loads", "mechanism"])

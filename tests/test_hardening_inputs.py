@@ -67,7 +67,7 @@ def test_utf8_with_byte_order_mark_is_accepted(tmp_path):
 def test_bearing_width_must_be_a_number(value):
     message = _error(mutated(cheap_table_run(), ("bearing", "width"), value))
     assert message.startswith(f"bearing.width = {value!r}: a number is required")
-    assert "(allowed: > 0 and <= 5 m)" in message
+    assert "(allowed: >= 0.001 and <= 5 m)" in message
 
 
 def test_integer_fields_refuse_floats_and_booleans():
@@ -110,6 +110,21 @@ def test_a_tiny_quasi_static_step_fails_at_validation_not_allocation():
     # 720 deg x 2 cycles / 2e6 steps = 7.2e-4 deg: the budget, stated in the message
     assert message.startswith("solver.quasi_static_step_deg = 1e-09: out of range "
                               "(allowed: >= 0.00072 with max_cycles = 2")
+
+
+@pytest.mark.parametrize(("make", "path", "allowed"), [
+    (cheap_engine_run, ("engine", "speed"), "(allowed: >= 1 and <= 30000 rpm)"),
+    (cheap_mechanism, ("engine", "speed"), "(allowed: >= 1 and <= 30000 rpm)"),
+    (cheap_table_run, ("load", "speed"), "(allowed: >= 0.1 and <= 30000 rpm)"),
+    (cheap_table_run, ("bearing", "width"), "(allowed: >= 0.001 and <= 5 m)"),
+    (cheap_engine_run, ("bearing", "diameter"), "(allowed: >= 0.001 and <= 5 m)"),
+    (cheap_table_run, ("bearing", "radial_clearance"), "(allowed: >= 1e-06 and <= 0.01 m)"),
+])
+def test_vanishing_sizes_and_speeds_are_refused_with_their_physical_range(make, path, allowed):
+    """1e-300 passed '> 0' and divided by zero deep inside (an internal error)."""
+    message = _error(mutated(make(), path, 1e-300))
+    assert message.startswith(f"{'.'.join(path)} = 1e-300: ") and message.endswith(allowed)
+    assert len(message.splitlines()) == 1
 
 
 def test_clearance_equal_to_the_journal_radius_is_refused():
@@ -217,6 +232,13 @@ STEADY = ["steady", "--load", "1e4", "--speed-rpm", "3000", "--viscosity", "0.01
      "0.00125 m)"),
     ([*STEADY[:2], "inf", *STEADY[3:], "--radial-clearance", "5e-5"],
      "error: load = inf: out of range (allowed: finite, > 0)"),
+    (["loads", str(FLORES_TABLE.parents[1] / "kamaz_740_truck_diesel.toml"), "--out",
+      "unused", "--step", "1e-6"],
+     "error: --step = 1e-06: out of range (allowed: >= 0.0072 (budget 100000 rows per cycle) "
+     "and <= 10 deg, dividing 720)"),
+    (["mechanism", str(FLORES_TABLE.parents[1] / "kulayev_worn_rod_bearings.toml"), "--out",
+      "unused", "--sweep", "speed=1e-300:3000:3"],
+     "error: --sweep speed = 1e-300: out of range (allowed: >= 1 and <= 30000 rpm)"),
     (["run", str(FLORES_TABLE.parents[1] / "flores2006_table_load.toml"), "--out", "unused",
       "--grid", "2048x512", "--film", "reynolds"],
      "error: solver.n_theta x solver.n_z = '2048x512': out of range (allowed: n_theta * "

@@ -17,6 +17,9 @@ import os
 from typing import TYPE_CHECKING, Any
 
 from conrod._version import __version__
+from conrod.io.numba_cache import tolerate_unreadable_cache
+
+tolerate_unreadable_cache()  # an unreadable cached kernel is compiled again, not an error
 
 _PUBLIC = {
     "BearingGeometry": "conrod.film.base",
@@ -56,8 +59,12 @@ def run(case: Case | str | os.PathLike[str], **options) -> RunResults:
     ``Simulation(case, **options).run()``; ``options`` as :class:`Simulation` (``film``,
     ``integrator``, ``max_cycles``, ...)."""
     from conrod.cases.case import Case
+    from conrod.errors import CaseError
     from conrod.simulation.simulation import Simulation
 
+    if not isinstance(case, Case | str | os.PathLike):
+        raise CaseError(f"run: case = {type(case).__name__}: a conrod.Case or a case-file path "
+                        "is required (Case.from_dict(data) for a dict)")
     if not isinstance(case, Case):
         case = Case.from_toml(case)
     return Simulation(case, **options).run()

@@ -1,5 +1,25 @@
 """Case files (TOML) validated with pydantic: one module per section."""
 
-from conrod.cases.case import Case
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.cases.case import Case
+
+_PUBLIC = {
+    "Case": "conrod.cases.case",
+}
+"""Public name → the module that defines it (imported when the name is first used)."""
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _PUBLIC:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_PUBLIC[name]), name)
+    globals()[name] = value
+    return value
+
 
 __all__ = ["Case"]

@@ -108,16 +108,41 @@ def _dotted(prefix: str, loc: tuple[Any, ...]) -> str:
     return text
 
 
+def _location(error: Any) -> tuple[Any, ...]:
+    return tuple(p for p in error["loc"] if not str(p).startswith(("function-", "lax-")))
+
+
+def _closest_key(root: type[BaseModel], loc: tuple[Any, ...]) -> str | None:
+    """The valid key closest to the unknown key at ``loc`` (difflib), if any is close."""
+    model, name = _resolve_model(root, tuple(p for p in loc if not isinstance(p, int)))
+    hint = difflib.get_close_matches(name, sorted(model.model_fields), n=1, cutoff=0.5)
+    return hint[0] if hint else None
+
+
+def _explained_by_a_misspelling(root: type[BaseModel], errors: list[Any]) -> set[int]:
+    """Indices of "required field is missing" errors whose field is the suggestion for an
+    unknown key beside it ('sped' for 'speed'): the misspelling says it all."""
+    suggested = set()
+    for error in errors:
+        loc = _location(error)
+        if error["type"] == "extra_forbidden" and loc:
+            key = _closest_key(root, loc)
+            if key is not None:
+                suggested.add((*loc[:-1], key))
+    return {i for i, error in enumerate(errors)
+            if error["type"] == "missing" and _location(error) in suggested}
+
+
 def _describe(root: type[BaseModel], error: Any, prefix: str) -> str:
-    loc = tuple(p for p in error["loc"] if not str(p).startswith(("function-", "lax-")))
+    loc = _location(error)
     dotted = _dotted(prefix, loc)
     value = error.get("input")
     kind = error["type"]
     model, name = _resolve_model(root, tuple(p for p in loc if not isinstance(p, int)))
     if kind == "extra_forbidden":
         valid = sorted(model.model_fields)
-        hint = difflib.get_close_matches(name, valid, n=1, cutoff=0.5)
-        suggestion = f"; did you mean '{hint[0]}'?" if hint else ""
+        hint = _closest_key(root, loc)
+        suggestion = f"; did you mean '{hint}'?" if hint else ""
         return (
             f"{dotted}: unknown key '{name}'{suggestion} "
             f"(valid keys here: {', '.join(valid)})"
@@ -142,8 +167,12 @@ def _describe(root: type[BaseModel], error: Any, prefix: str) -> str:
 def format_validation_error(
     error: ValidationError, root: type[BaseModel], prefix: str = ""
 ) -> str:
-    """One readable message (one line per problem) for a pydantic ``ValidationError``."""
-    return "\n".join(_describe(root, item, prefix) for item in error.errors())
+    """One readable message (one line per problem) for a pydantic ``ValidationError``; a
+    missing field is not listed beside the misspelt key that suggests it."""
+    errors = error.errors()
+    explained = _explained_by_a_misspelling(root, errors)
+    return "\n".join(_describe(root, item, prefix) for i, item in enumerate(errors)
+                     if i not in explained)
 
 
 def validate_section(model: type[BaseModel], data: Any, prefix: str = "") -> Any:

@@ -36,8 +36,12 @@ import math
 from pydantic import Field, model_validator
 
 from conrod.cases.base import Section, range_error
-from conrod.film.base import BearingGeometry, FeedHole, Groove
+from conrod.film.base import GEOMETRY_LIMITS, BearingGeometry, FeedHole, Groove
 
+MIN_SIZE = 1.0e-3
+"""Smallest journal diameter and bearing width [m] (1 mm)."""
+MIN_CLEARANCE = 1.0e-6
+"""Smallest radial clearance [m] (1 µm, as the joints of the mechanism)."""
 MAX_RELATIVE_CLEARANCE = 0.05
 """Largest radial clearance / journal radius c/R: thin-film (Reynolds) theory needs c ≪ R
 (engine bearings: 0.0005–0.003) [-]."""
@@ -91,10 +95,12 @@ class AxialGrooveSection(Section):
 class BearingSection(Section):
     """Geometry of the big-end (or any journal) bearing and its oil supply."""
 
-    diameter: float = Field(gt=0.0, le=5.0, description="Journal (crankpin) diameter d [m]")
-    width: float = Field(gt=0.0, le=5.0, description="Working shell width l' (axial length) [m]")
+    diameter: float = Field(ge=MIN_SIZE, le=5.0,
+                            description="Journal (crankpin) diameter d [m]")
+    width: float = Field(ge=MIN_SIZE, le=5.0,
+                         description="Working shell width l' (axial length) [m]")
     radial_clearance: float | None = Field(
-        default=None, gt=0.0, le=1.0e-2, description="Radial clearance c [m]"
+        default=None, ge=MIN_CLEARANCE, le=1.0e-2, description="Radial clearance c [m]"
 )
     supply_pressure: float = Field(
         default=0.0, ge=0.0, le=1.0e7, description="Gauge oil-supply pressure p_s [Pa]"
@@ -114,12 +120,18 @@ class BearingSection(Section):
         """Clearance thin against the radius (features: :meth:`check_features_inside_width`,
         called for the whole case by :func:`conrod.cases.rules.check_case`)."""
         radius = 0.5 * self.diameter
+        low, high = GEOMETRY_LIMITS["length_to_diameter"]
+        if not low * self.diameter <= self.width <= high * self.diameter:
+            raise range_error("bearing.width", self.width, f">= {low * self.diameter:g} m "
+                              f"and <= {high * self.diameter:g} m, {low:g} to {high:g} x "
+                              "bearing.diameter")
         if self.radial_clearance is not None:
+            smallest = max(MIN_CLEARANCE, GEOMETRY_LIMITS["clearance_to_radius"][0] * radius)
             largest = MAX_RELATIVE_CLEARANCE * radius
-            if self.radial_clearance > largest:
+            if not smallest <= self.radial_clearance <= largest:
                 raise range_error("bearing.radial_clearance", self.radial_clearance,
-                                  f"> 0 and <= {MAX_RELATIVE_CLEARANCE:g} x journal radius "
-                                  f"= {largest:g}", "m")
+                                  f">= {smallest:g} and <= {MAX_RELATIVE_CLEARANCE:g} x "
+                                  f"journal radius = {largest:g}", "m")
         return self
 
     def geometry(self) -> BearingGeometry:

@@ -66,6 +66,9 @@ class Case(Section):
     @classmethod
     def from_toml(cls, path: str | os.PathLike[str]) -> Case:
         """Read and validate a case file; raise :class:`CaseError` on any problem."""
+        if not isinstance(path, str | os.PathLike):
+            raise CaseError(f"Case.from_toml: path = {path!r}: a case-file path is required "
+                            "(str or Path; Case.from_dict(data) for a dict)")
         path = Path(path)
         text = read_utf8(path, "case file")
         try:

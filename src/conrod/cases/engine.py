@@ -12,6 +12,9 @@ from pydantic import Field, model_validator
 
 from conrod.cases.base import Section
 
+MIN_ENGINE_SPEED = 1.0
+"""Slowest crank speed of an engine [rpm]."""
+
 
 class PressureModelSection(Section):
     """Parametric 4-stroke cylinder-pressure model of [D3] (all pressures absolute)."""
@@ -38,7 +41,7 @@ class EngineSection(Section):
     rod_length: float = Field(
         gt=0.0, le=10.0, description="Rod length L, big-end to small-end centre [m]"
 )
-    speed: float = Field(gt=0.0, le=30000.0, description="Crank speed n [rpm]")
+    speed: float = Field(ge=MIN_ENGINE_SPEED, le=30000.0, description="Crank speed n [rpm]")
     piston_mass: float = Field(gt=0.0, le=1.0e4, description="Piston, pin and rings m_p [kg]")
     rod_mass: float = Field(gt=0.0, le=1.0e4, description="Connecting-rod mass m_rod [kg]")
     rod_cg_from_big_end: float = Field(

@@ -18,6 +18,9 @@ from pydantic import Field
 
 from conrod.cases.base import Section
 
+MIN_TABLE_SPEED = 0.1
+"""Slowest crank speed of a bearing given by its load table [rpm] (a slow machine)."""
+
 
 class LoadTableSection(Section):
     """Load diagram in the bearing frame read from CSV."""
@@ -26,7 +29,8 @@ class LoadTableSection(Section):
         strict=False, description="CSV with columns crank_angle_deg, load_x_N, load_y_N [-]"
     )
     speed: float = Field(
-        gt=0.0, le=30000.0, description="Crank speed n mapping angle to time [rpm]"
+        ge=MIN_TABLE_SPEED, le=30000.0,
+        description="Crank speed n mapping angle to time [rpm]"
 )
     cycle_deg: Literal[360, 720] = Field(default=720, description="Load cycle length [deg]")
     journal_speed: float | None = Field(

@@ -12,18 +12,25 @@ traceback; results are written as a whole or not at all (:mod:`conrod.io.result_
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import importlib
 import os
 import sys
 import warnings
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Annotated, Any, TypeVar
 
-import typer
-
 from conrod.errors import CaseError, ConvergenceError
-from conrod.io.interrupts import EXIT_INTERRUPTED, deferred_interrupts
+from conrod.io.interrupts import (
+    EXIT_INTERRUPTED,
+    INTERRUPTED_MESSAGE,
+    deferred_interrupts,
+    interrupts_stop_at_once,
+)
+
+with interrupts_stop_at_once():  # Ctrl-C while the command line loads: one line, exit 130
+    import typer
 
 EXIT_OK, EXIT_DEFECT, EXIT_BAD_INPUT, EXIT_NOT_CONVERGED = 0, 1, 2, 3
 EXIT_WARNINGS, EXIT_WRITE_FAILED = 4, 5
@@ -93,6 +100,34 @@ def finish(warnings: Sequence[str], accept_warnings: bool, converged: bool = Tru
         raise typer.Exit(code=EXIT_WARNINGS)
 
 
+@contextlib.contextmanager
+def printing_after_results(out: str | os.PathLike[str]) -> Iterator[None]:
+    """Print on stdout what a command says once its results are written to ``out``.
+
+    A standard output that fails then (the reader of a pipe stopped reading, a full disk)
+    is no failed result: the exit code stays that of the results. A closed pipe is
+    ignored (its reader wanted no more); another failure is one warning line on stderr.
+    """
+    try:
+        yield
+        sys.stdout.flush()
+    except OSError as error:
+        discard_stdout()
+        if not isinstance(error, BrokenPipeError):
+            reason = error.strerror or str(error) or type(error).__name__
+            typer.echo(f"warning: standard output could not be written ({reason}); the "
+                       f"results are complete in {out}", err=True)
+
+
+def discard_stdout() -> None:
+    """Send what is left of stdout to the null device, so that no later flush (at the
+    latest when the interpreter exits) fails again on a broken stdout."""
+    with contextlib.suppress(OSError, ValueError):
+        null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(null, sys.stdout.fileno())
+        os.close(null)
+
+
 ACCEPT_WARNINGS_HELP = ("Exit 0 although the written results carry warnings (default: exit 4) "
                         "or the orbit is not periodic (default: exit 3).")
 
@@ -112,7 +147,7 @@ def exits_cleanly(command: F) -> F:
             typer.echo(f"not converged: {error}", err=True)
             raise typer.Exit(code=EXIT_NOT_CONVERGED) from None
         except KeyboardInterrupt:
-            typer.echo("interrupted (nothing written)", err=True)
+            typer.echo(INTERRUPTED_MESSAGE, err=True)
             raise typer.Exit(code=EXIT_INTERRUPTED) from None
         except OSError as error:
             where = f": {error.filename}" if error.filename else ""
@@ -152,7 +187,8 @@ def _one_line_warning(message: Any, category: Any, *args: Any, **kwargs: Any) ->
 
 def main() -> None:
     """Entry point of the ``conrod`` console script."""
-    encoding_safe_streams()
-    warnings.formatwarning = _one_line_warning
-    _register_commands()
-    app()
+    with interrupts_stop_at_once():  # a command defers Ctrl-C once it computes
+        encoding_safe_streams()
+        warnings.formatwarning = _one_line_warning
+        _register_commands()
+        app()

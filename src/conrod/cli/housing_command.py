@@ -14,12 +14,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from conrod.cases.case import Case
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import exits_cleanly, printing_after_results
 from conrod.errors import CaseError
+from conrod.io.interrupts import interrupts_stop_at_once
 
 
 def register(app: typer.Typer) -> None:
@@ -37,11 +36,15 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))  # before any computation
-        from conrod.housing.housing import Housing
-        from conrod.output.registry import write_results
-        from conrod.simulation.housing_study import MICRO_PER_KILO, housing_study
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            import numpy as np
 
-        case = Case.from_toml(case_file)
+            from conrod.cases.case import Case
+            from conrod.housing.housing import Housing
+            from conrod.output.registry import write_results
+            from conrod.simulation.housing_study import MICRO_PER_KILO, housing_study
+
+            case = Case.from_toml(case_file)
         case.require("housing", "bearing")
         if case.housing.model == "rigid":
             raise CaseError("housing.model = 'rigid': nothing to compute (allowed: builtin, "
@@ -49,6 +52,8 @@ def register(app: typer.Typer) -> None:
         housing = Housing.from_case(case, use_cache=cache)
         write_results(housing_study(housing, case), out)
         diagonal = np.diag(housing.corrected_compliance) * MICRO_PER_KILO
-        typer.echo(f"{case.housing.model} housing, {len(housing.angles)} film nodes, "
-                   f"corrected compliance diagonal {diagonal.min():.2f}..{diagonal.max():.2f} "
-                   f"um/kN ({housing.info.get('seconds', 0.0):.2f} s) -> {out}")
+        with printing_after_results(out):
+            typer.echo(f"{case.housing.model} housing, {len(housing.angles)} film nodes, "
+                       f"corrected compliance diagonal {diagonal.min():.2f}.."
+                       f"{diagonal.max():.2f} um/kN ({housing.info.get('seconds', 0.0):.2f} s) "
+                       f"-> {out}")

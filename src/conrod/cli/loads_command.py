@@ -8,14 +8,15 @@ Writes (atomically, only after every input check passed):
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from conrod.cases.case import Case
-from conrod.cli.app import exits_cleanly
-from conrod.io.result_folder import check_output_folder
-from conrod.loads.engine_loads import compute_engine_loads
+from conrod.cli.app import exits_cleanly, printing_after_results
+from conrod.io.interrupts import interrupts_stop_at_once
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.cases.case import Case
 
 
 def register(app: typer.Typer) -> None:
@@ -33,8 +34,15 @@ def register(app: typer.Typer) -> None:
         ] = 1.0,
     ) -> None:
         """Engine loads on the big-end bearing: table, summary, polar and wear diagrams."""
+        from conrod.io.result_folder import check_output_folder
+
         check_output_folder(out, inputs=(case_file,))
-        case = Case.from_toml(case_file)
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            from conrod.cases.case import Case
+            from conrod.loads.engine_loads import check_step, compute_engine_loads
+
+            check_step(step, "--step")
+            case = Case.from_toml(case_file)
         if case.load is not None:  # the table is the bearing load, as in `conrod run`
             _table_loads(case, out)
             return
@@ -42,12 +50,11 @@ def register(app: typer.Typer) -> None:
         loads = compute_engine_loads(case, step_deg=step)
         _write(loads, out)
         summary = loads.summary()
-        typer.echo(
-            f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
-            f"{summary['peak_load_crank_angle_deg']:.1f} deg, "
-            f"mean {summary['mean_load_N'] / 1e3:.2f} kN, "
-            f"oil hole at {summary['oil_hole_angle_deg']:.1f} deg -> {out}"
-        )
+        with printing_after_results(out):
+            typer.echo(f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
+                       f"{summary['peak_load_crank_angle_deg']:.1f} deg, "
+                       f"mean {summary['mean_load_N'] / 1e3:.2f} kN, "
+                       f"oil hole at {summary['oil_hole_angle_deg']:.1f} deg -> {out}")
 
 
 def _write(loads, out: Path) -> None:
@@ -64,6 +71,7 @@ def _table_loads(case: Case, out: Path) -> None:
     loads = load_cycle_from_table(case.load, case.resolve(case.load.table))
     _write(loads, out)
     summary = table_load_summary(loads)
-    typer.echo(f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
-               f"{summary['peak_load_crank_angle_deg']:.1f} deg, mean "
-               f"{summary['mean_load_N'] / 1e3:.2f} kN (load table, bearing frame) -> {out}")
+    with printing_after_results(out):
+        typer.echo(f"peak load {summary['peak_load_N'] / 1e3:.2f} kN at "
+                   f"{summary['peak_load_crank_angle_deg']:.1f} deg, mean "
+                   f"{summary['mean_load_N'] / 1e3:.2f} kN (load table, bearing frame) -> {out}")

@@ -12,40 +12,43 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
-import numpy as np
 import typer
 
-from conrod.cases.base import range_error
-from conrod.cases.case import Case
-from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
+from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish, printing_after_results
 from conrod.errors import CaseError
-from conrod.io.interrupts import raise_if_interrupted
-from conrod.io.result_folder import check_output_folder
-from conrod.mechanism.regimes import SweepRun
-from conrod.mechanism.results import MechanismRun
-from conrod.mechanism.setup import MechanismCase, mechanism_case
-from conrod.mechanism.simulation import simulate
-from conrod.results.plausibility import check_mechanism
-from conrod.sweep.mechanism import parse_sweep_option, run_sweep
+from conrod.io.interrupts import interrupts_stop_at_once, raise_if_interrupted
 
-SWEEP_LIMITS = {"speed": (0.0, 30000.0, "rpm"), "load": (0.0, 5.0, "-")}
-"""Allowed (exclusive lower, inclusive upper) bounds of swept values and their unit."""
+if TYPE_CHECKING:  # pragma: no cover
+    import numpy as np
+
+    from conrod.mechanism.setup import MechanismCase
+
+SWEEP_LIMITS = {"speed": (">=", 1.0, 30000.0, "rpm"), "load": (">", 0.0, 5.0, "-")}
+"""Allowed lower bound (inclusive or not), inclusive upper bound and unit of swept values
+(speeds as ``engine.speed``)."""
 
 
 def sweep_values(options: list[str], base: MechanismCase) -> tuple[np.ndarray, np.ndarray]:
     """Speeds [rpm] and load scales [-] from ``--sweep`` options (defaults: the case's)."""
+    import numpy as np
+
+    from conrod.cases.base import range_error
+    from conrod.sweep.mechanism import parse_sweep_option
+
     values = {"speed": np.array([base.speed_rpm]), "load": np.array([base.load_scale])}
     for option in options:
         try:
             name, numbers = parse_sweep_option(option)
         except ValueError as error:
             raise CaseError(str(error)) from None
-        low, high, unit = SWEEP_LIMITS[name]
-        bad = numbers[(numbers <= low) | (numbers > high)]
+        relation, low, high, unit = SWEEP_LIMITS[name]
+        too_low = numbers < low if relation == ">=" else numbers <= low
+        bad = numbers[too_low | (numbers > high)]
         if bad.size:
-            raise range_error(f"--sweep {name}", float(bad[0]), f"> {low:g} and <= {high:g}", unit)
+            raise range_error(f"--sweep {name}", float(bad[0]),
+                              f"{relation} {low:g} and <= {high:g}", unit)
         values[name] = numbers
     return values["speed"], values["load"]
 
@@ -68,8 +71,19 @@ def register(app: typer.Typer) -> None:
             "--accept-warnings", help=ACCEPT_WARNINGS_HELP)] = False,
     ) -> None:
         """Slider-crank with clearances in both rod bearings: gaps, forces, impacts ([D3])."""
+        from conrod.io.result_folder import check_output_folder
+
         check_output_folder(out, inputs=(case_file,))
-        case = Case.from_toml(case_file)
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            from conrod.cases.case import Case
+            from conrod.mechanism.regimes import SweepRun
+            from conrod.mechanism.results import MechanismRun
+            from conrod.mechanism.setup import mechanism_case
+            from conrod.mechanism.simulation import simulate
+            from conrod.results.plausibility import check_mechanism
+            from conrod.sweep.mechanism import run_sweep
+
+            case = Case.from_toml(case_file)
         base = mechanism_case(case)
         if sweep:
             speeds, loads = sweep_values(sweep, base)
@@ -80,18 +94,20 @@ def register(app: typer.Typer) -> None:
             finished = SweepRun(result, time.perf_counter() - started)
             _write(finished, out)
             best = result.best()
-            typer.echo(f"most informative regime: {best['speed_rpm']:g} rpm, load "
-                       f"{best['load_scale']:g} (κ = {best['impact_velocity_ratio']:.3g}) -> {out}")
+            with printing_after_results(out):
+                typer.echo(f"most informative regime: {best['speed_rpm']:g} rpm, load "
+                           f"{best['load_scale']:g} (κ = {best['impact_velocity_ratio']:.3g}) "
+                           f"-> {out}")
             return
         results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)
         run = MechanismRun(results, base.speed_rpm, base.load_scale,
                            tuple(check_mechanism(results, base.mechanism)))
         summary = run.summary()
         _write(run, out)
-        typer.echo(
-            f"{summary['impacts_per_cycle']} impacts/cycle; max impact velocity big end "
-            f"{summary['max_impact_velocity_big_end_m_s']:.3g} m/s, small end "
-            f"{summary['max_impact_velocity_small_end_m_s']:.3g} m/s -> {out}")
+        with printing_after_results(out):
+            typer.echo(f"{summary['impacts_per_cycle']} impacts/cycle; max impact velocity big "
+                       f"end {summary['max_impact_velocity_big_end_m_s']:.3g} m/s, small end "
+                       f"{summary['max_impact_velocity_small_end_m_s']:.3g} m/s -> {out}")
         finish(summary["warnings"], accept_warnings)
 
 

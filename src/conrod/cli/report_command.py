@@ -8,7 +8,7 @@ from typing import Annotated
 
 import typer
 
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import exits_cleanly, printing_after_results
 
 
 def register(app: typer.Typer) -> None:
@@ -29,4 +29,5 @@ def register(app: typer.Typer) -> None:
         from conrod.report import write_report
 
         paths = write_report(folder, out, case_file=case, pdf=pdf)
-        typer.echo(" ".join(str(p) for p in paths))
+        with printing_after_results(paths[0].parent):
+            typer.echo(" ".join(str(p) for p in paths))

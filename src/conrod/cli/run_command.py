@@ -10,8 +10,8 @@ from typing import Annotated, Any
 
 import typer
 
-from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish
-from conrod.io.interrupts import raise_if_interrupted
+from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish, printing_after_results
+from conrod.io.interrupts import interrupts_stop_at_once, raise_if_interrupted
 from conrod.registry import FILM_NAMES, INTEGRATOR_NAMES
 
 FilmChoice = enum.Enum("FilmChoice", {name: name for name in FILM_NAMES}, type=str)
@@ -130,13 +130,15 @@ def register(app: typer.Typer) -> None:
             "and compare (cycle_rigid.csv, summary.json comparison).")] = True,
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
-        from conrod.cases.case import Case
         from conrod.io.result_folder import check_output_folder
-        from conrod.output.registry import write_results
-        from conrod.simulation.simulation import Simulation
 
-        check_output_folder(out, inputs=(case_file,))
-        case = Case.from_toml(case_file)
+        check_output_folder(out, inputs=(case_file,))  # before any computation
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            from conrod.cases.case import Case
+            from conrod.output.registry import write_results
+            from conrod.simulation.simulation import Simulation
+
+            case = Case.from_toml(case_file)
         n_theta, n_z = _grid(grid)
         simulation = Simulation(case, film=film and film.value,
                                 integrator=integrator and integrator.value, max_cycles=max_cycles,
@@ -153,7 +155,8 @@ def register(app: typer.Typer) -> None:
 
             results = with_step_check(results, simulation)
         write_results(results, out, figures=figures)
-        print_headline(results, out)
+        with printing_after_results(out):
+            print_headline(results, out)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
 
 

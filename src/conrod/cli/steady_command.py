@@ -14,16 +14,14 @@ from __future__ import annotations
 
 import json
 import math
+import sys
 from enum import StrEnum
 
 import typer
 
-from conrod.cases.bearing import MAX_RELATIVE_CLEARANCE
-from conrod.cases.solver import MAX_GRID_NODES
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import EXIT_WRITE_FAILED, discard_stdout, exits_cleanly
 from conrod.errors import CaseError
-from conrod.film.base import BearingGeometry
-from conrod.film.steady import raimondi_boyd_point, solve_for_load
+from conrod.io.interrupts import interrupts_stop_at_once
 
 
 class Model(StrEnum):
@@ -47,6 +45,8 @@ FRICTION_OPTION = typer.Option(Friction.full_film, help="Friction convention")
 
 def parse_grid(text: str | None) -> tuple[int, int] | None:
     """'144x32' → (144, 32) intervals; None stays None."""
+    from conrod.cases.solver import MAX_GRID_NODES
+
     if text is None:
         return None
     try:
@@ -74,12 +74,21 @@ def unit_of(key: str) -> str:
 
 
 def _print(values: dict, as_json: bool) -> None:
-    if as_json:
-        typer.echo(json.dumps(values, indent=2))
-        return
-    for key, value in values.items():
-        shown = f"{value:.6g}" if isinstance(value, float) else str(value)
-        typer.echo(f"{key:32s} {shown}{unit_of(key)}")
+    """The results on stdout: here they are the command's result, so a stdout that fails
+    (a closed pipe, a full disk) is results not written (exit 5)."""
+    try:
+        if as_json:
+            typer.echo(json.dumps(values, indent=2))
+        else:
+            for key, value in values.items():
+                shown = f"{value:.6g}" if isinstance(value, float) else str(value)
+                typer.echo(f"{key:32s} {shown}{unit_of(key)}")
+        sys.stdout.flush()
+    except OSError as error:
+        discard_stdout()
+        reason = error.strerror or str(error) or type(error).__name__
+        typer.echo(f"error: cannot write the results to standard output ({reason})", err=True)
+        raise typer.Exit(code=EXIT_WRITE_FAILED) from None
 
 
 def register(app: typer.Typer) -> None:
@@ -102,6 +111,11 @@ def register(app: typer.Typer) -> None:
         as_json: bool = typer.Option(False, "--json", help="Print JSON"),
 ) -> None:
         """Steady bearing characteristics under Raimondi & Boyd's full-bearing conditions."""
+        with interrupts_stop_at_once():  # starting: nothing computed yet
+            from conrod.cases.bearing import MAX_RELATIVE_CLEARANCE
+            from conrod.film.base import BearingGeometry
+            from conrod.film.steady import raimondi_boyd_point, solve_for_load
+
         cells = parse_grid(grid)
         if eccentricity is not None:
             if length_to_diameter is None:

@@ -9,14 +9,16 @@ and ``von_mises_<scheme>_<angle>deg.png`` for every angle.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
-import numpy as np
 import typer
 
-from conrod.cases.case import Case
-from conrod.cli.app import exits_cleanly
+from conrod.cli.app import exits_cleanly, printing_after_results
 from conrod.errors import CaseError
+from conrod.io.interrupts import interrupts_stop_at_once
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.cases.case import Case
 
 
 def parse_angles(text: str | None, case: Case) -> list[float]:
@@ -34,6 +36,8 @@ def parse_angles(text: str | None, case: Case) -> list[float]:
         return angles
     if case.housing.stress_angles:
         return list(case.housing.stress_angles)
+    import numpy as np
+
     from conrod.loads.engine_loads import compute_engine_loads
 
     loads = compute_engine_loads(case)
@@ -56,11 +60,13 @@ def register(app: typer.Typer) -> None:
         from conrod.io.result_folder import check_output_folder
 
         check_output_folder(out, inputs=(case_file,))  # before any computation
-        from conrod.housing.housing import Housing
-        from conrod.output.registry import write_results
-        from conrod.simulation.stress_study import stress_study
+        with interrupts_stop_at_once():  # starting: nothing computed or written yet
+            from conrod.cases.case import Case
+            from conrod.housing.housing import Housing
+            from conrod.output.registry import write_results
+            from conrod.simulation.stress_study import stress_study
 
-        case = Case.from_toml(case_file)
+            case = Case.from_toml(case_file)
         case.require("stress", "engine", "bearing", "lubricant")
         if case.housing.model not in ("builtin", "mesh"):
             raise CaseError(f"housing.model = {case.housing.model!r}: stresses need a finite-"
@@ -69,8 +75,10 @@ def register(app: typer.Typer) -> None:
         housing = Housing.from_case(case)
         results = stress_study(case, housing, crank_angles)
         write_results(results, out)
-        typer.echo(f"rod loaded by the {results.pressure_source}")
-        for angle, comparison in results.schemes.items():
-            typer.echo(f"{angle:g} deg: max von Mises {comparison['pressure'].maximum / 1e6:.0f} "
-                       f"MPa (pressure) vs {comparison['cosine'].maximum / 1e6:.0f} MPa (cosine)")
-        typer.echo(f"-> {out}")
+        with printing_after_results(out):
+            typer.echo(f"rod loaded by the {results.pressure_source}")
+            for angle, comparison in results.schemes.items():
+                typer.echo(f"{angle:g} deg: max von Mises "
+                           f"{comparison['pressure'].maximum / 1e6:.0f} MPa (pressure) vs "
+                           f"{comparison['cosine'].maximum / 1e6:.0f} MPa (cosine)")
+            typer.echo(f"-> {out}")

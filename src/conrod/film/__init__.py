@@ -1,16 +1,52 @@
 """Oil-film models behind one interface (:class:`conrod.film.base.FilmModel`) and the
-optional capabilities a model declares (:mod:`conrod.film.capabilities`)."""
+optional capabilities a model declares (:mod:`conrod.film.capabilities`).
 
-from conrod.film.base import BearingGeometry, FeedHole, FilmModel, FilmResult, FilmState, Groove
-from conrod.film.capabilities import (
-    CompiledKernel,
-    HasCompiledKernel,
-    HasMemory,
-    QuasiStaticRequest,
-    SupportsDeformation,
-)
-from conrod.film.short_bearing import ShortBearingFilm
-from conrod.film.wrapper import FilmWrapper
+The names below are imported when first used, so that reading a case file (which needs
+:class:`BearingGeometry`) does not compile or load a film model.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.film.base import (
+        BearingGeometry,
+        FeedHole,
+        FilmModel,
+        FilmResult,
+        FilmState,
+        Groove,
+    )
+    from conrod.film.capabilities import (
+        CompiledKernel,
+        HasCompiledKernel,
+        HasMemory,
+        QuasiStaticRequest,
+        SupportsDeformation,
+    )
+    from conrod.film.short_bearing import ShortBearingFilm
+    from conrod.film.wrapper import FilmWrapper
+
+_PUBLIC = {
+    **dict.fromkeys(("BearingGeometry", "FeedHole", "FilmModel", "FilmResult", "FilmState",
+                     "Groove"), "conrod.film.base"),
+    **dict.fromkeys(("CompiledKernel", "HasCompiledKernel", "HasMemory", "QuasiStaticRequest",
+                     "SupportsDeformation"), "conrod.film.capabilities"),
+    "ShortBearingFilm": "conrod.film.short_bearing",
+    "FilmWrapper": "conrod.film.wrapper",
+}
+"""Public name → the module that defines it."""
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _PUBLIC:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_PUBLIC[name]), name)
+    globals()[name] = value
+    return value
+
 
 __all__ = [
     "BearingGeometry",

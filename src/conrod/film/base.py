@@ -31,10 +31,20 @@ All quantities are given in one *film frame* with axes x, y in the bearing mid-p
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
-from typing import Protocol, runtime_checkable
+from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
+
+from conrod.errors import CaseError
+
+GEOMETRY_LIMITS = {"diameter": (1.0e-3, 20.0), "length_to_diameter": (1.0e-3, 20.0),
+                   "clearance_to_radius": (1.0e-6, 0.1)}
+"""Ranges a :class:`BearingGeometry` is checked against: journal diameter [m], width as a
+multiple of it [-], radial clearance as a multiple of the journal radius [-]."""
+MAX_FILM_VISCOSITY = 1.0e6
+"""Largest viscosity a :class:`FilmState` accepts [Pa s] (bitumen; oils are below 10)."""
 
 
 @dataclass(frozen=True)
@@ -65,6 +75,24 @@ class FeedHole:
     angle: float
     diameter: float
     axial_position: float = 0.0
+
+
+def check_range(owner: str, name: str, value: Any, low: float, high: float, unit: str, *,
+                low_open: bool = False) -> None:
+    """:class:`CaseError` naming ``owner.name``, the value, the range and the unit unless
+    ``value`` is a real number in [``low``, ``high``] (``low`` excluded with ``low_open``)."""
+    lower = f"> {low:g}" if low_open else f">= {low:g}"
+    allowed = f"(allowed: {lower} and <= {high:g} {unit})"
+    if not _is_number(value):
+        raise CaseError(f"{owner} {name} = {value!r}: a number is required {allowed}")
+    above_low = value > low if low_open else value >= low
+    if not (above_low and value <= high):
+        raise CaseError(f"{owner} {name} = {value!r}: out of range {allowed}")
+
+
+def _is_number(value: Any) -> bool:
+    """A real number (not a bool)."""
+    return not isinstance(value, bool) and isinstance(value, int | float | np.integer | np.floating)
 
 
 def _refuse_positional(cls: type, args: tuple, why: str, example: str) -> None:
@@ -103,6 +131,28 @@ class BearingGeometry:
         _refuse_positional(cls, args, "diameter, width and clearance are all in metres",
                            "diameter=0.05, width=0.025, radial_clearance=25e-6")
         return super().__new__(cls)
+
+    def __post_init__(self) -> None:
+        """Lengths within physical ranges (:data:`GEOMETRY_LIMITS`), pressures finite with
+        cavitation ≤ 0 ≤ supply."""
+        owner = "BearingGeometry"
+        check_range(owner, "diameter", self.diameter, *GEOMETRY_LIMITS["diameter"], "m")
+        low, high = GEOMETRY_LIMITS["length_to_diameter"]
+        check_range(owner, "width", self.width, low * self.diameter, high * self.diameter,
+                    f"m, i.e. {low:g} to {high:g} x diameter")
+        low, high = GEOMETRY_LIMITS["clearance_to_radius"]
+        check_range(owner, "radial_clearance", self.radial_clearance, low * self.radius,
+                    high * self.radius, f"m, i.e. {low:g} to {high:g} x journal radius")
+        check_range(owner, "supply_pressure", self.supply_pressure, 0.0, 1.0e9, "Pa")
+        cavitation = self.cavitation_pressure
+        if not (_is_number(cavitation) and math.isfinite(cavitation) and cavitation <= 0.0):
+            raise CaseError(f"{owner} cavitation_pressure = {cavitation!r}: out of range "
+                            "(allowed: finite and <= 0 Pa; very negative: no cavitation)")
+        for name, kind in (("grooves", Groove), ("feed_holes", FeedHole)):
+            items = getattr(self, name)
+            if not isinstance(items, tuple) or not all(isinstance(i, kind) for i in items):
+                raise CaseError(f"{owner} {name} = {items!r}: a tuple of {kind.__name__} is "
+                                "required")
 
     @property
     def radius(self) -> float:
@@ -148,6 +198,13 @@ class FilmState:
                            "clearance", "eccentricity_x=15e-6, eccentricity_y=0.0, "
                            "velocity_x=0.0, velocity_y=0.0, journal_speed=300.0, viscosity=0.01")
         return super().__new__(cls)
+
+    def __post_init__(self) -> None:
+        """A viscosity every film can use: finite and > 0 [Pa s]."""
+        viscosity = self.viscosity
+        if not (type(viscosity) is float and 0.0 < viscosity < math.inf):  # the fast path
+            check_range("FilmState", "viscosity", viscosity, 0.0, MAX_FILM_VISCOSITY, "Pa s",
+                        low_open=True)
 
 
 @dataclass

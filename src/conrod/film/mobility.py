@@ -33,6 +33,7 @@ from typing import Any
 
 import numpy as np
 
+from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel
 from conrod.film.table import TabulatedFilm
@@ -66,6 +67,9 @@ class MobilityFilm:
     def __post_init__(self) -> None:
         from conrod.film.table import check_tabulable
 
+        if not isinstance(self.geometry, BearingGeometry):
+            raise CaseError(f"MobilityFilm: geometry = {type(self.geometry).__name__}: a "
+                            "conrod.BearingGeometry is required")
         check_tabulable(self.geometry, self.name)
         if self.base is None:
             from conrod.film.reynolds import ReynoldsFilm

@@ -17,10 +17,12 @@ Tables are stored as ``<sha256>.npz`` in ``cache_dir`` (default ``~/.cache/conro
 the key hashing the geometry, the base model and its grid, and the table grid. Each file
 stores a SHA-256 checksum of its tables; a file that is unreadable, truncated, of the wrong
 shape, non-finite or fails the checksum is rebuilt with a :class:`~conrod.errors.CacheWarning`.
+A cache folder that cannot be used is skipped with one :class:`~conrod.errors.CacheWarning`.
 """
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import hashlib
 import json
@@ -34,7 +36,7 @@ from typing import Any
 import numba as nb
 import numpy as np
 
-from conrod.errors import CacheWarning, CaseError
+from conrod.errors import CacheWarning, CaseError, ConvergenceError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 from conrod.film.capabilities import (
     CompiledKernel,
@@ -57,11 +59,15 @@ from conrod.io.atomic import atomic_path
 
 TABLE_FORMAT = 4
 """Bumped whenever the stored content changes meaning (part of the cache key) [-]."""
-DEFAULT_CACHE_DIR = Path.home() / ".cache" / "conrod" / "tables"
+DEFAULT_CACHE_DIR = Path("~") / ".cache" / "conrod" / "tables"
 QUANTITIES = ("log_magnitude", "turning", "side_flow", "supply_flow", "max_pressure",
               "peak_cos", "peak_sin", "cavitated")
 PER_SPEED = ("side_flow", "supply_flow", "max_pressure")
 """Tabulated per unit squeeze speed (scale with |v_s|); the rest are direction-only."""
+UNUSABLE_FOLDERS: set[str] = set()
+"""Cache folders found unusable in this process (each warned about once)."""
+KEPT_IN_MEMORY: dict[str, dict[str, np.ndarray]] = {}
+"""Tables built in this process whose cache folder was unusable, by cache key."""
 REFERENCE_VISCOSITY = 0.01
 """Viscosity of the table solves [Pa s] (results are scaled out)."""
 REFERENCE_RATE = 100.0
@@ -126,15 +132,19 @@ class TabulatedFilm:
     loaded_from_cache: bool = field(default=False, init=False)
 
     def __post_init__(self) -> None:
+        if not isinstance(self.base, FilmModel):
+            raise CaseError(f"TabulatedFilm: base = {type(self.base).__name__}: a film model "
+                            "is required (e.g. ReynoldsFilm(geometry))")
         self.geometry = self.base.geometry
         check_tabulable(self.geometry)
         if getattr(self.base, "pressure_viscosity", None) is not None:
             raise CaseError("table film over a piezoviscous base: not allowed (the table "
                             "assumes force ∝ μω); use the base film directly")
-        if self.n_eps < 3 or self.n_direction < 8 or self.n_direction % 2:
+        if not all(type(n) is int for n in (self.n_eps, self.n_direction)) or (
+                self.n_eps < 3 or self.n_direction < 8 or self.n_direction % 2):
             raise CaseError(f"table grid n_eps = {self.n_eps}, n_direction = {self.n_direction}: "
                             "allowed n_eps >= 3, n_direction even >= 8")
-        if not 0.0 < self.eccentricity_max < 1.0:
+        if not (isinstance(self.eccentricity_max, float) and 0.0 < self.eccentricity_max < 1.0):
             raise CaseError(f"eccentricity_max = {self.eccentricity_max}: allowed (0, 1) [-]")
         g = self.geometry
         self.s_step = stretched(self.eccentricity_max) / (self.n_eps - 1)
@@ -166,20 +176,36 @@ class TabulatedFilm:
         return folder.expanduser() / f"{self.cache_key()}.npz"
 
     def _load_or_build(self) -> dict[str, np.ndarray]:
-        path = self.cache_path()
-        if self.use_cache and path.exists():
-            tables = read_cached_tables(path, (self.n_eps, self.n_direction))
-            if tables is not None:
-                self.loaded_from_cache = True
-                return tables
-        start = time.perf_counter()
-        tables = build_squeeze_tables(self.base, self.eccentricities(), self.directions())
-        self.build_seconds = time.perf_counter() - start
-        if self.use_cache:
-            save: Any = np.savez  # numpy's stub types the keyword arrays as allow_pickle
+        if not self.use_cache:
+            return self._build()
+        key = self.cache_key()
+        if key in KEPT_IN_MEMORY:  # built earlier in this process; its folder is unusable
+            return KEPT_IN_MEMORY[key]
+        try:
+            path = self.cache_path()
+            tables = (read_cached_tables(path, (self.n_eps, self.n_direction))
+                      if path.exists() else None)
+        except (OSError, RuntimeError) as error:  # RuntimeError: no home folder
+            warn_cache_unusable(self.cache_dir, error)
+            return KEPT_IN_MEMORY.setdefault(key, self._build())
+        if tables is not None:
+            self.loaded_from_cache = True
+            return tables
+        tables = self._build()
+        save: Any = np.savez  # numpy's stub types the keyword arrays as allow_pickle
+        try:
             with atomic_path(path) as tmp:
                 save(tmp, checksum=np.frombuffer(tables_checksum(tables), dtype=np.uint8),
                      **tables)
+        except OSError as error:
+            warn_cache_unusable(self.cache_dir, error)
+            KEPT_IN_MEMORY[key] = tables
+        return tables
+
+    def _build(self) -> dict[str, np.ndarray]:
+        start = time.perf_counter()
+        tables = build_squeeze_tables(self.base, self.eccentricities(), self.directions())
+        self.build_seconds = time.perf_counter() - start
         return tables
 
     def directions(self) -> np.ndarray:
@@ -234,8 +260,14 @@ class TabulatedFilm:
         eps, cos_psi, sin_psi, v_r, v_t = squeeze_velocity(
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             state.journal_speed + state.shell_speed, c)
+        if eps >= 1.0:
+            raise self.beyond_range(eps, "the journal touches the shell")
         values = self._interpolate(eps, v_r, v_t)
         mu = state.viscosity
+        if eps > self.eccentricity_max and not (values["max_pressure"] >= 0.0 and all(
+                math.isfinite(value) for value in values.values())):
+            raise self.beyond_range(eps, "the extrapolated film is not physical (p_max = "
+                                    f"{mu * values['max_pressure']:.3g} Pa)")
         f_r, f_t = (mu * self.force_scale * values[k] for k in ("radial", "tangential"))
         eps_c = min(eps, 1.0 - 1e-9)
         couette = (2.0 * math.pi * mu * g.radius**3 * g.width
@@ -255,6 +287,14 @@ class TabulatedFilm:
             friction_power=abs((wedge - couette) * sliding),
             extra={"eccentricity_ratio": eps},
 )
+
+    def beyond_range(self, eps: float, why: str) -> ConvergenceError:
+        """The error of a state past the last eccentricity node (``why`` it is unusable)."""
+        gap = self.geometry.radial_clearance * (1.0 - eps)
+        return ConvergenceError(
+            f"journal eccentricity ratio {eps:.6g} (h_min = {gap:.3g} m) is beyond the table's "
+            f"eccentricity range (<= {self.eccentricity_max:g}), where {why}: the film of this "
+            "table cannot carry the load there")
 
     def _interpolate(self, eps: float, v_r: float, v_t: float) -> dict[str, float]:
         """Dimensionless force (radial, tangential) × |v_s| and the other quantities."""
@@ -303,28 +343,49 @@ def tables_checksum(tables: dict[str, np.ndarray]) -> bytes:
     return digest.digest()
 
 
+def warn_cache_unusable(cache_dir: str | Path | None, error: BaseException) -> None:
+    """A :class:`CacheWarning`, once per folder and process: the table cache folder cannot
+    be used; the run goes on, its tables kept in memory (:data:`KEPT_IN_MEMORY`)."""
+    folder = Path(cache_dir) if cache_dir is not None else DEFAULT_CACHE_DIR
+    with contextlib.suppress(RuntimeError):
+        folder = folder.expanduser()
+    if str(folder) not in UNUSABLE_FOLDERS:
+        UNUSABLE_FOLDERS.add(str(folder))
+        reason = getattr(error, "strerror", None) or str(error) or type(error).__name__
+        warnings.warn(f"film table cache folder {str(folder)!r} cannot be used ({reason}); "
+                      "going on without it (tables built in this process are kept in memory)",
+                      CacheWarning, stacklevel=4)
+
+
 def read_cached_tables(path: Path, shape: tuple[int, int]) -> dict[str, np.ndarray] | None:
     """Tables stored at ``path`` if intact: readable, every quantity of ``shape``, finite,
     matching the stored checksum. Otherwise None, with a :class:`CacheWarning` (the caller
-    rebuilds and overwrites the file)."""
+    rebuilds and overwrites the file). A file that cannot be opened raises ``OSError``
+    (the folder cannot be used)."""
+    with open(path, "rb") as handle:
+        tables, reason = _intact_tables(handle, shape)
+    if reason:
+        warnings.warn(f"film table cache {str(path)!r} is corrupt ({reason}); rebuilding it",
+                      CacheWarning, stacklevel=3)
+        return None
+    return tables
+
+
+def _intact_tables(handle: Any, shape: tuple[int, int]) -> tuple[dict[str, np.ndarray], str]:
+    """(tables, "") when the stored tables are intact, else ({}, what is wrong)."""
     try:
-        with open(path, "rb") as handle, np.load(handle, allow_pickle=False) as stored:
+        with np.load(handle, allow_pickle=False) as stored:
             tables = {q: np.array(stored[q], dtype=np.float64) for q in QUANTITIES}
             checksum = bytes(np.asarray(stored["checksum"], dtype=np.uint8))
     except Exception as error:  # truncated, garbage, empty, old format: all mean rebuild
-        reason = f"unreadable ({type(error).__name__})"
-    else:
-        if any(values.shape != shape for values in tables.values()):
-            reason = "wrong table shape"
-        elif not all(np.all(np.isfinite(values)) for values in tables.values()):
-            reason = "non-finite values"
-        elif checksum != tables_checksum(tables):
-            reason = "checksum mismatch"
-        else:
-            return tables
-    warnings.warn(f"film table cache {str(path)!r} is corrupt ({reason}); rebuilding it",
-                  CacheWarning, stacklevel=3)
-    return None
+        return {}, f"unreadable ({type(error).__name__})"
+    if any(values.shape != shape for values in tables.values()):
+        return {}, "wrong table shape"
+    if not all(np.all(np.isfinite(values)) for values in tables.values()):
+        return {}, "non-finite values"
+    if checksum != tables_checksum(tables):
+        return {}, "checksum mismatch"
+    return tables, ""
 
 
 def random_state(rng: np.random.Generator, clearance: float, eps_max: float) -> FilmState:

@@ -7,6 +7,11 @@ compiled (numba) or C code called, where it turns into a ``SystemError`` or wors
 integration steps or cycles, and before a result folder is swapped in). A second Ctrl-C
 ends the process at once with exit code 130; result folders are then still either the old
 or the new result (:mod:`conrod.io.result_folder`).
+
+While a command starts (:func:`interrupts_stop_at_once`: loading the command line and the
+numerical modules, reading and checking the input) nothing is computed or written yet, and a
+module being imported can turn a ``KeyboardInterrupt`` into an ``ImportError``; there Ctrl-C
+ends the process at once, with one line and exit code 130.
 """
 
 from __future__ import annotations
@@ -21,6 +26,8 @@ from typing import Any
 
 EXIT_INTERRUPTED = 130
 """Exit code of a process ended by Ctrl-C (128 + SIGINT)."""
+INTERRUPTED_MESSAGE = "interrupted (nothing written)"
+"""The line a command prints when Ctrl-C stopped it before anything was written."""
 _pending = threading.Event()
 
 
@@ -38,6 +45,29 @@ def _on_sigint(signum: int, frame: Any) -> None:
     _pending.set()
     os.write(sys.stderr.fileno(),
              b"stopping at the next safe point (Ctrl-C again to stop at once)\n")
+
+
+def _stop_at_once(signum: int, frame: Any) -> None:
+    with contextlib.suppress(OSError):
+        os.write(2, f"{INTERRUPTED_MESSAGE}\n".encode())
+    os._exit(EXIT_INTERRUPTED)
+
+
+@contextlib.contextmanager
+def interrupts_stop_at_once() -> Iterator[None]:
+    """Within the block (a command starting: imports, reading and checking the input;
+    nothing written yet), Ctrl-C ends the process at once: one line, exit code 130.
+    Main thread only; the previous handler is restored after the block."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, _stop_at_once)
+    if _pending.is_set():  # pressed a moment ago, while Ctrl-C was deferred
+        _stop_at_once(signal.SIGINT, None)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
 
 
 @contextlib.contextmanager

@@ -46,6 +46,12 @@ DERIVED_FILES = frozenset({"report.html", "report.pdf"})
 """Files made from a result folder's content (``conrod report``): stale after a rerun."""
 SHOWN_ENTRIES = 4
 """How many entries of a refused folder the error names."""
+RESERVED_PATH_BYTES = 200
+"""Room kept in a path for what is written below ``--out``: staging names, result files,
+a sweep's variant folders [bytes]."""
+STAGE_NAME_BYTES = 100
+"""A longer ``--out`` name is cut to this many bytes (and tagged with its hash) in the name
+of the staging folder, so that the staging name fits in a file name [bytes]."""
 _CHECKED: set[Path] = set()
 """Folders accepted by :func:`check_output_folder` in this process (with their inputs)."""
 _RENAME_EXCHANGE = 2
@@ -69,6 +75,7 @@ def check_output_folder(out: str | os.PathLike[str], option: str = "--out",
     """
     path = Path(out).absolute()
     shown = f"{option} {str(out)!r}"
+    _check_lengths(path, shown)
     if path.exists() and not path.is_dir():
         raise CaseError(f"{shown}: is an existing file (allowed: a folder, new or existing)")
     _check_owned(path, shown, marker, {Path(p).absolute() for p in inputs})
@@ -88,6 +95,52 @@ def check_output_folder(out: str | os.PathLike[str], option: str = "--out",
     os.rmdir(probe)
     _CHECKED.add(path)
     return path
+
+
+def check_before_writing(out: str | os.PathLike[str], option: str) -> Path:
+    """:func:`check_output_folder` for a writer called from Python (``option`` names its
+    argument), unless a command of this process already checked ``out``."""
+    if not isinstance(out, str | os.PathLike):
+        raise CaseError(f"{option} = {out!r}: a folder path is required (str or Path)")
+    path = Path(out).absolute()
+    return path if path in _CHECKED else check_output_folder(out, option)
+
+
+def _check_lengths(path: Path, shown: str) -> None:
+    """Refuse names and paths the file system cannot hold (with room for the results)."""
+    existing = next(folder for folder in path.parents if os.path.isdir(folder))
+    name_max = _limit(existing, "PC_NAME_MAX", 255)
+    path_max = _limit(existing, "PC_PATH_MAX", 4096)
+    for part in path.parts[1:]:
+        size = len(os.fsencode(part))
+        if size > name_max:
+            raise CaseError(f"{shown}: a folder name of {size} bytes is too long (allowed: "
+                            f"<= {name_max} bytes per name)")
+    size = len(os.fsencode(str(path)))
+    if size > path_max - RESERVED_PATH_BYTES:
+        raise CaseError(f"{shown}: a path of {size} bytes is too long (allowed: <= "
+                        f"{path_max - RESERVED_PATH_BYTES} bytes, leaving room for the "
+                        "result files)")
+
+
+def _limit(folder: Path, name: str, default: int) -> int:
+    """A file-system limit (``os.pathconf``) of ``folder``, ``default`` where unknown."""
+    try:
+        return int(os.pathconf(folder, name))
+    except (OSError, ValueError):
+        return default
+
+
+def stage_prefix(target: Path) -> str:
+    """Name prefix of the staging folders of ``target``: ``.<name>.conrod-stage-``, the
+    name cut to :data:`STAGE_NAME_BYTES` and tagged with its hash when longer."""
+    name = target.name
+    if len(os.fsencode(name)) > STAGE_NAME_BYTES:
+        digest = hashlib.sha256(os.fsencode(name)).hexdigest()[:12]
+        while len(os.fsencode(name)) > STAGE_NAME_BYTES - len(digest) - 1:
+            name = name[:-1]
+        name = f"{name}~{digest}"
+    return f".{name}{STAGE_TAG}"
 
 
 def _check_owned(path: Path, shown: str, marker: str, inputs: set[Path] = frozenset()
@@ -120,7 +173,7 @@ def staged_result_folder(out: str | os.PathLike[str], *, manifest: bool = True
         _check_owned(target, repr(str(out)), MANIFEST)
     target.parent.mkdir(parents=True, exist_ok=True)
     _remove_abandoned_stages(target)
-    stage = Path(tempfile.mkdtemp(prefix=f".{target.name}{STAGE_TAG}{os.getpid()}-",
+    stage = Path(tempfile.mkdtemp(prefix=f"{stage_prefix(target)}{os.getpid()}-",
                                   dir=target.parent))
     try:
         yield stage
@@ -196,7 +249,7 @@ def _swap_in(stage: Path, target: Path) -> None:
     if _exchange(stage, target):
         shutil.rmtree(stage, ignore_errors=True)  # now holds the previous result
         return
-    old = Path(tempfile.mkdtemp(prefix=f".{target.name}{STAGE_TAG}{os.getpid()}-",
+    old = Path(tempfile.mkdtemp(prefix=f"{stage_prefix(target)}{os.getpid()}-",
                                 dir=target.parent))
     os.rmdir(old)
     os.rename(target, old)
@@ -217,7 +270,7 @@ def _exchange(first: Path, second: Path) -> bool:
 
 def _remove_abandoned_stages(target: Path) -> None:
     """Remove stages next to ``target`` whose writing process no longer exists."""
-    prefix = f".{target.name}{STAGE_TAG}"
+    prefix = stage_prefix(target)
     for entry in target.parent.glob(f"{glob_escape(prefix)}*"):
         pid_text = entry.name[len(prefix):].split("-")[0]
         if pid_text.isdigit() and not _alive(int(pid_text)):

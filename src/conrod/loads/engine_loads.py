@@ -22,6 +22,7 @@ import numpy as np
 
 from conrod.cases.case import Case
 from conrod.cases.engine import EngineSection
+from conrod.cases.solver import LONGEST_CYCLE_DEG, MAX_OUTPUT_POINTS
 from conrod.errors import CaseError
 from conrod.loads import forces, kinematics
 from conrod.loads.cycle import LoadCycle
@@ -135,14 +136,32 @@ class EngineLoads:
 )
 
 
-def crank_angle_grid(step_deg: float) -> np.ndarray:
-    """Uniform grid 0 ≤ φ < 720° with ``step_deg`` dividing 720 [rad]; CaseError otherwise."""
-    if not (math.isfinite(step_deg) and 0.0 < step_deg <= 10.0):
-        raise CaseError(f"--step = {step_deg!r}: out of range (allowed: > 0 and <= 10 deg)")
-    count = 720.0 / step_deg
+SMALLEST_STEP_DEG = LONGEST_CYCLE_DEG / MAX_OUTPUT_POINTS
+"""Finest crank-angle step of the loads: the row budget of a case file's output step [deg]."""
+LARGEST_STEP_DEG = 10.0
+"""Coarsest crank-angle step of the loads [deg]."""
+
+
+def check_step(step_deg: Any, name: str = "step_deg") -> float:
+    """``step_deg`` [deg] if it is a number within the row budget dividing 720 (``name``
+    is the option or argument named in the :class:`CaseError` otherwise)."""
+    allowed = (f"allowed: >= {SMALLEST_STEP_DEG:g} (budget {MAX_OUTPUT_POINTS} rows per "
+               f"cycle) and <= {LARGEST_STEP_DEG:g} deg, dividing 720")
+    if isinstance(step_deg, bool) or not isinstance(step_deg, int | float):
+        raise CaseError(f"{name} = {step_deg!r}: a number is required ({allowed})")
+    if not (math.isfinite(step_deg) and SMALLEST_STEP_DEG <= step_deg <= LARGEST_STEP_DEG):
+        raise CaseError(f"{name} = {step_deg!r}: out of range ({allowed})")
+    count = LONGEST_CYCLE_DEG / step_deg
     if abs(count - round(count)) > 1e-9 * count:
-        raise CaseError(f"--step = {step_deg!r}: must divide 720 deg exactly (e.g. 0.5, 1, 2, 5)")
-    return np.radians(np.arange(round(count)) * step_deg)
+        raise CaseError(f"{name} = {step_deg!r}: must divide 720 deg exactly (e.g. 0.5, 1, 2, 5)")
+    return float(step_deg)
+
+
+def crank_angle_grid(step_deg: float, name: str = "step_deg") -> np.ndarray:
+    """Uniform grid 0 ≤ φ < 720° with ``step_deg`` dividing 720 [rad]; CaseError otherwise
+    (:func:`check_step`)."""
+    step = check_step(step_deg, name)
+    return np.radians(np.arange(round(LONGEST_CYCLE_DEG / step)) * step)
 
 
 def _piston_acceleration(engine: EngineSection, phi: np.ndarray, omega: float) -> np.ndarray:
@@ -182,7 +201,11 @@ def _pin_force(
 
 
 def compute_engine_loads(case: Case, step_deg: float = 1.0) -> EngineLoads:
-    """Loads on the big-end bearing of ``case`` over 0..720° (end excluded) every ``step_deg``."""
+    """Loads on the big-end bearing of ``case`` over 0..720° (end excluded) every ``step_deg``
+    [deg]; bad arguments raise :class:`CaseError` naming them."""
+    if not isinstance(case, Case):
+        raise CaseError(f"case = {case!r}: a conrod.Case is required (e.g. "
+                        "Case.from_toml('case.toml'))")
     case.require("loads", "engine")
     engine = case.engine
     assert engine is not None

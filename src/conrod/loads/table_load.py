@@ -11,6 +11,7 @@ One cycle of ``cycle_deg``; a closing row at ``first + cycle_deg`` is dropped (p
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 
 import numpy as np
@@ -67,6 +68,9 @@ def _row_values(path: Path, number: int, line: str, header: list[str]) -> list[f
 
 def load_cycle_from_table(section: LoadTableSection, path: Path) -> LoadCycle:
     """Build the :class:`LoadCycle` of a ``[load]`` section whose table is at ``path``."""
+    if not isinstance(section, LoadTableSection) or not isinstance(path, str | os.PathLike):
+        raise CaseError(f"load_cycle_from_table: section = {type(section).__name__}, path = "
+                        f"{path!r}: a LoadTableSection (case.load) and a table path are required")
     columns = read_load_columns(path)
     angle_deg = columns["crank_angle_deg"]
     if np.any(np.diff(angle_deg) <= 0.0):

@@ -12,13 +12,39 @@ Layers: :mod:`geometry` (ellipse contact law) and :mod:`kernel` (right-hand side
 numba kernels; :mod:`integrator` integrates them; :mod:`model` holds the components;
 :mod:`simulation` and :mod:`setup` run one operating mode; :mod:`results` and :mod:`regimes`
 type them (the sweep over many modes is :func:`conrod.sweep.mechanism.run_sweep`).
+
+The names below are imported when first used (the kernels compile with numba).
 """
 
-from conrod.mechanism.model import ClearanceJoint, CrankTrain, Mechanism
-from conrod.mechanism.regimes import SweepResults
-from conrod.mechanism.results import Impacts, MechanismResults
-from conrod.mechanism.setup import MechanismCase, mechanism_case
-from conrod.mechanism.simulation import RunSettings, simulate
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.mechanism.model import ClearanceJoint, CrankTrain, Mechanism
+    from conrod.mechanism.regimes import SweepResults
+    from conrod.mechanism.results import Impacts, MechanismResults
+    from conrod.mechanism.setup import MechanismCase, mechanism_case
+    from conrod.mechanism.simulation import RunSettings, simulate
+
+_PUBLIC = {
+    **dict.fromkeys(("ClearanceJoint", "CrankTrain", "Mechanism"), "conrod.mechanism.model"),
+    "SweepResults": "conrod.mechanism.regimes",
+    **dict.fromkeys(("Impacts", "MechanismResults"), "conrod.mechanism.results"),
+    **dict.fromkeys(("MechanismCase", "mechanism_case"), "conrod.mechanism.setup"),
+    **dict.fromkeys(("RunSettings", "simulate"), "conrod.mechanism.simulation"),
+}
+"""Public name → the module that defines it."""
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _PUBLIC:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_PUBLIC[name]), name)
+    globals()[name] = value
+    return value
+
 
 __all__ = [
     "ClearanceJoint", "CrankTrain", "Impacts", "Mechanism", "MechanismCase", "MechanismResults",

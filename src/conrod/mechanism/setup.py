@@ -13,6 +13,7 @@ import numpy as np
 
 from conrod.cases.case import Case
 from conrod.cases.mechanism import MAX_STEPS_PER_CYCLE, ClearanceSection, JointClearanceSection
+from conrod.errors import CaseError
 from conrod.mechanism.model import ROD_INERTIA_FACTOR, ClearanceJoint, CrankTrain, Mechanism
 from conrod.mechanism.simulation import CYCLE, RunSettings
 from conrod.units import rpm_to_rad_s
@@ -82,6 +83,9 @@ def gas_force_table(case: Case, points: int = GAS_TABLE_POINTS) -> np.ndarray:
 
 def mechanism_case(case: Case) -> MechanismCase:
     """Validate that the case has ``[engine]`` and ``[clearance]`` and build the run."""
+    if not isinstance(case, Case):
+        raise CaseError(f"mechanism_case: case = {type(case).__name__}: a conrod.Case is "
+                        "required (e.g. Case.from_toml('case.toml'))")
     case.require("mechanism", "engine", "clearance")
     engine, clearance = case.engine, case.clearance
     assert engine is not None and clearance is not None  # checked by require()

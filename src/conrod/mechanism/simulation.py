@@ -10,11 +10,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numba import njit
 
-from conrod.errors import ConvergenceError
+from conrod.cases.mechanism import MAX_OUTPUT_ROWS
+from conrod.errors import CaseError, ConvergenceError
+from conrod.film.base import check_range
 from conrod.loads.kinematics import piston_displacement
 from conrod.mechanism import integrator as rk
 from conrod.mechanism import kernel as k
@@ -23,6 +26,8 @@ from conrod.mechanism.results import Impacts, MechanismResults
 
 CYCLE = 4.0 * math.pi
 """Four-stroke cycle [rad]."""
+MIN_GAS_POINTS = 1
+"""Fewest gas-force values over the cycle that :func:`simulate` interpolates [-]."""
 
 
 @dataclass(frozen=True)
@@ -47,6 +52,28 @@ class RunSettings:
     impact_separation: float = 0.01
     max_steps: int = 20_000_000
 
+    def __post_init__(self) -> None:
+        """Every setting in its range (those of ``[clearance]`` and its budgets)."""
+        for name in ("cycles", "max_steps"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, int | np.integer):
+                raise CaseError(f"RunSettings {name} = {value!r}: a whole number is required")
+        check_range("RunSettings", "cycles", self.cycles, 1, 50, "cycles")
+        check_range("RunSettings", "max_steps", self.max_steps, 1, 1e9, "steps")
+        for name, high, unit in (("tolerance", 0.1, "(of the smallest radial clearance)"),
+                                 ("impact_separation", 1.0, "(of the smallest radial clearance)"),
+                                 ("output_step", math.radians(10.0), "rad"),
+                                 ("max_step", math.radians(5.0), "rad")):
+            check_range("RunSettings", name, getattr(self, name), 0.0, high, unit, low_open=True)
+        if self.fixed_step is not None:
+            check_range("RunSettings", "fixed_step", self.fixed_step, 0.0, math.radians(5.0),
+                        "rad", low_open=True)
+        rows = self.cycles * CYCLE / self.output_step
+        if rows > MAX_OUTPUT_ROWS:
+            raise CaseError(f"RunSettings output_step = {self.output_step!r}: out of range "
+                            f"(allowed: >= {self.cycles * CYCLE / MAX_OUTPUT_ROWS:.3g} rad "
+                            f"with cycles = {self.cycles}, budget {MAX_OUTPUT_ROWS} rows)")
+
 
 def rigid_piston_position(crank_angle: np.ndarray, crank_radius: float, rod_length: float):
     """Exact slider-crank pin position from the crank centre x = r cos α + √(L² − r² sin² α)
@@ -70,10 +97,11 @@ def simulate(
     """Integrate ``settings.cycles`` cycles from the [D3] initial state at firing TDC.
 
     gas_table : ndarray  Gas force on the piston at equally spaced angles over [0, 4π) [N].
-    Raises ConvergenceError when the integrator fails or exceeds its step budget.
+    Raises ConvergenceError when the integrator fails or exceeds its step budget, and
+    CaseError naming the argument when one is not what it must be.
     """
+    table = checked_arguments(mechanism, gas_table, settings)
     p = mechanism.parameters()
-    table = np.ascontiguousarray(gas_table, dtype=float)
     y0 = seed_initial_state(mechanism, float(table[0]))
     end = settings.cycles * CYCLE
     samples = int(round(end / settings.output_step))
@@ -90,6 +118,25 @@ def simulate(
     count = min(count, impacts.shape[0])
     found = Impacts(impacts[:count, 0], impacts[:count, 1].astype(int), impacts[:count, 2])
     return _assemble(mechanism, p, table, out_alpha, out_y, found, settings, steps, rejected)
+
+
+def checked_arguments(mechanism: Any, gas_table: Any, settings: Any) -> np.ndarray:
+    """The gas table as a contiguous float array, once the arguments of :func:`simulate`
+    are what they must be; otherwise :class:`CaseError` naming the argument."""
+    for name, value, kind in (("mechanism", mechanism, Mechanism),
+                              ("settings", settings, RunSettings)):
+        if not isinstance(value, kind):
+            raise CaseError(f"simulate: {name} = {type(value).__name__}: a "
+                            f"conrod.mechanism.{kind.__name__} is required")
+    try:
+        table = np.ascontiguousarray(gas_table, dtype=float)
+    except (TypeError, ValueError):
+        table = np.zeros(0)
+    if table.ndim != 1 or table.size < MIN_GAS_POINTS or not np.all(np.isfinite(table)):
+        raise CaseError(f"simulate: gas_table of shape {np.shape(gas_table)}: out of range "
+                        f"(allowed: a 1-D array of >= {MIN_GAS_POINTS} finite gas forces "
+                        "over 0..4π [N])")
+    return table
 
 
 def _check_status(status: int, reached: float, steps: int) -> None:

@@ -27,8 +27,9 @@ from functools import singledispatch
 from pathlib import Path
 from typing import Any
 
+from conrod.errors import CaseError
 from conrod.io.atomic import atomic_path, write_csv, write_json, write_npz, write_text
-from conrod.io.result_folder import staged_result_folder
+from conrod.io.result_folder import check_before_writing, staged_result_folder
 
 MANIFEST = "manifest.json"
 """File name of the manifest, written last [-]."""
@@ -70,6 +71,10 @@ class FigureSpec:
     build: Callable[[], Any]
 
 
+class UnregisteredResultError(CaseError, TypeError):
+    """:func:`write_results` given an object of a type without registered tables."""
+
+
 @singledispatch
 def tables(results: Any) -> tuple[TableSpec, ...]:
     """Tables of ``results`` (registered per result type)."""
@@ -95,7 +100,16 @@ def write_results(
     """Write the tables (and figures) of ``results`` and ``manifest.json`` as one result set:
     into a staging folder that replaces ``out_dir`` whole
     (:func:`conrod.io.result_folder.staged_result_folder`, which adds each file's size and
-    SHA-256 to the manifest); return the paths written (manifest last)."""
+    SHA-256 to the manifest); return the paths written (manifest last). Arguments that
+    are not a registered result, a usable folder or a bool raise :class:`CaseError`."""
+    if tables.dispatch(type(results)) is tables.dispatch(object):
+        name = type(results).__name__
+        raise UnregisteredResultError(f"write_results: results = {name}: no tables registered "
+                                      f"for {name} (allowed: what Simulation.run(), "
+                                      "compute_engine_loads(), ... return)")
+    if not isinstance(figures, bool):
+        raise CaseError(f"write_results: figures = {figures!r}: True or False is required")
+    check_before_writing(out_dir, "write_results: out_dir")
     table_specs = tables(results)
     figure_specs = _figure_specs(results) if figures else ()
     contents = [(spec, spec.build()) for spec in table_specs]

@@ -3,6 +3,26 @@ elastic bore), the elastohydrodynamic run with its rigid companion, the rod-stre
 running-in. Nothing below this package imports it; the sweep, the CLI, the report and the
 package's public face do."""
 
-from conrod.simulation.simulation import Simulation, default_film
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover
+    from conrod.simulation.simulation import Simulation, default_film
+
+_PUBLIC = {
+    **dict.fromkeys(("Simulation", "default_film"), "conrod.simulation.simulation"),
+}
+"""Public name → the module that defines it (imported when the name is first used)."""
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _PUBLIC:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_PUBLIC[name]), name)
+    globals()[name] = value
+    return value
+
 
 __all__ = ["Simulation", "default_film"]

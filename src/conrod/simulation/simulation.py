@@ -73,6 +73,17 @@ class Simulation:
     def __init__(self, case: Case, film: FilmModel | str | None = None,
                  loads: LoadCycle | None = None, integrator: Integrator | str | None = None,
                  housing: Any = None, rigid_companion: bool = True, **overrides: Any):
+        if not isinstance(case, Case):  # the arguments, before anything is read from them
+            shown = repr(case) if len(repr(case)) <= 60 else repr(case)[:57] + "..."
+            raise CaseError(f"Simulation: case = {shown}: a conrod.Case is required "
+                            "(Case.from_toml(path) or Case.from_dict(data))")
+        for name, value in (("film", film), ("integrator", integrator)):
+            if isinstance(value, bool | int | float | dict | list | tuple):
+                raise CaseError(f"Simulation: {name} = {value!r}: a registered name or a "
+                                f"{name} object is required (or None for the case's)")
+        if not isinstance(rigid_companion, bool):
+            raise CaseError(f"Simulation: rigid_companion = {rigid_companion!r}: True or False "
+                            "is required")
         case.require("run", "bearing", "lubricant")
         if loads is None and case.engine is None and case.load is None:
             raise CaseError("run needs either [engine] or [load] (a load table) in the case file")

@@ -1,0 +1,153 @@
+"""numba's disk cache of conrod's compiled kernels: a cache file that cannot be read is a
+cache miss.
+
+numba keeps each compiled kernel in an index file (``.nbi``) and data files (``.nbc``), in
+``__pycache__`` beside the module or below ``NUMBA_CACHE_DIR``. A file cut short (a full
+disk, a killed process, an interrupted copy) or otherwise unreadable makes numba raise
+(``UnpicklingError``) every time the kernel is first called, and it never compiles again.
+Under :func:`tolerate_unreadable_cache` loading one of conrod's kernels from such a file
+discards that kernel's cache files instead, warns once per process
+(:class:`~conrod.errors.CacheWarning`, one line), and numba compiles the kernel and saves a
+good cache; the results are the same as with a good cache. A cache that cannot be written
+(a full disk) is one warning too: the kernel is simply not cached.
+
+.. code-block:: python
+
+    tolerate_unreadable_cache()   # done by ``import conrod``; numba need not be loaded yet
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib.machinery
+import os
+import sys
+import warnings
+from types import ModuleType
+from typing import TYPE_CHECKING, Any, cast
+
+from conrod.errors import CacheWarning
+
+if TYPE_CHECKING:  # pragma: no cover
+    from importlib.abc import Loader
+
+CACHING_MODULE = "numba.core.caching"
+"""The numba module whose ``Cache`` loads and saves compiled kernels."""
+OWN_PREFIX = "conrod."
+"""Kernels of modules below this prefix are guarded; numba's other users are left alone."""
+_state = {"warned": False}
+
+
+def tolerate_unreadable_cache() -> None:
+    """Guard the loading of conrod's compiled kernels (idempotent). numba is not imported:
+    if it is not loaded yet, its cache module is guarded as soon as it is."""
+    module = sys.modules.get(CACHING_MODULE)
+    if module is not None:
+        guard(module)
+    elif not any(isinstance(finder, _GuardOnImport) for finder in sys.meta_path):
+        sys.meta_path.insert(0, _GuardOnImport())
+
+
+def guard(caching: ModuleType) -> None:
+    """Wrap ``Cache.load_overload`` and ``Cache.save_overload`` of numba's ``caching``."""
+    cache_class = caching.Cache
+    if getattr(cache_class.load_overload, "conrod_guarded", False):
+        return
+    load, save = cache_class.load_overload, cache_class.save_overload
+
+    def load_overload(self: Any, sig: Any, target_context: Any) -> Any:
+        if not _own(self):
+            return load(self, sig, target_context)
+        try:
+            return load(self, sig, target_context)
+        except Exception as error:  # any unreadable entry: a cache miss
+            discard(self, error)
+            return None
+
+    def save_overload(self: Any, sig: Any, data: Any) -> None:
+        if not _own(self):
+            save(self, sig, data)
+            return
+        try:
+            save(self, sig, data)
+        except OSError as error:  # the folder takes no file (full, read-only): not cached
+            name, folder, _ = _files(self)
+            warn_once(f"compiled-kernel cache of {name!r} in {folder!r} could not be written "
+                      f"({error.strerror or error}); going on without it")
+        except Exception as error:  # its index could not be read (nor removed): not cached
+            discard(self, error)
+
+    load_overload.conrod_guarded = True  # type: ignore[attr-defined]
+    cache_class.load_overload = load_overload
+    cache_class.save_overload = save_overload
+
+
+def numba_attribute(instance: Any, name: str) -> Any:
+    """An attribute numba sets on its cache objects (it offers no public accessor)."""
+    return vars(instance)[name]
+
+
+def _own(cache: Any) -> bool:
+    function = numba_attribute(cache, "_py_func")
+    return str(getattr(function, "__module__", "")).startswith(OWN_PREFIX)
+
+
+def _files(cache: Any) -> tuple[str, str, str]:
+    """(kernel name, cache folder, index file name) of a numba cache."""
+    folder = str(numba_attribute(cache, "_cache_path"))
+    index_name = str(numba_attribute(numba_attribute(cache, "_cache_file"), "_index_name"))
+    return index_name.split("-")[0], folder, index_name
+
+
+def discard(cache: Any, error: BaseException) -> None:
+    """Remove the index and data files of ``cache``'s kernel; warn once per process."""
+    name, folder, index_name = _files(cache)
+    base = index_name.removesuffix(".nbi")
+    with contextlib.suppress(OSError):
+        for entry in os.scandir(folder):
+            if entry.name == index_name or (entry.name.startswith(f"{base}.")
+                                            and entry.name.endswith(".nbc")):
+                with contextlib.suppress(OSError):
+                    os.remove(entry.path)
+    warn_once(f"compiled-kernel cache of {name!r} in {folder!r} could not be read "
+              f"({str(error) or type(error).__name__}); discarded, compiling it again "
+              "(slower this once)")
+
+
+def warn_once(message: str) -> None:
+    """One :class:`CacheWarning` per process (one bad file is enough to know)."""
+    if not _state["warned"]:
+        _state["warned"] = True
+        warnings.warn(message, CacheWarning, stacklevel=3)
+
+
+class _GuardOnImport:
+    """A ``sys.meta_path`` finder: finds numba's caching module as the path finder does, and
+    guards it once loaded."""
+
+    def find_spec(self, fullname: str, path: Any, target: Any = None) -> Any:
+        if fullname != CACHING_MODULE:
+            return None
+        with contextlib.suppress(ValueError):
+            sys.meta_path.remove(self)
+        spec = importlib.machinery.PathFinder.find_spec(fullname, path)
+        if spec is not None and spec.loader is not None:
+            spec.loader = cast("Loader", _GuardingLoader(spec.loader))
+        return spec
+
+
+class _GuardingLoader:
+    """Delegates to numba's own loader, then guards the module it executed."""
+
+    def __init__(self, loader: Any):
+        self.loader = loader
+
+    def create_module(self, spec: Any) -> Any:
+        return self.loader.create_module(spec)
+
+    def exec_module(self, module: ModuleType) -> None:
+        self.loader.exec_module(module)
+        guard(module)
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.loader, name)

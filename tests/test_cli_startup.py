@@ -1,0 +1,64 @@
+"""Start-up stays light: ``import conrod``, ``conrod --version`` and the help pages load no
+part of the numerical stack (each checked in a fresh process, by what is in sys.modules)."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src"
+HEAVY = ("numba", "scipy", "pandas", "dask", "distributed", "matplotlib", "numpy", "skfem")
+"""Packages that only a computation (or a figure, a sweep) needs."""
+
+LOADED_AFTER = """
+import json, sys
+{statement}
+print(json.dumps(sorted(name for name in {heavy!r} if name in sys.modules)))
+"""
+
+CLI = """
+from conrod.cli.app import main
+try:
+    main()
+except SystemExit:
+    pass
+"""
+
+
+def _heavy_loaded(statement: str, *args: str) -> list[str]:
+    code = LOADED_AFTER.format(statement=statement, heavy=HEAVY)
+    env = {**os.environ, "PYTHONPATH": str(SRC)}
+    done = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
+                          env=env, check=False, timeout=120)
+    assert done.returncode == 0, done.stderr[-2000:]
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+@pytest.mark.parametrize("statement", [
+    "import conrod", "import conrod.film", "import conrod.mechanism", "import conrod.sweep",
+    "import conrod.io.result_folder", "from conrod import __version__, ConrodError",
+])
+def test_importing_the_package_loads_no_numerical_stack(statement):
+    assert _heavy_loaded(statement) == []
+
+
+@pytest.mark.parametrize("args", [("--version",), ("--help",), ("run", "--help"),
+                                  ("loads", "--help"), ("mechanism", "--help"),
+                                  ("steady", "--help")])
+def test_version_and_help_load_no_numerical_stack(args):
+    assert _heavy_loaded(CLI, *args) == []
+
+
+def test_a_lazy_name_is_the_defining_module_s_object():
+    import conrod
+    import conrod.film
+    from conrod.film.base import BearingGeometry
+
+    assert conrod.film.BearingGeometry is BearingGeometry is conrod.BearingGeometry
+    with pytest.raises(AttributeError, match="no attribute 'Bearing'"):
+        conrod.film.Bearing  # noqa: B018
