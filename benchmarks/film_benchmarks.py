@@ -32,13 +32,13 @@ import numba as nb
 import numpy as np
 
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.mass_conserving import MassConservingFilm
-from conrod.film.mobility import MobilityFilm
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.short_bearing import ShortBearingFilm
-from conrod.film.short_bearing_kernel import short_bearing_force
-from conrod.film.table import TabulatedFilm
-from conrod.film.table_kernel import mobility_velocity, table_force
+from conrod.film.mass_conserving.film import MassConservingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.short.film import ShortBearingFilm
+from conrod.film.short.kernel import short_bearing_force
+from conrod.film.table.film import TabulatedFilm
+from conrod.film.table.kernel import mobility_velocity, table_force
+from conrod.film.table.mobility import MobilityFilm
 from conrod.io.atomic import write_text
 
 GEOMETRY = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)

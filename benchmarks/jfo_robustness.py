@@ -47,8 +47,8 @@ def draw_bearings(seed: int = SEED, count: int = CASES) -> list[dict]:
 def problem(bearing: dict, film: str, settings, mass: float = 1.0):
     """OrbitProblem of one bearing with the film ``film`` on the grid of ``settings``."""
     from conrod.film.base import BearingGeometry, Groove
-    from conrod.film.mass_conserving import MassConservingFilm
-    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.film.mass_conserving.film import MassConservingFilm
+    from conrod.film.reynolds.film import ReynoldsFilm
     from conrod.loads.cycle import LoadCycle
     from conrod.orbit import OrbitProblem
 

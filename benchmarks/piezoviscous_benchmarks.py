@@ -24,8 +24,8 @@ from conrod.cases.case import Case
 from conrod.errors import ConvergenceError
 from conrod.film.base import BearingGeometry, FilmState
 from conrod.film.piezoviscosity import PressureViscosity
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.short.film import ShortBearingFilm
 from conrod.io.atomic import write_text
 from conrod.simulation.simulation import Simulation
 

@@ -9,7 +9,7 @@ import pytest
 
 from conrod.cases.solver import SolverSection
 from conrod.film.base import BearingGeometry
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.short.film import ShortBearingFilm
 from conrod.loads.cycle import LoadCycle
 from conrod.orbit import OrbitProblem
 

@@ -11,8 +11,8 @@ from conrod.cases.base import validate_section
 from conrod.cases.bearing import BearingSection
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.mass_conserving import MassConservingFilm
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.film.steady import solve_for_load
 from conrod.film.supply import supply_mask
 

@@ -13,7 +13,7 @@ from conrod.cases.case import Case
 from conrod.contact.asperity import AsperityParameters, asperity_force, kernel_parameters
 from conrod.contact.mixed import MixedLubricationFilm
 from conrod.film.base import BearingGeometry, FilmModel, FilmState
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.short.film import ShortBearingFilm
 
 GEOMETRY = BearingGeometry(diameter=0.05, width=0.02, radial_clearance=25e-6)
 PARAMS = AsperityParameters(0.5e-6, 4e9, 25e-6, 5.9e10).kernel_parameters(0.025, 0.02)

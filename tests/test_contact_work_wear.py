@@ -135,7 +135,7 @@ def test_worn_shell_film_opens_the_gap_of_a_reynolds_film():
     """δ = 0 leaves the Reynolds force unchanged; wear where the film is thinnest lowers it."""
     from conrod.contact.running_in import WornShellFilm
     from conrod.film.base import BearingGeometry, FilmState
-    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.film.reynolds.film import ReynoldsFilm
 
     film = ReynoldsFilm(BearingGeometry(diameter=0.05, width=0.02,
                                         radial_clearance=25e-6), n_theta=36, n_z=8)

@@ -13,7 +13,7 @@ import pytest
 from conrod.cases.case import Case
 from conrod.ehd.film import ElasticFilm
 from conrod.film.base import FilmState
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.housing.housing import Housing
 from conrod.units import rpm_to_rad_s
 from elastic_helpers import EXAMPLES

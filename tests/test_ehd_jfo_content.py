@@ -12,8 +12,8 @@ import pytest
 from conrod.ehd.film import ElasticSettings
 from conrod.ehd.mass_conserving_ehd import ElasticMassConservingFilm, elastic_film
 from conrod.film.capabilities import HasContentStep
-from conrod.film.mass_conserving import MassConservingFilm
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from elastic_helpers import WINKLER_SETTINGS, winkler_housing
 from test_orbit_jfo import OMEGA, fed_bearing, orbit
 

@@ -1,5 +1,5 @@
 """Exact response of the mass-conserving film's content step to the bore deformation
-(:mod:`conrod.film.mass_conserving_response`) against central differences of the film."""
+(:mod:`conrod.film.mass_conserving.response`) against central differences of the film."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import numpy as np
 
 from conrod.ehd.bore_system import nodal_force_weights
 from conrod.film.base import FilmState
-from conrod.film.mass_conserving import MassConservingFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
 from test_orbit_jfo import OMEGA, fed_bearing
 
 N_THETA, N_Z = 24, 4

@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from conrod.ehd.film import ElasticFilm, ElasticSettings
-from conrod.film.mass_conserving import MassConservingFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
 from elastic_helpers import WINKLER_SETTINGS, winkler_housing
 from test_orbit_jfo import OMEGA, fed_bearing, orbit
 

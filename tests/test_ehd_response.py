@@ -10,8 +10,8 @@ import numpy as np
 from conrod.ehd.bore_system import nodal_force_weights
 from conrod.film.base import BearingGeometry, FilmState
 from conrod.film.rated_state import rated
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.reynolds_memory import ReynoldsMemory
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.reynolds.memory import ReynoldsMemory
 from conrod.housing.transfer import nodal_forces
 
 RADIUS, CLEARANCE, STEP = 0.04, 5.0e-5, 1.0e-4  # [m], [m], rate time step [s]

@@ -115,7 +115,7 @@ def test_nodal_forces_carry_the_film_force_to_the_housing(housing):
     """Reynolds film at ε = 0.6: the resultant of the nodal forces on the housing equals
     minus the film force on the journal (the film model's own integration) within 1 %."""
     from conrod.film.base import BearingGeometry, FilmState
-    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.film.reynolds.film import ReynoldsFilm
 
     geometry = BearingGeometry(diameter=2 * housing.radius, width=0.03,
                                radial_clearance=5.0e-5)

@@ -21,11 +21,11 @@ from conrod.film.capabilities import (
     SupportsDeformation,
 )
 from conrod.film.factory import GroovedShortBearingFilm
-from conrod.film.mass_conserving import MassConservingFilm
-from conrod.film.mobility import MobilityFilm
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.short_bearing import ShortBearingFilm
-from conrod.film.table import TabulatedFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.short.film import ShortBearingFilm
+from conrod.film.table.film import TabulatedFilm
+from conrod.film.table.mobility import MobilityFilm
 from conrod.orbit.memory import FilmSession
 from conrod.registry import FILM_MODELS, FILM_NAMES, film_class
 

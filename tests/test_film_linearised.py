@@ -10,9 +10,9 @@ import pytest
 
 from conrod.film.base import BearingGeometry, FilmState
 from conrod.film.linearised import linearise, linearise_by_differences
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.short_bearing import ShortBearingFilm
-from conrod.film.short_bearing_kernel import short_bearing_force
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.short.film import ShortBearingFilm
+from conrod.film.short.kernel import short_bearing_force
 
 MU, D, C, OMEGA = 0.02, 0.05, 2.5e-5, 200.0
 R = 0.5 * D

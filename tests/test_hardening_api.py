@@ -13,7 +13,7 @@ import conrod
 from conrod import Case, Simulation
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.short.film import ShortBearingFilm
 from conrod.loads.engine_loads import compute_engine_loads
 from conrod.mechanism import RunSettings, mechanism_case, simulate
 from hardening_helpers import cheap_engine_run, cheap_mechanism, cheap_table_run
@@ -108,8 +108,8 @@ def test_a_valid_film_state_still_solves():
 
 
 def test_case_readers_and_builders_name_a_missing_case():
-    from conrod.film.mobility import MobilityFilm
-    from conrod.film.table import TabulatedFilm
+    from conrod.film.table.film import TabulatedFilm
+    from conrod.film.table.mobility import MobilityFilm
     from conrod.loads.table_load import load_cycle_from_table
 
     assert _refused(Case.from_toml, None).startswith(

@@ -61,8 +61,8 @@ def _strip_time(path: Path) -> list[str]:
 
 def _table(cache_dir):
     from conrod.film.base import BearingGeometry
-    from conrod.film.short_bearing import ShortBearingFilm
-    from conrod.film.table import TabulatedFilm
+    from conrod.film.short.film import ShortBearingFilm
+    from conrod.film.table.film import TabulatedFilm
 
     geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6)
     return TabulatedFilm(ShortBearingFilm(geometry), n_eps=5, n_direction=8,
@@ -73,7 +73,7 @@ def _table(cache_dir):
 def test_an_unusable_table_cache_folder_is_skipped_with_one_warning(tmp_path, monkeypatch,
                                                                     place):
     from conrod.errors import CacheWarning
-    from conrod.film import table
+    from conrod.film.table import film as table
 
     monkeypatch.setattr(table, "UNUSABLE_FOLDERS", set())
     monkeypatch.setattr(table, "KEPT_IN_MEMORY", {})
@@ -159,7 +159,7 @@ def test_the_guard_turns_unreadable_and_unwritable_caches_into_one_warning_each(
                      "again", "could not be written (No space left on device); going on "
                      "without it"):
         monkeypatch.setattr(numba_cache, "_state", {"warned": False})
-        cache = caching.Cache(tmp_path, "conrod.film.short_bearing")
+        cache = caching.Cache(tmp_path, "conrod.film.short.film")
         with pytest.warns(CacheWarning) as caught:
             if "read" in expected:
                 assert cache.load_overload(None, None) is None

@@ -22,8 +22,8 @@ from conrod import Case
 from conrod.cli.app import _register_commands, app
 from conrod.errors import CacheWarning, ConvergenceError, NonFiniteResultError
 from conrod.film.base import BearingGeometry
-from conrod.film.short_bearing import ShortBearingFilm
-from conrod.film.table import QUANTITIES, TabulatedFilm, tables_checksum
+from conrod.film.short.film import ShortBearingFilm
+from conrod.film.table.film import QUANTITIES, TabulatedFilm, tables_checksum
 from conrod.io.atomic import write_csv, write_json
 from conrod.io.interrupts import deferred_interrupts, raise_if_interrupted
 from conrod.mechanism.geometry import seed_free_play_is_convex, shell_semi_axes

@@ -11,8 +11,8 @@ from conrod import Case
 from conrod.cli.app import _register_commands, app
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.short_bearing import ShortBearingFilm
-from conrod.film.table import TabulatedFilm
+from conrod.film.short.film import ShortBearingFilm
+from conrod.film.table.film import TabulatedFilm
 from hardening_helpers import FLORES_TABLE, example_dict, mutated, write_case
 
 _register_commands()

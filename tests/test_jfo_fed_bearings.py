@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 from conrod.cases.solver import SolverSection
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import BearingGeometry, Groove
-from conrod.film.mass_conserving import MassConservingFilm
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.orbit import OrbitProblem
 from conrod.orbit.periodic import periodic_orbit
 from orbit_helpers import fed_bearing_problem
@@ -82,8 +82,8 @@ def test_tabulated_films_refuse_a_supply_pressure_naming_the_film_asked(film, tm
     """The maps are computed once and scaled with speed (Booker's reduction); a supply
     pressure adds a part that does not scale, so a fed groove is refused with a message
     naming the film that was asked for and the films that take it."""
-    from conrod.film.mobility import MobilityFilm
-    from conrod.film.table import TabulatedFilm
+    from conrod.film.table.film import TabulatedFilm
+    from conrod.film.table.mobility import MobilityFilm
 
     geometry = BearingGeometry(diameter=0.05, width=0.02, radial_clearance=25e-6,
                                supply_pressure=3e5, grooves=(Groove(width=0.002),))

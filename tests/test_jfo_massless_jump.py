@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from conrod.cases.solver import SolverSection
-from conrod.film.mass_conserving import MassConservingFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
 from conrod.orbit import OrbitProblem
 from conrod.orbit.content_bracket import bracketed_balance
 from conrod.orbit.periodic import periodic_orbit

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from conrod.film.base import BearingGeometry, FilmState, Groove
-from conrod.film.mass_conserving import MassConservingFilm, MassConservingMemory
+from conrod.film.mass_conserving.film import MassConservingFilm, MassConservingMemory
 from conrod.orbit.implicit_step import implicit_step_cycle
 from conrod.orbit.problem import OrbitProblem, OrbitState
 from test_orbit_jfo import fed_bearing, rotating_load

@@ -10,8 +10,8 @@ import pytest
 
 from conrod.errors import CaseError, FilmThicknessError
 from conrod.film.base import BearingGeometry, FeedHole, FilmState, Groove
-from conrod.film.mass_conserving import MassConservingFilm
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 
 RADIUS = 0.05
 CLEARANCE = 5.0e-5

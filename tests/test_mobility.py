@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.mobility import MobilityFilm
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.table.mobility import MobilityFilm
 
 
 def load_residuals(model: MobilityFilm, direct: ReynoldsFilm, n: int, seed: int) -> np.ndarray:

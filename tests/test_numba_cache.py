@@ -15,7 +15,7 @@ CASE = ROOT / "examples" / "passenger_car_diesel_2000rpm.toml"
 RUN_AND_COUNT = """
 import sys
 from conrod.cli.app import main
-from conrod.film.short_bearing import kernel_force
+from conrod.film.short.film import kernel_force
 from conrod.orbit.compiled_flight import flight_segment
 
 try:
@@ -107,10 +107,10 @@ def test_every_path_hands_the_multigrid_one_read_only_mask():
     a writable and a read-only mask, bit for bit."""
     import numpy as np
 
-    from conrod.film import reynolds_multigrid as multigrid
     from conrod.film.base import BearingGeometry, FilmState
-    from conrod.film.reynolds import ReynoldsFilm
-    from conrod.film.reynolds_squeeze import SqueezeGrid
+    from conrod.film.reynolds import multigrid as multigrid
+    from conrod.film.reynolds.film import ReynoldsFilm
+    from conrod.film.reynolds.squeeze import SqueezeGrid
 
     geometry = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
     film = ReynoldsFilm(geometry, n_theta=36, n_z=8)

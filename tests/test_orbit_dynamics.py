@@ -80,7 +80,7 @@ def test_quasi_static_is_the_massless_limit_of_the_dynamic_orbit():
 
 @pytest.mark.slow
 def test_short_and_finite_difference_orbits_converge_as_bearing_gets_shorter():
-    reynolds = pytest.importorskip("conrod.film.reynolds")
+    reynolds = pytest.importorskip("conrod.film.reynolds.film")
     differences = []
     for width in (0.025, 0.0125, 0.00625):
         g = geometry(width=width)

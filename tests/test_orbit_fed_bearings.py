@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import BearingGeometry, Groove
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.loads.cycle import LoadCycle
 from conrod.orbit import OrbitProblem, OrbitState, integrate_cycle
 from orbit_helpers import solver

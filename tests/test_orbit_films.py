@@ -9,7 +9,7 @@ import pytest
 from conrod.cases.solver import SolverSection
 from conrod.film.base import BearingGeometry, FilmState, Groove
 from conrod.film.factory import GroovedShortBearingFilm, build_film_model
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.short.film import ShortBearingFilm
 
 
 def grooved(width: float) -> BearingGeometry:
@@ -28,7 +28,7 @@ def test_short_film_with_a_central_groove_becomes_two_lands():
 
 def test_two_land_short_bearing_agrees_with_grooved_finite_difference_film():
     """Short lands (L_land/D = 0.18): Ocvirk on each land vs Reynolds with the groove."""
-    reynolds = pytest.importorskip("conrod.film.reynolds")
+    reynolds = pytest.importorskip("conrod.film.reynolds.film")
     geometry = grooved(0.04)
     state = FilmState(eccentricity_x=30e-6, eccentricity_y=10e-6, velocity_x=0.002,
                       velocity_y=-0.001, journal_speed=300.0, shell_speed=0.0, viscosity=0.01)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.orbit import OrbitState, integrate_cycle, periodic_orbit
 from conrod.orbit.acceleration import AndersonMixing
 from conrod.orbit.progress import reporting
@@ -37,7 +37,7 @@ def test_compiled_force_and_jacobian_equal_the_film_and_its_adjoint(feed):
     mid-plane (full grid)."""
     from conrod.film.base import FeedHole, Groove
     from conrod.film.linearised import linearise_reynolds
-    from conrod.film.reynolds_flight import flight_kernel, reynolds_force, reynolds_jacobian
+    from conrod.film.reynolds.flight import flight_kernel, reynolds_force, reynolds_jacobian
 
     supply = {"none": {},
               "groove": {"grooves": (Groove(2.0, 2.1, 0.004),), "supply_pressure": 3e5},
@@ -131,7 +131,7 @@ def test_table_film_constant_load_settles_at_the_steady_point_in_three_cycles():
     """Default integrator on the tabulated Reynolds film: the orbit ends at the static
     equilibrium F(e, 0) + W = 0 of the same table (scipy fsolve), ε and attitude within
     0.5 %, after at most three cycles."""
-    from conrod.film.table import TabulatedFilm
+    from conrod.film.table.film import TabulatedFilm
 
     film = TabulatedFilm(ReynoldsFilm(geometry(width=0.05), n_theta=36, n_z=8))
     load = 5000.0

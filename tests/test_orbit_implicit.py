@@ -167,9 +167,9 @@ def _intervals(crank_angle, in_contact):
 def test_map_films_refuse_a_supply_pressure_naming_the_film_asked(name):
     from conrod.errors import CaseError
     from conrod.film.base import BearingGeometry, Groove
-    from conrod.film.mobility import MobilityFilm
-    from conrod.film.reynolds import ReynoldsFilm
-    from conrod.film.table import TabulatedFilm
+    from conrod.film.reynolds.film import ReynoldsFilm
+    from conrod.film.table.film import TabulatedFilm
+    from conrod.film.table.mobility import MobilityFilm
 
     fed = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=25e-6,
                           grooves=(Groove(width=0.004),),
@@ -185,7 +185,7 @@ def test_constant_load_on_reynolds_film_settles_at_the_steady_point_in_three_cyc
     """Default integrator (auto → implicit, massless start): the orbit with mass ends at
     the static equilibrium F(e, 0) + W = 0 found by a root solver on the same film
     (scipy fsolve), ε and attitude within 0.5 %, after at most three cycles."""
-    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.film.reynolds.film import ReynoldsFilm
 
     load = 5000.0
     film = ReynoldsFilm(geometry(width=0.05), n_theta=36, n_z=8)
@@ -201,7 +201,7 @@ def test_a_failed_free_flight_names_what_to_change_for_the_film():
     collapse (force steep in the journal velocity): the message says so and names the
     isoviscous film, not a tolerance that would not help."""
     from conrod.film.piezoviscosity import PressureViscosity
-    from conrod.film.reynolds import ReynoldsFilm
+    from conrod.film.reynolds.film import ReynoldsFilm
     from conrod.orbit.implicit import _failure_hint
 
     law = PressureViscosity(law="barus", coefficient=1.5e-8)

@@ -18,8 +18,8 @@ import pytest
 
 from conrod.cases.solver import SolverSection
 from conrod.film.base import BearingGeometry, Groove
-from conrod.film.mass_conserving import MassConservingFilm
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.loads.cycle import LoadCycle
 from conrod.orbit.characteristics import cycle_characteristics
 from conrod.orbit.periodic import periodic_orbit

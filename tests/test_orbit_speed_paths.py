@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 import conrod.orbit.quasi_static as qs
-from conrod.film import reynolds_squeeze as sv
 from conrod.film.base import BearingGeometry, FilmState, Groove
 from conrod.film.capabilities import HasCompiledKernel
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds import squeeze as sv
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.orbit import OrbitState
 from orbit_helpers import SPEED, engine_like_load, geometry, load_cycle, short_problem
 
@@ -123,7 +123,7 @@ def test_compiled_table_orbit_balances_the_table_force_and_follows_reynolds(tmp_
     """Every recorded velocity of the compiled table loop satisfies F_table + W = 0 (the
     generic Newton on the piecewise-quadratic table fails here: residual 3e-4), and the
     orbit stays within the table's interpolation error of the direct Reynolds orbit."""
-    from conrod.film.table import TabulatedFilm
+    from conrod.film.table.film import TabulatedFilm
 
     base = coarse_film()
     table = TabulatedFilm(base, cache_dir=tmp_path)
@@ -160,8 +160,8 @@ SHORT_STATES = [  # x, y [m], W_x, W_y [N], ω_j, ω_b [rad/s]
 
 @pytest.mark.parametrize("state", SHORT_STATES)
 def test_short_velocity_equals_newton_and_balances_the_load(state):
-    from conrod.film.short_bearing_kernel import short_bearing_force
-    from conrod.film.short_bearing_velocity import newton_short_velocity, short_velocity
+    from conrod.film.short.kernel import short_bearing_force
+    from conrod.film.short.velocity import newton_short_velocity, short_velocity
 
     x, y, wx, wy, wj, wb = state
     for guess in (0.0, 2.0, -3.0):  # cold starts from anywhere on the circle
@@ -176,7 +176,7 @@ def test_short_velocity_equals_newton_and_balances_the_load(state):
 
 def test_short_velocity_without_load_is_the_half_speed_whirl():
     """No load, no film force: ė = ω̄ × e (SPEC pitfall: the whirl carries nothing)."""
-    from conrod.film.short_bearing_velocity import short_velocity
+    from conrod.film.short.velocity import short_velocity
 
     vx, vy, *_ = short_velocity(10e-6, -4e-6, 0.0, 0.0, SPEED, 30.0, *SHORT, 1.0)
     mean = 0.5 * (SPEED + 30.0)
@@ -187,8 +187,8 @@ def test_short_velocity_without_load_is_the_half_speed_whirl():
 def test_short_unit_force_direction_derivative_and_homogeneity(eps):
     """dg/dα in closed form (arc-end terms vanish with the pressure) against central
     differences of g; F(v_s) = |v_s| F(v̂_s) in the ω̄ frame (both used by the inversion)."""
-    from conrod.film.short_bearing_kernel import short_bearing_force
-    from conrod.film.short_bearing_velocity import unit_force_direction
+    from conrod.film.short.kernel import short_bearing_force
+    from conrod.film.short.velocity import unit_force_direction
 
     h = 1e-3
     for alpha in np.linspace(-3.0, 3.0, 13):
@@ -208,7 +208,7 @@ def test_short_unit_force_direction_derivative_and_homogeneity(eps):
 
 def test_short_force_angle_is_monotone_and_brackets_the_root():
     """The inversion's bracket: φ(α) increases (dφ/dα > 0) and |φ − α − π/2| < π/2."""
-    from conrod.film.short_bearing_velocity import unit_force_direction
+    from conrod.film.short.velocity import unit_force_direction
 
     for eps in (0.0, 0.5, 0.98, 0.9999):
         for alpha in np.linspace(-math.pi, math.pi, 721):
@@ -243,7 +243,7 @@ def test_short_orbit_unchanged_by_the_booker_path(monkeypatch, journal):
 def test_mobility_orbit_unchanged_by_the_compiled_loop(monkeypatch):
     """Compiled table loop and compiled contact forces reproduce the Python loop over
     ``MobilityFilm.journal_velocity`` and ``problem.force_function`` (same kernels: to rounding)."""
-    from conrod.film.mobility import MobilityFilm
+    from conrod.film.table.mobility import MobilityFilm
 
     film = MobilityFilm.short_bearing(geometry(), n_eps=20, n_direction=32)
     loads = load_cycle(*engine_like_load(peak=1.0e5, base=2.0e4))

@@ -16,9 +16,9 @@ from scipy import sparse
 from scipy.sparse import linalg
 
 from conrod.film.base import BearingGeometry, FilmState, Groove
-from conrod.film.mass_conserving import MassConservingFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
 from conrod.film.piezoviscosity import PressureViscosity
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 
 MU0, D, L, C = 0.01, 0.05, 0.02, 2.5e-5
 R = 0.5 * D

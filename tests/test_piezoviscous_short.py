@@ -14,7 +14,7 @@ from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmState, Groove
 from conrod.film.factory import GroovedShortBearingFilm, build_film_model
 from conrod.film.piezoviscosity import PressureViscosity
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.short.film import ShortBearingFilm
 
 MU0, D, L, C = 0.0065, 0.05, 0.02, 2.5e-5
 R = 0.5 * D
@@ -108,8 +108,8 @@ def test_simulation_builds_the_case_law_and_refuses_maps(repo):
 
 
 def test_table_over_a_piezoviscous_base_is_refused():
-    from conrod.film.reynolds import ReynoldsFilm
-    from conrod.film.table import TabulatedFilm
+    from conrod.film.reynolds.film import ReynoldsFilm
+    from conrod.film.table.film import TabulatedFilm
 
     base = ReynoldsFilm(BearingGeometry(diameter=D, width=L,
                                         radial_clearance=C), 36, 8, pressure_viscosity=BARUS)

@@ -98,7 +98,7 @@ def test_mechanism_example_is_byte_identical(tmp_path):
 
 
 def test_cold_and_warm_film_table_cache_give_identical_results(tmp_path, monkeypatch):
-    monkeypatch.setattr("conrod.film.table.DEFAULT_CACHE_DIR", tmp_path / "tables")
+    monkeypatch.setattr("conrod.film.table.film.DEFAULT_CACHE_DIR", tmp_path / "tables")
     case = Case.from_dict(mutated(cheap_table_run(), ("solver", "film"), "table"),
                           base_dir=EXAMPLES)
     assert not Simulation(case).film_model().loaded_from_cache  # builds and stores the table

@@ -7,12 +7,12 @@ import numpy as np
 import pytest
 
 from conrod.film import characteristics as chars
-from conrod.film import multigrid_operators as ops
-from conrod.film import reynolds_kernel as kernel
-from conrod.film import reynolds_multigrid as multigrid
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.reynolds_memory import ReynoldsMemory, scaled_state
+from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds import multigrid as multigrid
+from conrod.film.reynolds import multigrid_operators as ops
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.reynolds.memory import ReynoldsMemory, scaled_state
 
 GEOMETRY = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
 C = GEOMETRY.radial_clearance

@@ -1,6 +1,6 @@
 """The multigrid pressure equals a direct sparse solve of the same discrete problem.
 
-Independent answer: the finite-volume balance of :mod:`conrod.film.reynolds_kernel`
+Independent answer: the finite-volume balance of :mod:`conrod.film.reynolds.kernel`
 assembled here as a full-grid sparse matrix (θ periodic, both edge rows at ambient) and
 solved by SuperLU (``scipy.sparse.linalg.spsolve``) on the multigrid's pressurised set,
 with the cavitated nodes at p_cav. The multigrid solves only z ≤ 0 (mid-plane mirror),
@@ -14,9 +14,9 @@ import pytest
 from scipy.sparse import coo_matrix
 from scipy.sparse.linalg import spsolve
 
-from conrod.film import reynolds_kernel as kernel
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds.film import ReynoldsFilm
 
 GEOMETRY = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
 

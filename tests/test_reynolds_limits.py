@@ -15,8 +15,8 @@ from conrod.film.long_bearing import (
     short_squeeze_force,
     sommerfeld_long_force,
 )
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.short_bearing_kernel import short_bearing_force
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.short.kernel import short_bearing_force
 
 MU, D, C = 0.02, 0.1, 1.0e-4
 R = 0.5 * D

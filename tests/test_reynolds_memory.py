@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.reynolds_memory import ReynoldsMemory, scaled_state
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.reynolds.memory import ReynoldsMemory, scaled_state
 
 GEOMETRY = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conrod.film import reynolds_kernel as kernel
-from conrod.film import reynolds_multigrid as multigrid
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds import multigrid as multigrid
+from conrod.film.reynolds.film import ReynoldsFilm
 
 GEOMETRY = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
 

@@ -12,7 +12,7 @@ from conrod.cases.bearing import BearingSection
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FeedHole, FilmState, Groove
 from conrod.film.characteristics import FilmGrid
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.film.supply import groove_mask, hole_mask, supply_mask
 
 MU, D, C = 0.02, 0.1, 1.0e-4

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from conrod.film import BearingGeometry, FilmState, ShortBearingFilm
-from conrod.film.short_bearing_kernel import short_bearing_force
+from conrod.film.short.kernel import short_bearing_force
 
 MU, R, L, C = 0.01, 0.025, 0.02, 25e-6
 

@@ -11,7 +11,7 @@ import pytest
 from conrod import Case, Simulation
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmState
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.short.film import ShortBearingFilm
 from conrod.orbit.heat_balance import effective_temperature
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"

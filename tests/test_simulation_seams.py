@@ -12,8 +12,8 @@ import pytest
 import conrod.simulation.simulation as simulation_module
 from conrod import Case, Simulation
 from conrod.errors import CaseError
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.short.film import ShortBearingFilm
 from conrod.orbit.integrators import QuasiStaticIntegrator
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"

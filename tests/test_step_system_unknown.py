@@ -23,7 +23,7 @@ from conrod.cases.solver import SolverSection
 from conrod.film.base import FilmState
 from conrod.film.capabilities import HasContentStep, HasStepSystem
 from conrod.film.linearised import linearise
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.short.film import ShortBearingFilm
 from conrod.film.step_system import StepRequest
 from conrod.numerics.newton import ChordJacobian, StepBlocks, UpdateLimits
 from conrod.orbit.characteristics import cycle_characteristics

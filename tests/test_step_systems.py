@@ -15,8 +15,8 @@ from conrod.ehd.film import ElasticSettings
 from conrod.ehd.mass_conserving_ehd import elastic_film
 from conrod.film.base import FilmState
 from conrod.film.capabilities import HasStepSystem
-from conrod.film.mass_conserving import MassConservingFilm
-from conrod.film.reynolds import ReynoldsFilm
+from conrod.film.mass_conserving.film import MassConservingFilm
+from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.film.step_system import StepRequest
 from elastic_helpers import (
     WINKLER_SETTINGS,

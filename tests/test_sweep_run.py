@@ -114,8 +114,8 @@ def test_film_table_cache_is_safe_under_concurrent_workers(two_workers, tmp_path
     """Workers building the same disk-cached film table at once: every one gets the same
     table, the cache holds one complete file and no temporary file is left."""
     from conrod.film.base import BearingGeometry
-    from conrod.film.short_bearing import ShortBearingFilm
-    from conrod.film.table import TabulatedFilm
+    from conrod.film.short.film import ShortBearingFilm
+    from conrod.film.table.film import TabulatedFilm
 
     _, client = two_workers
     base = ShortBearingFilm(BearingGeometry(diameter=0.05, width=0.02, radial_clearance=25e-6))

@@ -9,9 +9,9 @@ import pytest
 
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FeedHole, FilmState
-from conrod.film.reynolds import ReynoldsFilm
-from conrod.film.short_bearing import ShortBearingFilm
-from conrod.film.table import TabulatedFilm
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.film.short.film import ShortBearingFilm
+from conrod.film.table.film import TabulatedFilm
 
 GEOMETRY = BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5)
 

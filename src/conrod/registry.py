@@ -17,11 +17,11 @@ FilmName = Literal["short", "mobility", "reynolds", "mass_conserving", "table"]
 IntegratorName = Literal["auto", "adaptive", "implicit", "rk2", "quasi_static"]
 
 FILM_MODELS: dict[str, str] = {
-    "short": "conrod.film.short_bearing:ShortBearingFilm",
-    "mobility": "conrod.film.mobility:MobilityFilm",
-    "reynolds": "conrod.film.reynolds:ReynoldsFilm",
-    "mass_conserving": "conrod.film.mass_conserving:MassConservingFilm",
-    "table": "conrod.film.table:TabulatedFilm",
+    "short": "conrod.film.short.film:ShortBearingFilm",
+    "mobility": "conrod.film.table.mobility:MobilityFilm",
+    "reynolds": "conrod.film.reynolds.film:ReynoldsFilm",
+    "mass_conserving": "conrod.film.mass_conserving.film:MassConservingFilm",
+    "table": "conrod.film.table.film:TabulatedFilm",
 }
 """Film name → class (each has ``from_settings(geometry, settings)``)."""
 

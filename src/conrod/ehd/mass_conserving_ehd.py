@@ -1,7 +1,7 @@
 """The mass-conserving (JFO) film on a deforming bore, stepped implicitly in its content.
 
 The rigid mass-conserving orbit advances the film content ϑh by implicit steps
-(:mod:`conrod.film.mass_conserving_step`, Ausas, Jai & Buscaglia 2009): BDF2 or backward
+(:mod:`conrod.film.mass_conserving.step`, Ausas, Jai & Buscaglia 2009): BDF2 or backward
 Euler in ϑh, which has an answer for any journal motion. On a deforming bore the same step
 holds the whole film thickness of the end of the step, h = h_rigid(e) + u, and the content
 of the step before on its own deformed film, so
@@ -12,7 +12,7 @@ contains the bore's rate ∂u/∂t exactly as the discrete content balance needs
 squeezed by the bore is conserved like oil squeezed by the journal. At the end of each step
 the bore deformation solves G(u) = u − λP(C f(p(u)) + U c(φ)) = 0 with the pressure of that
 step, by semismooth Newton steps with the step's exact response on its cavitation set
-(:mod:`conrod.film.mass_conserving_response`, :func:`conrod.ehd.coupling.\
+(:mod:`conrod.film.mass_conserving.response`, :func:`conrod.ehd.coupling.\
 semismooth_coupling`; :func:`~conrod.ehd.coupling.secant_coupling` where the answer sits
 on a switch of that set), warm-started from the trial before and, at a new step, from the
 deformation extrapolated at its last rate; the crank angle φ of the step's end is the
@@ -63,7 +63,7 @@ class ElasticMassConservingFilm(ElasticFilm):
     the deforming bore (module docstring).
 
     base : MassConservingFilm  The JFO film
-        (:class:`~conrod.film.mass_conserving.MassConservingFilm`).
+        (:class:`~conrod.film.mass_conserving.film.MassConservingFilm`).
     housing : Housing  Compliance and inertia fields at the film nodes.
     crank_speed : float  ω [rad/s].
     settings : ElasticSettings  Coupling controls.
@@ -164,7 +164,7 @@ class ElasticMassConservingFilm(ElasticFilm):
 
     def _newton(self, evaluate, start, inertia, operator, rate_step) -> CouplingOutcome:
         """G(u) = 0 by semismooth Newton steps with the exact ∂f/∂u of the content step on
-        its converged cavitation set (:mod:`conrod.film.mass_conserving_response`);
+        its converged cavitation set (:mod:`conrod.film.mass_conserving.response`);
         where these do not settle within :data:`SEMISMOOTH_SOLVES` film solves (an answer
         on a switch of the set), by the secant iteration with forward-difference Jacobians
         (:func:`conrod.ehd.coupling.secant_coupling`)."""

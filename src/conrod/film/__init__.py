@@ -26,7 +26,7 @@ if TYPE_CHECKING:  # pragma: no cover
         QuasiStaticRequest,
         SupportsDeformation,
     )
-    from conrod.film.short_bearing import ShortBearingFilm
+    from conrod.film.short.film import ShortBearingFilm
     from conrod.film.wrapper import FilmWrapper
 
 _PUBLIC = {
@@ -34,7 +34,7 @@ _PUBLIC = {
                      "Groove"), "conrod.film.base"),
     **dict.fromkeys(("CompiledKernel", "HasCompiledKernel", "HasMemory", "QuasiStaticRequest",
                      "SupportsDeformation"), "conrod.film.capabilities"),
-    "ShortBearingFilm": "conrod.film.short_bearing",
+    "ShortBearingFilm": "conrod.film.short.film",
     "FilmWrapper": "conrod.film.wrapper",
 }
 """Public name → the module that defines it."""

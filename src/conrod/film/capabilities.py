@@ -206,7 +206,7 @@ class HasSensitivities(Protocol):
 @runtime_checkable
 class HasFlightKernel(Protocol):
     """A film whose force, warm-started, can run inside the compiled implicit free flight
-    (:class:`~conrod.film.reynolds_flight.FlightKernel`: compiled force and Jacobian with
+    (:class:`~conrod.film.reynolds.flight.FlightKernel`: compiled force and Jacobian with
     the warm-start field in their parameters)."""
 
     def flight_kernel(self, memory: Any, newton_tolerance: float) -> Any:
@@ -281,7 +281,7 @@ class HasThicknessResponse(Protocol):
 class HasPressureEvaluation(Protocol):
     """A film that answers a state by its pressure alone, warm-started from its memory; the
     other characteristics (friction, flows) are computed once, for the accepted answer
-    (:class:`~conrod.film.reynolds_response.PressureEvaluation`)."""
+    (:class:`~conrod.film.reynolds.response.PressureEvaluation`)."""
 
     def evaluate_pressure(self, state: FilmState, memory: Any) -> Any:
         """The pressure evaluation of ``state`` from ``memory`` (None: a cold start)."""

@@ -8,7 +8,7 @@ from typing import Any
 
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel
-from conrod.film.short_bearing import GroovedShortBearingFilm, central_groove_width
+from conrod.film.short.film import GroovedShortBearingFilm, central_groove_width
 from conrod.registry import film_class
 
 __all__ = ["GroovedShortBearingFilm", "build_film_model", "central_groove_width"]

@@ -28,7 +28,7 @@ solves the four right-hand sides with one sparse LU (SciPy's SuperLU) instead. T
 exact derivative of the discrete force wherever the active set does not change under an
 infinitesimal move (everywhere except on switching surfaces of measure zero); the
 derivative of the coefficient arrays is analytic
-(:func:`conrod.film.reynolds_kernel.coefficient_derivatives`). Dirichlet regions (edges,
+(:func:`conrod.film.reynolds.kernel.coefficient_derivatives`). Dirichlet regions (edges,
 grooves, holes, an inlet line) are held where they are.
 
 Any other film model (:func:`linearise_by_differences`): central differences of
@@ -55,8 +55,8 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.linalg import splu
 
 from conrod.errors import CaseError
-from conrod.film import reynolds_kernel as kernel
 from conrod.film.base import FilmState
+from conrod.film.reynolds import kernel as kernel
 
 STATE_KEYS = ("eccentricity_x", "eccentricity_y", "velocity_x", "velocity_y")
 
@@ -161,7 +161,7 @@ ADJOINT_TOLERANCE = 1.0e-12
 
 def linearise_reynolds(film, state: FilmState, method: str = "adjoint",
                        memory=None) -> FilmLinearisation:
-    """Exact derivatives of a :class:`~conrod.film.reynolds.ReynoldsFilm` force on the
+    """Exact derivatives of a :class:`~conrod.film.reynolds.film.ReynoldsFilm` force on the
     converged active set (module docstring): one film solve (warm-started from the film
     ``memory`` when given), then two adjoint multigrid solves (``method="adjoint"``) or
     one sparse LU (``"direct"``)."""
@@ -205,7 +205,7 @@ def _adjoint(film, h: np.ndarray, weights: np.ndarray, masked: np.ndarray,
               symmetric: bool) -> np.ndarray:
     """λ with K_AA λ = weights on the active nodes, λ = 0 on ``masked`` ones [m^-2]."""
     from conrod.errors import ConvergenceError
-    from conrod.film import reynolds_multigrid as multigrid
+    from conrod.film.reynolds import multigrid as multigrid
 
     adjoint = np.zeros(h.shape)
     source = np.where(masked, 0.0, weights)

@@ -24,7 +24,7 @@ import math
 import numba as nb
 import numpy as np
 
-from conrod.film.table_kernel import mobility_velocity
+from conrod.film.table.kernel import mobility_velocity
 
 NEWTON_ITERATIONS = 60
 """Most iterations of one Newton velocity solve [-]."""
@@ -156,7 +156,7 @@ def table_cycle(x, y, dt, load_x, load_y, journal_speed, shell_speed, record_eve
                 viscosity, force_scale, clearance, s_step, log_magnitude, turning,
                 contact_radius):
     """Compiled Heun loop of the massless orbit for the tabulated film: the velocity is
-    the table's exact inverse :func:`~conrod.film.table_kernel.mobility_velocity`."""
+    the table's exact inverse :func:`~conrod.film.table.kernel.mobility_velocity`."""
     n_steps = load_x.size - 1
     out = np.zeros((n_steps // record_every, 7))
     vx2, vy2 = 0.0, 0.0

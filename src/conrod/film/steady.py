@@ -39,8 +39,8 @@ from conrod.errors import CaseError, ConvergenceError
 from conrod.film import characteristics as chars
 from conrod.film.base import BearingGeometry, FilmResult, FilmState, Groove, film_thickness
 from conrod.film.linearised import linearise
-from conrod.film.reynolds import FrictionConvention, ReynoldsFilm
-from conrod.film.short_bearing import ShortBearingFilm
+from conrod.film.reynolds.film import FrictionConvention, ReynoldsFilm
+from conrod.film.short.film import ShortBearingFilm
 
 SteadyModel = Literal["reynolds", "mass_conserving", "short"]
 DEFAULT_GRID = (144, 32)
@@ -119,7 +119,7 @@ def make_film(model: SteadyModel, geometry: BearingGeometry, grid: tuple[int, in
         return ShortBearingFilm(geometry)
     if model == "mass_conserving":
         try:
-            module = importlib.import_module("conrod.film.mass_conserving")
+            module = importlib.import_module("conrod.film.mass_conserving.film")
         except ModuleNotFoundError:
             raise CaseError("model = 'mass_conserving': not available in this build "
                             "(allowed: reynolds, short)") from None

@@ -1,5 +1,5 @@
 """Steps of a film with a transported content (mass-conserving, JFO): the journal's balance
-at the end of the film's implicit content step (:mod:`conrod.film.mass_conserving_step`).
+at the end of the film's implicit content step (:mod:`conrod.film.mass_conserving.step`).
 
 F in the balance of :mod:`conrod.orbit.implicit_step` is the film force at the end of the
 implicit step of the film content. Unlike the instantaneous force balance at a frozen film

@@ -197,7 +197,7 @@ def _guarded_rhs(phases: Phases, phi, u, params, data) -> np.ndarray:
     """du/dφ [-] of the free flight solved in Python; NaN where a Newton iterate or a
     predicted stage lies beyond the shell (the film cannot be solved there), which the
     step takes as a failed iteration and retries shorter (the compiled Reynolds force of
-    :mod:`conrod.film.reynolds_flight` gives NaN there too)."""
+    :mod:`conrod.film.reynolds.flight` gives NaN there too)."""
     try:
         return phases.free_rhs(phi, u)
     except FilmThicknessError:

@@ -13,7 +13,7 @@ Ausas, Jai & Buscaglia (2009), the step is implicit in the content ϑh (backward
 
 with h, a, C at the end of the step, and is solved with ϑ for the Elrod–Adams
 complementarity (p̃ > 0 ⇒ ϑ = 1, ϑ < 1 ⇒ p̃ = 0) by the Ausas sweep
-(:func:`~conrod.film.mass_conserving_kernel.elrod_adams_step`).
+(:func:`~conrod.film.mass_conserving.kernel.elrod_adams_step`).
 
 The state handed in is the one at the end of the step, with its deformation field δ(θ, z)
 when the bore deforms: h^{n+1} includes it and the stored h^n is the deformed film of the
@@ -36,9 +36,9 @@ import numpy as np
 
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
-from conrod.film.mass_conserving_kernel import elrod_adams_step
-from conrod.film.mass_conserving_memory import MassConservingMemory
-from conrod.film.mass_conserving_results import axial_weights
+from conrod.film.mass_conserving.kernel import elrod_adams_step
+from conrod.film.mass_conserving.memory import MassConservingMemory
+from conrod.film.mass_conserving.results import axial_weights
 
 STEP_TOLERANCE = 1.0e-10
 """Tightest relative change per sweep the step's Ausas sweep is asked for: tighter

@@ -13,8 +13,8 @@ whose unit-speed force points along −W (safeguarded secant on the wrapped angl
 warm-started from the previous solve), then |v_s| = s_0|W|/|F(s_0 v̂(β))| and
 ė = v_s + ω̄ × e (Booker [1]; docs/film_advanced.md §2).
 
-The film solve is the compiled projected multigrid of :mod:`conrod.film.reynolds_multigrid`
-on the same grid, masks and mid-plane symmetry as :class:`~conrod.film.reynolds.ReynoldsFilm`,
+The film solve is the compiled projected multigrid of :mod:`conrod.film.reynolds.multigrid`
+on the same grid, masks and mid-plane symmetry as :class:`~conrod.film.reynolds.film.ReynoldsFilm`,
 warm-started from the last field; the Heun loop of :mod:`conrod.orbit.quasi_static`
 runs compiled around it.
 
@@ -30,8 +30,8 @@ import numba as nb
 import numpy as np
 
 from conrod.film.massless import constrain_and_record, project_onto_circle
-from conrod.film.multigrid_operators import copy_into
-from conrod.film.reynolds_multigrid import coarse_levels, multigrid_solve, read_only
+from conrod.film.reynolds.multigrid import coarse_levels, multigrid_solve, read_only
+from conrod.film.reynolds.multigrid_operators import copy_into
 
 ANGLE_TOLERANCE = 1.0e-8
 """Stop when the film force is within this angle of −W [rad]: the relative residual

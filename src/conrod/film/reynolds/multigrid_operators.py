@@ -1,6 +1,6 @@
-"""Building blocks of the projected multigrid of :mod:`conrod.film.reynolds_multigrid`
+"""Building blocks of the projected multigrid of :mod:`conrod.film.reynolds.multigrid`
 (compiled): face conductances and normalised 5-point stencils of the finite-volume
-Reynolds balance (:mod:`conrod.film.reynolds_kernel`), (projected) Gauss–Seidel/SOR
+Reynolds balance (:mod:`conrod.film.reynolds.kernel`), (projected) Gauss–Seidel/SOR
 relaxation, flux residuals, and the grid transfers — restriction (transpose of bilinear
 prolongation), bilinear prolongation, every-other-node coarsening — with θ periodic and the
 optional mid-plane symmetric layout (z ≤ 0 plus one padding row).

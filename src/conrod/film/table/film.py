@@ -2,7 +2,7 @@
 
 Any :class:`~conrod.film.base.FilmModel` (``base``) is solved once per table node for a pure
 squeeze state (ω_j = ω_b = 0) at eccentricity ε_j along +x and unit-direction velocity
-β_k; Booker's reduction (:mod:`conrod.film.table_kernel`) turns every later state, with any
+β_k; Booker's reduction (:mod:`conrod.film.table.kernel`) turns every later state, with any
 journal and shell speeds, into such a squeeze state, so one table serves all speeds and
 viscosities. Forces are interpolated quadratically in the (stretched) eccentricity and
 linearly in the velocities; side/supply flow and p_max the same way.
@@ -45,7 +45,7 @@ from conrod.film.capabilities import (
     film_memory,
     refuse_deformation,
 )
-from conrod.film.table_kernel import (
+from conrod.film.table.kernel import (
     CLUSTERING,
     WEIGHT_POWER,
     direction_of,
@@ -155,7 +155,7 @@ class TabulatedFilm:
     def from_settings(cls, geometry: BearingGeometry, settings: Any) -> TabulatedFilm:
         """Table of a Reynolds film on the ``[solver]`` grid (``n_theta``, ``n_z``,
         ``film_tolerance``)."""
-        from conrod.film.reynolds import ReynoldsFilm
+        from conrod.film.reynolds.film import ReynoldsFilm
 
         return cls(ReynoldsFilm.from_settings(geometry, settings))
 

@@ -26,7 +26,7 @@ maximum gap θ = ψ + π; the steady JFO problem is solved with the Elrod–Adam
 
 Supply features (grooves, feed holes) are Dirichlet regions at the supply pressure with a
 full film; the bearing edges z = ±L/2 are at ambient (gauge 0) pressure.
-See :mod:`conrod.film.mass_conserving_kernel` for the discrete equations.
+See :mod:`conrod.film.mass_conserving.kernel` for the discrete equations.
 """
 
 from __future__ import annotations
@@ -40,13 +40,13 @@ import numpy as np
 from conrod.errors import CaseError, ConvergenceError, FilmThicknessError
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.characteristics import FilmGrid
-from conrod.film.mass_conserving_kernel import (
+from conrod.film.mass_conserving.kernel import (
     assemble,
     cell_balance,
     elrod_adams_steady,
     projected_sor,
 )
-from conrod.film.mass_conserving_memory import FULL, FilmFields, MassConservingMemory
+from conrod.film.mass_conserving.memory import FULL, FilmFields, MassConservingMemory
 from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.rated_state import state_rate
 from conrod.film.supply import nearest_theta_index, supply_mask
@@ -68,7 +68,7 @@ class MassConservingFilm:
     friction : 'film_fraction' | 'full_film'  Couette shear scaled by ϑ (physical JFO)
         or over the full 360° (Raimondi & Boyd's convention).
     method : 'multigrid' | 'sor'  Full-film solver of a transient instant: the projected
-        multigrid of :mod:`conrod.film.reynolds_multigrid` (broken-film nodes held at p_cav
+        multigrid of :mod:`conrod.film.reynolds.multigrid` (broken-film nodes held at p_cav
         like Dirichlet nodes; only z ≤ 0 is solved when film fraction, sources and supply
         are mirror-symmetric about the mid-plane) or plain projected SOR.
     pressure_viscosity : PressureViscosity or None  μ(p) law: the p–ϑ problem is solved
@@ -106,7 +106,7 @@ class MassConservingFilm:
         self._fixed = np.where(self._supply, g.supply_pressure, 0.0) - g.cavitation_pressure
         if self.method not in ("multigrid", "sor"):
             raise CaseError(f"method = {self.method!r}: allowed 'multigrid' or 'sor'")
-        from conrod.film.reynolds import optimal_relaxation
+        from conrod.film.reynolds.film import optimal_relaxation
 
         self._omega = self.omega if self.omega is not None else optimal_relaxation(self.film_grid)
 
@@ -179,8 +179,8 @@ class MassConservingFilm:
         """Film force (F_x, F_y) [N] at the end of an implicit step ``dt`` [s] from the
         content of ``memory`` (BDF2 with the content of ``previous``, one step earlier;
         else backward Euler), and the memory after it
-        (:func:`conrod.film.mass_conserving_step.content_step`)."""
-        from conrod.film.mass_conserving_step import content_step
+        (:func:`conrod.film.mass_conserving.step.content_step`)."""
+        from conrod.film.mass_conserving.step import content_step
 
         return content_step(self, state, memory, dt, warm, previous)
 
@@ -197,8 +197,8 @@ class MassConservingFilm:
                            nodal: np.ndarray, rate_step: float | None):
         """Response of the nodal loads and the force to the film thickness at the content
         step ``solved`` (its memory) whose content capacity is 12μΔxΔz/``rate_step``
-        (:func:`conrod.film.mass_conserving_response.content_step_response`)."""
-        from conrod.film.mass_conserving_response import content_step_response
+        (:func:`conrod.film.mass_conserving.response.content_step_response`)."""
+        from conrod.film.mass_conserving.response import content_step_response
 
         return content_step_response(self, state, solved, nodal, rate_step)
 
@@ -290,7 +290,7 @@ class MassConservingFilm:
         if self.method == "sor":
             return projected_sor(pressure, active, f.a_east, f.a_north, source, -p_cav,
                                  self._omega, self.tolerance, self.max_iterations)
-        from conrod.film import reynolds_multigrid as multigrid
+        from conrod.film.reynolds import multigrid as multigrid
 
         gauge = pressure + p_cav
         symmetric = (not f.has_deformation and self.n_z % 4 == 0
@@ -409,7 +409,7 @@ class MassConservingFilm:
         inflows: tuple[float, float] | None = None,
 ) -> FilmResult:
         """Forces, torques, flows, extremes from the shifted pressure p̃ and ϑ."""
-        from conrod.film.mass_conserving_results import film_characteristics
+        from conrod.film.mass_conserving.results import film_characteristics
 
         if inflows is None:
             _, from_edges, from_supply = cell_balance(pressure, fraction, f.free, f.edge,

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from conrod.film.base import FilmResult, FilmState
-from conrod.film.mass_conserving_memory import FilmFields
+from conrod.film.mass_conserving.memory import FilmFields
 
 
 def axial_weights(n_z: int, dz: float) -> np.ndarray:

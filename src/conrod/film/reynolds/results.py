@@ -1,4 +1,4 @@
-"""Characteristics of a solved Reynolds film (:class:`~conrod.film.reynolds.ReynoldsFilm`):
+"""Characteristics of a solved Reynolds film (:class:`~conrod.film.reynolds.film.ReynoldsFilm`):
 forces and extremes of the pressure, friction torques of the shear with μ(p), flows and
 cavitation from the discrete flow balance of the solved field ([D2] ch. 3)."""
 
@@ -8,8 +8,8 @@ import math
 from typing import Any
 
 from conrod.film import characteristics as chars
-from conrod.film import reynolds_kernel as kernel
 from conrod.film.base import FilmResult, FilmState
+from conrod.film.reynolds import kernel as kernel
 
 
 def reynolds_characteristics(film: Any, problem: Any, reduced, pressure, state: FilmState,

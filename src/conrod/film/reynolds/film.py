@@ -8,7 +8,7 @@ The pressure solves the Reynolds equation of :mod:`conrod.film.base` on a
 * optionally p = 0 on an axial inlet line at the largest gap θ = ψ + π (Raimondi &
   Boyd's full-bearing condition, ``ambient_line_at_max_gap=True``),
 * cavitation by projection p := max(p, p_cav) inside projected SOR
-  (:mod:`conrod.film.reynolds_kernel`).
+  (:mod:`conrod.film.reynolds.kernel`).
 
 Speed: a cold solve starts on up to three nested grids (coarse → fine, [D2]);
 a solve given a :class:`ReynoldsMemory` starts from its field (warm start), moved along the
@@ -27,15 +27,15 @@ import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError, FilmThicknessError
 from conrod.film import characteristics as chars
-from conrod.film import reynolds_kernel as kernel
-from conrod.film import reynolds_multigrid as multigrid
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest
 from conrod.film.characteristics import FilmGrid
 from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.rated_state import state_rate
-from conrod.film.reynolds_memory import ReynoldsMemory, scaled_state
-from conrod.film.reynolds_results import reynolds_characteristics
+from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds import multigrid as multigrid
+from conrod.film.reynolds.memory import ReynoldsMemory, scaled_state
+from conrod.film.reynolds.results import reynolds_characteristics
 from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
 
 FrictionConvention = Literal["full_film", "film_fraction"]
@@ -221,9 +221,9 @@ class ReynoldsFilm:
 
     def flight_kernel(self, memory: ReynoldsMemory | None, newton_tolerance: float):
         """Compiled force and Jacobian warm-started from ``memory`` for the implicit orbit
-        with mass (:func:`conrod.film.reynolds_flight.flight_kernel`; None when not exact
+        with mass (:func:`conrod.film.reynolds.flight.flight_kernel`; None when not exact
         for this configuration)."""
-        from conrod.film.reynolds_flight import flight_kernel
+        from conrod.film.reynolds.flight import flight_kernel
 
         return flight_kernel(self, memory, newton_tolerance)
 
@@ -234,8 +234,8 @@ class ReynoldsFilm:
 
     def evaluate_pressure(self, state: FilmState, memory: ReynoldsMemory | None = None):
         """The pressure alone at ``state`` warm-started from ``memory``
-        (:class:`~conrod.film.reynolds_response.PressureEvaluation`)."""
-        from conrod.film.reynolds_response import evaluate_pressure
+        (:class:`~conrod.film.reynolds.response.PressureEvaluation`)."""
+        from conrod.film.reynolds.response import evaluate_pressure
 
         return evaluate_pressure(self, state, memory)
 
@@ -247,8 +247,8 @@ class ReynoldsFilm:
     def thickness_response(self, state: FilmState, solved: Any, nodal: np.ndarray,
                            rate_step: float | None):
         """Response of the nodal loads and the force to the film thickness at the solve
-        ``solved`` (:func:`conrod.film.reynolds_response.thickness_response`)."""
-        from conrod.film.reynolds_response import thickness_response
+        ``solved`` (:func:`conrod.film.reynolds.response.thickness_response`)."""
+        from conrod.film.reynolds.response import thickness_response
 
         return thickness_response(self, state, solved.pressure, nodal, rate_step)
 
@@ -298,7 +298,7 @@ class ReynoldsFilm:
         return memory.after(reduced, scaled_state(state, self.geometry.radial_clearance))
 
     def compiled_kernel(self) -> CompiledKernel | None:
-        """Booker's squeeze-direction loop (:mod:`conrod.film.reynolds_squeeze`), exact for a
+        """Booker's squeeze-direction loop (:mod:`conrod.film.reynolds.squeeze`), exact for a
         rigid, isoviscous multigrid film with p_supply = p_cav = 0 and no inlet line; else None."""
         g = self.geometry
         exact = (self.method == "multigrid" and not self.ambient_line_at_max_gap
@@ -307,7 +307,7 @@ class ReynoldsFilm:
         return CompiledKernel(None, (), self._squeeze_cycle) if exact else None
 
     def _squeeze_cycle(self, request: QuasiStaticRequest) -> Any:
-        from conrod.film.reynolds_squeeze import squeeze_cycle
+        from conrod.film.reynolds.squeeze import squeeze_cycle
 
         return squeeze_cycle(self, request)
 
@@ -434,5 +434,5 @@ class ReynoldsFilm:
                         state: FilmState, info: dict) -> FilmResult:
         """All characteristics of a solve of ``problem``: flows and cavitation from the
         solved (reduced) field, forces, p_max and shear from the pressure with μ(p)
-        (:func:`conrod.film.reynolds_results.reynolds_characteristics`)."""
+        (:func:`conrod.film.reynolds.results.reynolds_characteristics`)."""
         return reynolds_characteristics(self, problem, reduced, pressure, state, info)

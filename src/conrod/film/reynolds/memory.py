@@ -1,4 +1,4 @@
-"""Warm start of the Reynolds film (:class:`~conrod.film.reynolds.ReynoldsFilm`): the last
+"""Warm start of the Reynolds film (:class:`~conrod.film.reynolds.film.ReynoldsFilm`): the last
 solved pressure field and a secant predictor from the one before it."""
 
 from __future__ import annotations

@@ -20,7 +20,7 @@ import numpy as np
 from conrod.film.base import BearingGeometry, FilmResult, FilmState, film_thickness
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest, refuse_deformation
 from conrod.film.piezoviscosity import PressureViscosity
-from conrod.film.short_bearing_kernel import (
+from conrod.film.short.kernel import (
     ECCENTRICITY_LIMIT,
     short_bearing_force,
     short_bearing_polar,
@@ -67,7 +67,7 @@ class ShortBearingFilm:
         short-bearing theory has ambient pressure on both edges only).
     n_theta, n_z : int  Grid of the pressure field returned on request [-].
     pressure_viscosity : PressureViscosity or None  μ(p) law: the closed form holds for
-        the reduced pressure, forces by quadrature (:mod:`conrod.film.short_piezoviscous`).
+        the reduced pressure, forces by quadrature (:mod:`conrod.film.short.piezoviscous`).
     """
 
     geometry: BearingGeometry
@@ -104,7 +104,7 @@ class ShortBearingFilm:
         return CompiledKernel(kernel_force, params, self._quasi_static_cycle, radial_damping)
 
     def _quasi_static_cycle(self, r: QuasiStaticRequest) -> Any:
-        from conrod.film.short_bearing_velocity import short_bearing_cycle
+        from conrod.film.short.velocity import short_bearing_cycle
 
         g = self.geometry
         alpha = start_angle(r.vx, r.vy, r.x, r.y, r.load_x[0], r.load_y[0],
@@ -167,7 +167,7 @@ class ShortBearingFilm:
     # ------------------------------------------------- piezoviscous hooks (q ↔ p)
     def _piezoviscous(self, state: FilmState) -> tuple[tuple[float, float], float, dict]:
         """((F_x, F_y) [N], F_t [N], diagnostics) with pressure-dependent viscosity."""
-        from conrod.film.short_piezoviscous import piezoviscous_polar
+        from conrod.film.short.piezoviscous import piezoviscous_polar
 
         g, c = self.geometry, self.geometry.radial_clearance
         ex, ey = state.eccentricity_x, state.eccentricity_y
@@ -192,7 +192,7 @@ class ShortBearingFilm:
         """Extra Couette moment of μ(p) − μ₀ on the active arc [N m] (0 when isoviscous)."""
         if self.pressure_viscosity is None:
             return 0.0
-        from conrod.film.short_piezoviscous import piezoviscous_couette_excess
+        from conrod.film.short.piezoviscous import piezoviscous_couette_excess
 
         g = self.geometry
         return piezoviscous_couette_excess(

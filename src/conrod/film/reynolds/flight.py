@@ -2,7 +2,7 @@
 
 The implicit orbit integrator (:mod:`conrod.orbit.tr_bdf2`) runs its whole free flight
 compiled when the film force is a numba function. For the rigid, isoviscous
-:class:`~conrod.film.reynolds.ReynoldsFilm` solved by multigrid this module gives it one:
+:class:`~conrod.film.reynolds.film.ReynoldsFilm` solved by multigrid this module gives it one:
 the discrete source of the Reynolds equation is linear in the squeeze velocity of the
 mean frame,
 
@@ -10,9 +10,9 @@ mean frame,
           \\mathbf v_s = \\dot{\\mathbf e} − κ\\bar ω(−e_y, e_x),\\; κ = \\sin Δθ/Δθ,
 
 exactly the central-difference wedge plus squeeze term of
-:func:`conrod.film.reynolds_kernel.assemble_coefficients` (Booker [1];
-:mod:`conrod.film.reynolds_squeeze`), so a force evaluation is one call of the compiled
-projected multigrid (:func:`conrod.film.reynolds_multigrid.multigrid_solve`) on the same
+:func:`conrod.film.reynolds.kernel.assemble_coefficients` (Booker [1];
+:mod:`conrod.film.reynolds.squeeze`), so a force evaluation is one call of the compiled
+projected multigrid (:func:`conrod.film.reynolds.multigrid.multigrid_solve`) on the same
 grid, masks, supply pressure, cavitation pressure and mid-plane symmetry as the film,
 warm-started from the last solved field that the kernel carries in its parameters.
 
@@ -37,9 +37,9 @@ from typing import Any
 import numba as nb
 import numpy as np
 
-from conrod.film.multigrid_operators import copy_into
-from conrod.film.reynolds_memory import ReynoldsMemory
-from conrod.film.reynolds_multigrid import multigrid_solve
+from conrod.film.reynolds.memory import ReynoldsMemory
+from conrod.film.reynolds.multigrid import multigrid_solve
+from conrod.film.reynolds.multigrid_operators import copy_into
 
 JACOBIAN_STEP = 1.0e-5
 """Forward-difference step of the Jacobian: position in units of c, velocity in units of
@@ -77,7 +77,7 @@ class FlightKernel:
         return dict(zip(STATS, (float(v) for v in self.params[-1]), strict=True))
 
     def memory(self):
-        """The film's memory (:class:`~conrod.film.reynolds_memory.ReynoldsMemory`) holding the
+        """The film's memory (:class:`~conrod.film.reynolds.memory.ReynoldsMemory`) holding the
         last solved field on the full grid."""
         field = self.params[0]
         n_z = self.film.n_z
@@ -91,14 +91,14 @@ class FlightKernel:
 
 
 def flight_kernel(film, memory, newton_tolerance: float) -> FlightKernel | None:
-    """The compiled force of a :class:`~conrod.film.reynolds.ReynoldsFilm` when it is
+    """The compiled force of a :class:`~conrod.film.reynolds.film.ReynoldsFilm` when it is
     exact for this film (rigid, isoviscous, multigrid, no inlet line at the largest gap),
     warm-started from ``memory`` (a ``ReynoldsMemory``); None otherwise.
 
     newton_tolerance : float  Multigrid tolerance of the force evaluations [-] (never
         below the film's own ``tolerance``, which the Jacobian uses).
     """
-    from conrod.film.reynolds_squeeze import SqueezeGrid
+    from conrod.film.reynolds.squeeze import SqueezeGrid
 
     if (film.method != "multigrid" or film.ambient_line_at_max_gap
             or film.pressure_viscosity is not None):

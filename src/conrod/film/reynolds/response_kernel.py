@@ -1,5 +1,5 @@
-"""Compiled kernel of :mod:`conrod.film.reynolds_response`: the change of the discrete flow
-balance of :mod:`conrod.film.reynolds_kernel` per unit bore displacement at one row.
+"""Compiled kernel of :mod:`conrod.film.reynolds.response`: the change of the discrete flow
+balance of :mod:`conrod.film.reynolds.kernel` per unit bore displacement at one row.
 
 A bore displacement u_j raises h by u_j on the whole row j (and ḣ by ``rate`` u_j). In the
 balance of node (i, k)

@@ -3,7 +3,7 @@
 The short-bearing Reynolds equation ∂_z(h³ ∂_z p/(12μ(p))) = (U/2) ∂_x h + ∂_t h becomes,
 in the reduced pressure q(p) of :mod:`conrod.film.piezoviscosity`, the isoviscous one
 ∂_z(h³ ∂_z q/(12μ₀)) = (U/2) ∂_x h + ∂_t h, so the short-bearing solution of
-:mod:`conrod.film.short_bearing_kernel` holds for q:
+:mod:`conrod.film.short.kernel` holds for q:
 
 .. math:: q(θ', z) = -\\frac{3 μ_0 c V \\sin(θ' - α)}{h^3} \\left(\\frac{L^2}{4} - z^2\\right),
           \\qquad p = q^{-1}(q),
@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from conrod.film.piezoviscosity import PressureViscosity
-from conrod.film.short_bearing_kernel import (
+from conrod.film.short.kernel import (
     ECCENTRICITY_LIMIT,
     short_bearing_polar,
     sommerfeld_angle,

@@ -1,5 +1,5 @@
 """What a mass-conserving film remembers between instants, and the discrete fields of one
-solve (:mod:`conrod.film.mass_conserving`)."""
+solve (:mod:`conrod.film.mass_conserving.film`)."""
 
 from __future__ import annotations
 

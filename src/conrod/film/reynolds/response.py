@@ -25,11 +25,11 @@ from typing import Any
 import numpy as np
 from scipy.sparse.linalg import splu
 
-from conrod.film import reynolds_kernel as kernel
 from conrod.film.base import FilmResult
 from conrod.film.linearised import active_matrix
-from conrod.film.reynolds_memory import ReynoldsMemory
-from conrod.film.reynolds_response_kernel import bore_row_imbalance
+from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds.memory import ReynoldsMemory
+from conrod.film.reynolds.response_kernel import bore_row_imbalance
 from conrod.film.step_system import FilmResponse
 
 

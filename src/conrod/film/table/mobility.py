@@ -1,6 +1,6 @@
 """Booker's mobility method with a numerically computed mobility map.
 
-Normalisation (derived from :mod:`conrod.film.table_kernel`)
+Normalisation (derived from :mod:`conrod.film.table.kernel`)
 ------------------------------------------------------------
 In the frame turning at ω̄ = (ω_j + ω_b)/2 the film is a pure squeeze film, so a journal
 carrying the load W (F_film = −W, quasi-static, massless) moves with
@@ -16,9 +16,10 @@ differently; only the product above matters. A load turning at ω̄ with a stead
 eccentricity gives ė = 0 — the half-speed whirl with no film capacity (a known pitfall).
 
 The map f̄(ε, β) comes from any base film model (default: the finite-difference
-:class:`~conrod.film.reynolds.ReynoldsFilm`) through :class:`~conrod.film.table.TabulatedFilm`
-(disk-cached). ``MobilityFilm.short_bearing(geometry)`` uses the closed-form short-bearing
-squeeze force instead — Booker's classical short-bearing mobility — for comparison.
+:class:`~conrod.film.reynolds.film.ReynoldsFilm`) through
+:class:`~conrod.film.table.film.TabulatedFilm` (disk-cached).
+``MobilityFilm.short_bearing(geometry)`` uses the closed-form short-bearing squeeze force
+instead — Booker's classical short-bearing mobility — for comparison.
 
 [1] J.F. Booker, "Dynamically loaded journal bearings: mobility method of solution",
     J. Basic Eng. 87 (1965) 537–546.
@@ -36,8 +37,8 @@ import numpy as np
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel
-from conrod.film.table import TabulatedFilm
-from conrod.film.table_kernel import inverse_direction, mobility_velocity, unit_force
+from conrod.film.table.film import TabulatedFilm
+from conrod.film.table.kernel import inverse_direction, mobility_velocity, unit_force
 
 
 @dataclass
@@ -65,14 +66,14 @@ class MobilityFilm:
     table: TabulatedFilm = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        from conrod.film.table import check_tabulable
+        from conrod.film.table.film import check_tabulable
 
         if not isinstance(self.geometry, BearingGeometry):
             raise CaseError(f"MobilityFilm: geometry = {type(self.geometry).__name__}: a "
                             "conrod.BearingGeometry is required")
         check_tabulable(self.geometry, self.name)
         if self.base is None:
-            from conrod.film.reynolds import ReynoldsFilm
+            from conrod.film.reynolds.film import ReynoldsFilm
 
             self.base = ReynoldsFilm(self.geometry, n_theta=self.n_theta, n_z=self.n_z)
         self.table = TabulatedFilm(
@@ -89,7 +90,7 @@ class MobilityFilm:
     @classmethod
     def short_bearing(cls, geometry: BearingGeometry, **kwargs: Any) -> MobilityFilm:
         """Booker's short-bearing mobility (closed-form squeeze force, densely tabulated)."""
-        from conrod.film.short_bearing import ShortBearingFilm
+        from conrod.film.short.film import ShortBearingFilm
 
         options = {"n_eps": 48, "n_direction": 96, "use_cache": False} | kwargs
         return cls(geometry, base=ShortBearingFilm(geometry), **options)

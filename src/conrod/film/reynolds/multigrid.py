@@ -1,4 +1,4 @@
-"""Projected multigrid for the Reynolds film (compiled; used by :mod:`conrod.film.reynolds`).
+"""Projected multigrid for the Reynolds film (compiled; used by :mod:`conrod.film.reynolds.film`).
 
 One cycle (Brandt & Cryer's projected multigrid in its simplest, correction form [1]):
 
@@ -12,7 +12,7 @@ One cycle (Brandt & Cryer's projected multigrid in its simplest, correction form
    with ``CUT_LEVELS`` coarse levels or more, a coarse face whose grid line meets the
    fine grid's free boundary before the masked coarse neighbour ends where the fine mask
    puts it (Shortley–Weller: conductance × 2^k/t for a boundary t fine cells away,
-   :func:`~conrod.film.multigrid_operators.cut_stencil`); the coarse masks and stencils
+   :func:`~conrod.film.reynolds.multigrid_operators.cut_stencil`); the coarse masks and stencils
    are rebuilt only when the cavitated set moved,
 4. the prolonged correction is added on the full-film nodes, projected, and
    ``POST_SWEEPS`` projected sweeps follow.
@@ -48,7 +48,7 @@ from __future__ import annotations
 import numba as nb
 import numpy as np
 
-from conrod.film.multigrid_operators import (
+from conrod.film.reynolds.multigrid_operators import (
     add_prolongated,
     coarsen,
     coarsest_relaxation,
@@ -73,7 +73,7 @@ ESTIMATE_RATE = 0.5
 estimated as change·ρ/(1 − ρ) and the cycles stop once that is ≤ tolerance [-]."""
 CUT_LEVELS = 4
 """Coarse-level count from which the coarse faces are cut at the fine free boundary
-(:func:`~conrod.film.multigrid_operators.cut_stencil`) [-]; below it the sampled masks
+(:func:`~conrod.film.reynolds.multigrid_operators.cut_stencil`) [-]; below it the sampled masks
 (module docstring)."""
 W_CYCLE_LEVELS = 5
 """Coarse-level count from which the correction is a W-cycle (V below) [-]; above the

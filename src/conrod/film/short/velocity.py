@@ -1,7 +1,7 @@
 """Massless journal velocity of the short bearing by Booker's exact inversion.
 
 In the frame turning at ω̄ = (ω_j + ω_b)/2 the short-bearing film of
-:mod:`conrod.film.short_bearing_kernel` is a pure squeeze film driven by
+:mod:`conrod.film.short.kernel` is a pure squeeze film driven by
 v_s = ė − ω̄ × e: with the line-of-centres components (v_r, v_t) = (ė, e(ψ̇ − ω̄)) its
 wedge and squeeze rates are ε(ω_j + ω_b − 2ψ̇) = −2v_t/c and 2ε̇ = 2v_r/c, so the squeeze
 wedge speed is V = 2|v_s|/c and the active-arc angle α = atan2(v_r, −v_t), i.e. v_s points
@@ -33,7 +33,7 @@ import numba as nb
 import numpy as np
 
 from conrod.film.massless import constrain_and_record, project_onto_circle
-from conrod.film.short_bearing_kernel import (
+from conrod.film.short.kernel import (
     ECCENTRICITY_LIMIT,
     active_arc_integrals,
     short_bearing_force,

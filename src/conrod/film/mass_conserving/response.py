@@ -1,7 +1,7 @@
 """Exact response of the mass-conserving film's content step to the bore deformation.
 
 On its converged cavitation set the implicit content step (Ausas, Jai & Buscaglia 2009;
-:func:`conrod.film.mass_conserving_kernel.elrod_adams_step`) is, per free cell P,
+:func:`conrod.film.mass_conserving.kernel.elrod_adams_step`) is, per free cell P,
 
 .. math:: R_P = a_P p̃_P − Σ a_{nb} p̃_{nb} + C_e ϑ_e − C_w ϑ_w + K_P ϑ_P − S_P = 0
 
@@ -15,7 +15,7 @@ step) does not move. For a fixed set,
 .. math:: ∂R/∂x\\;∂x/∂u_r = −∂R/∂u_r
 
 is one sparse LU and n back-substitutions, and the nodal forces f_j = Σ_k W_jk p(θ_j, z_k)
-follow linearly. Unlike the Reynolds response (:mod:`conrod.film.reynolds_response`), the
+follow linearly. Unlike the Reynolds response (:mod:`conrod.film.reynolds.response`), the
 film fraction of the broken-film cells and its transport are in it, which is what makes
 the coupled Newton iteration converge in a few steps.
 """
@@ -28,7 +28,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
 
-from conrod.film.mass_conserving_results import axial_weights
+from conrod.film.mass_conserving.results import axial_weights
 from conrod.film.step_system import FilmResponse
 
 
