@@ -150,6 +150,33 @@ def test_killed_worker_loses_no_variant(two_workers, tmp_path):
     assert len(list(variants_dir(tmp_path).iterdir())) == 9  # no temporary folder left
 
 
+def test_killed_local_worker_loses_no_variant(tmp_path):
+    """One of two local worker processes is killed (SIGKILL) after the first finished
+    variant; another takes its place and the sweep ends with 9 finished variants."""
+    import psutil
+
+    killed = []
+    me = psutil.Process()
+
+    def pool_worker(process) -> bool:  # forked from this process, or from its forkserver
+        parent = process.parent()
+        return process.status() != "zombie" and (
+            process.cmdline() == me.cmdline()
+            or (parent is not None and "forkserver" in " ".join(parent.cmdline())))
+
+    def kill_one(record):
+        if not killed:
+            worker = next(p for p in me.children(recursive=True) if pool_worker(p))
+            os.kill(worker.pid, signal.SIGKILL)
+            killed.append(worker.pid)
+
+    table = Sweep(STUDY, tmp_path, workers=2).run(on_record=kill_one)
+    assert killed
+    assert (table["status"] != "failed").all() and len(table) == 9
+    assert _finished(tmp_path) == 9
+    assert len(list(variants_dir(tmp_path).iterdir())) == 9  # no staging folder left
+
+
 def test_interrupted_sweep_keeps_finished_variants(tmp_path):
     """``conrod sweep`` killed mid-way; the rerun reuses what finished and completes the rest."""
     env = {**os.environ, "PYTHONPATH": str(REPO / "src")}
