@@ -97,6 +97,39 @@ def test_a_scheduler_that_is_not_there_is_a_clear_error(tmp_path, monkeypatch):
     from conrod.errors import CaseError
     from conrod.sweep import cluster as cluster_module
 
-    monkeypatch.setattr(cluster_module, "CONNECT_TIMEOUT", "1s")
+    monkeypatch.setattr(cluster_module, "CONNECT_SECONDS", 1.0)
     with pytest.raises(CaseError, match=r"--scheduler 'tcp://127.0.0.1:9': cannot connect"):
         Sweep(Study.from_dict(STUDY), tmp_path, scheduler="tcp://127.0.0.1:9").run()
+
+
+def test_ctrl_c_while_connecting_exits_130_at_once(tmp_path):
+    """A scheduler address that accepts the connection but never answers: Ctrl-C while the
+    sweep waits for it ends the command within seconds (exit 130), not after the timeout."""
+    import socket
+
+    silent = socket.socket()
+    silent.bind(("127.0.0.1", 0))
+    silent.listen()
+    study = tmp_path / "study.toml"
+    study.write_text(f'base = "{BASE.as_posix()}"\n[[axis]]\nkey = "engine.speed"\n'
+                     "values = [2000.0]\n", encoding="utf-8")
+    env = {**os.environ, "PYTHONPATH": str(REPO / "src")}
+    command = [sys.executable, "-c", "from conrod.cli.app import main; main()", "sweep",
+               str(study), "--out", str(tmp_path / "out"), "--scheduler",
+               f"tcp://127.0.0.1:{silent.getsockname()[1]}"]
+    try:
+        with subprocess.Popen(command, env=env, stderr=subprocess.PIPE, text=True,
+                              start_new_session=True) as process:
+            for line in process.stderr:
+                if "variants validated" in line:
+                    break
+            time.sleep(0.5)  # connecting
+            sent = time.monotonic()
+            os.killpg(process.pid, signal.SIGINT)
+            stderr = process.stderr.read()
+            process.wait(timeout=30)
+    finally:
+        silent.close()
+    assert process.returncode == 130, stderr
+    assert time.monotonic() - sent < 5.0
+    assert "Traceback" not in stderr

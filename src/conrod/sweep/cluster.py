@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import contextlib
 import itertools
+import threading
+import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -32,7 +34,7 @@ from conrod.sweep.status import STATUS_FAILED
 from conrod.sweep.store import read_record
 from conrod.sweep.worker import RETURNED_ITEMS, run_batch
 
-CONNECT_TIMEOUT = "20s"
+CONNECT_SECONDS = 20.0
 """How long to wait for the scheduler [s]."""
 IN_FLIGHT_PER_WORKER = 2
 """Batches queued per worker, so that none waits for the next [-]."""
@@ -40,18 +42,40 @@ IN_FLIGHT_PER_WORKER = 2
 
 @contextlib.contextmanager
 def connect(address: str) -> Iterator[Any]:
-    """A Dask client of the scheduler at ``address``, closed quickly on exit."""
-    from distributed import Client
+    """A Dask client of the scheduler at ``address``, closed quickly on exit.
 
-    try:
-        client = Client(address, timeout=CONNECT_TIMEOUT)
-    except (OSError, ValueError) as error:
-        raise CaseError(f"--scheduler {address!r}: cannot connect ({error}; allowed: the "
-                        "address of a running Dask scheduler, e.g. tcp://HOST:8786)") from None
+    The client is made in a helper thread while this one looks for Ctrl-C: an address that
+    accepts the connection but never answers would otherwise hold the sweep for good.
+    """
+    client = _client_within(address, CONNECT_SECONDS)
     try:
         yield client
     finally:
         client.close(timeout=2)
+
+
+def _client_within(address: str, seconds: float) -> Any:
+    from distributed import Client
+
+    made: dict[str, Any] = {}
+
+    def attempt() -> None:
+        try:
+            made["client"] = Client(address, timeout=f"{seconds}s")
+        except Exception as error:  # handed to the waiting thread
+            made["error"] = error
+
+    helper = threading.Thread(target=attempt, name="conrod-sweep-connect", daemon=True)
+    helper.start()
+    deadline = time.monotonic() + seconds + 1.0
+    while helper.is_alive() and time.monotonic() < deadline:
+        helper.join(POLL_SECONDS)
+        raise_if_interrupted()
+    if "client" in made:
+        return made["client"]
+    reason = made.get("error") or f"no answer within {seconds:g} s"
+    raise CaseError(f"--scheduler {address!r}: cannot connect ({reason}; allowed: the "
+                    "address of a running Dask scheduler, e.g. tcp://HOST:8786)")
 
 
 def run_on_cluster(client: Any, payloads: list[dict[str, Any]]
