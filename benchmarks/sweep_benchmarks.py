@@ -122,16 +122,26 @@ def compare(make_study, workers: list[int], n: int, repeat: int,
     return runs, ceiling
 
 
-def scaling_rows(label: str, runs: dict[int, list[dict]]) -> list[str]:
-    """Markdown rows: median wall time per worker count and the paired speed-up."""
-    base = runs[min(runs)]
+def speedups(runs: dict[int, list[dict]], count: int) -> list[float]:
+    """Paired speed-ups of ``count`` workers over the fewest, one per repetition."""
+    return [b["wall"] / r["wall"] for b, r in zip(runs[min(runs)], runs[count], strict=True)]
+
+
+def scaling_rows(label: str, runs: dict[int, list[dict]],
+                 ceiling: dict[int, list[dict]] | None = None) -> list[str]:
+    """Markdown rows: median wall time per worker count, the paired speed-up and, with the
+    ceiling runs, the speed-up as a share of what the machine allowed at that moment."""
     rows = []
     for count, measured in runs.items():
-        ratios = [b["wall"] / r["wall"] for b, r in zip(base, measured, strict=True)]
+        ratios = speedups(runs, count)
+        share = "–"
+        if ceiling and ceiling[count]:
+            shares = [r / c for r, c in zip(ratios, speedups(ceiling, count), strict=True)]
+            share = f"{statistics.median(shares):.0%}"
         rows.append(f"| {label} | {measured[0]['n']} | {count} | "
                     f"{statistics.median(r['wall'] for r in measured):.2f} | "
                     f"{statistics.median(ratios):.2f}× ({min(ratios):.2f}–{max(ratios):.2f}) | "
-                    f"{len(measured)} | {sum(r['failed'] for r in measured)} |")
+                    f"{share} | {len(measured)} | {sum(r['failed'] for r in measured)} |")
     return rows
 
 
@@ -192,7 +202,7 @@ def main() -> None:
     loops = int(warm["compute"] / warm["n"] / _seconds_per_loop())
     print("short-bearing variants, each followed by the machine's ceiling", flush=True)
     short, ceiling = compare(short_study, workers, args.short, args.repeat, loops)
-    rows = scaling_rows("short-bearing film, massless orbit", short)
+    rows = scaling_rows("short-bearing film, massless orbit", short, ceiling)
     rows += scaling_rows("ceiling: pure-Python items as long, same pool, no I/O", ceiling)
     if args.ehd:
         print("EHD variants", flush=True)
@@ -220,7 +230,8 @@ def write_table(args, workers: list[int], rows: list[str], overhead: list[str],
         "pure-Python work as long as a variant's computation on a worker pool of the same "
         "size: the speed-up the machine's cores allowed at that moment.", "",
         "| Variants | Count | Workers | Wall time [s] (median) | Speed-up vs fewest workers "
-        "| Runs | Failed |", "| --- | ---: | ---: | ---: | ---: | ---: | ---: |", *rows, "",
+        "(median, range) | Of the ceiling's speed-up (median) | Runs | Failed |",
+        "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |", *rows, "",
         "Per-variant overhead beyond the computation (1 worker, short-bearing variants, "
         "median of the runs):", "", "| Part | ms per variant |", "| --- | ---: |", *overhead]
     if cold is not None:
