@@ -23,6 +23,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import resource
 import statistics
 import subprocess
 import sys
@@ -71,16 +72,25 @@ def timed_run(study, workers: int) -> dict:
     from conrod.sweep import Sweep
 
     with tempfile.TemporaryDirectory(prefix="conrod-sweep-bench-") as folder:
+        own, children = _cpu(resource.RUSAGE_SELF), _cpu(resource.RUSAGE_CHILDREN)
         start = time.perf_counter()
         runner = Sweep(study, Path(folder) / "out", workers=workers)
         runner.variants()
         validated = time.perf_counter() - start
         table = runner.run()
         wall = time.perf_counter() - start
-    return {"wall": wall, "validation": validated, "n": len(table),
+        own = _cpu(resource.RUSAGE_SELF) - own
+        children = _cpu(resource.RUSAGE_CHILDREN) - children  # the workers, reaped
+    return {"wall": wall, "validation": validated, "n": len(table), "own_cpu": own,
+            "worker_cpu": children,
             "compute": float(table["compute_time_s"].sum()),
             "worker": float(table["wall_time_s"].sum()),
             "failed": int((table["status"] == "failed").sum())}
+
+
+def _cpu(who: int) -> float:
+    usage = resource.getrusage(who)
+    return usage.ru_utime + usage.ru_stime
 
 
 def spin(loops: int) -> int:
@@ -142,6 +152,18 @@ def scaling_rows(label: str, runs: dict[int, list[dict]],
                     f"{statistics.median(r['wall'] for r in measured):.2f} | "
                     f"{statistics.median(ratios):.2f}× ({min(ratios):.2f}–{max(ratios):.2f}) | "
                     f"{share} | {len(measured)} | {sum(r['failed'] for r in measured)} |")
+    return rows
+
+
+def cpu_rows(runs: dict[int, list[dict]]) -> list[str]:
+    """CPU seconds of the workers and of the sweep's own process per worker count: the
+    same work split over more processes, or more work?"""
+    rows = []
+    for count, measured in runs.items():
+        workers = statistics.median(r["worker_cpu"] for r in measured)
+        own = statistics.median(r["own_cpu"] for r in measured)
+        rows.append(f"| {count} | {workers:.2f} | {workers / measured[0]['n'] * 1e3:.1f} | "
+                    f"{own:.2f} |")
     return rows
 
 
@@ -210,7 +232,11 @@ def main() -> None:
         rows += scaling_rows("EHD: Reynolds 36×8 on the elastic rod + rigid companion",
                              compare(ehd_study, workers, args.ehd, 1)[0])
     cold = cold_cli(args.cold, max(workers)) if args.cold else None
-    write_table(args, workers, rows, overhead_rows(short[min(workers)]), cold, load)
+    write_table(args, workers, rows, overhead_rows(short[min(workers)]) + [""] + [
+        "CPU time of the short-bearing runs (median): the workers' (all of them) and the sweep "
+        "process's own (validation, dispatch, table):", "",
+        "| Workers | Workers' CPU [s] | per variant [ms] | Sweep process CPU [s] |",
+        "| ---: | ---: | ---: | ---: |", *cpu_rows(short)], cold, load)
 
 
 def write_table(args, workers: list[int], rows: list[str], overhead: list[str],
