@@ -253,9 +253,13 @@ def _die_with_parent() -> None:
 
 
 def _context():
-    """``fork`` from a single-threaded process; ``forkserver`` where other threads run."""
-    if threading.active_count() == 1 and "fork" in multiprocessing.get_all_start_methods():
+    """``fork`` from a single-threaded process; ``forkserver`` where other threads run;
+    ``spawn`` where neither exists (Windows)."""
+    methods = multiprocessing.get_all_start_methods()
+    if threading.active_count() == 1 and "fork" in methods:
         return multiprocessing.get_context("fork")
+    if "forkserver" not in methods:
+        return multiprocessing.get_context("spawn")
     context = multiprocessing.get_context("forkserver")
     context.set_forkserver_preload(["conrod.sweep.worker", "conrod.sweep.pool"])
     return context
