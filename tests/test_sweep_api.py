@@ -24,9 +24,9 @@ def mechanism():
 
 
 @pytest.mark.parametrize(("speeds", "loads", "words"), [
-    ([0.0], [0.5], "speeds_rpm = 0.0: out of range (allowed: > 0 and <= 30000 rpm)"),
-    ([-1000.0], [0.5], "speeds_rpm = -1000.0: out of range (allowed: > 0 and <= 30000 rpm)"),
-    ([40000.0], [0.5], "speeds_rpm = 40000.0: out of range (allowed: > 0 and <= 30000 rpm)"),
+    ([0.0], [0.5], "speeds_rpm = 0.0: out of range (allowed: >= 1 and <= 30000 rpm)"),
+    ([-1000.0], [0.5], "speeds_rpm = -1000.0: out of range (allowed: >= 1 and <= 30000 rpm)"),
+    ([40000.0], [0.5], "speeds_rpm = 40000.0: out of range (allowed: >= 1 and <= 30000 rpm)"),
     ([float("nan")], [0.5], "speeds_rpm = nan: out of range"),
     ([3000.0], [-0.5], "load_scales = -0.5: out of range (allowed: >= 0 and <= 5)"),
     ([3000.0], [float("inf")], "load_scales = inf: out of range"),
