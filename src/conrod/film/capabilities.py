@@ -24,6 +24,8 @@ declares what its inner model declares by delegating the methods.
   a change of its film thickness by whole rows (a bore displacement), with its rate;
 * :class:`HasPressureEvaluation` — an answer by the pressure alone, the other
   characteristics computed once for the accepted one;
+* :class:`HasAcceptedAnswer` — a memory after an implicit step that holds the step's own
+  converged answer, which the characteristics at the step's end report;
 * :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
   integrator's Newton matrix);
 * :class:`HasSensitivities` — force, stiffness and damping from the film's own solver;
@@ -289,6 +291,21 @@ class HasPressureEvaluation(Protocol):
 
 
 @runtime_checkable
+class HasAcceptedAnswer(Protocol):
+    """A film whose memory after an implicit step (:class:`HasContentStep`) holds that
+    step's converged answer (pressure and film fraction): the characteristics at the end
+    of the step are read from it. A new instantaneous solve there would be another problem
+    (the film fraction frozen, the squeeze of the velocity instead of the content balance)
+    with another pressure."""
+
+    def accepted_result(self, state: FilmState, memory: Any, *,
+                        with_pressure: bool = False) -> FilmResult | None:
+        """The answer of the step that ended at ``state`` with ``memory``; None when
+        ``memory`` is not the answer of a step ending at ``state``."""
+        ...
+
+
+@runtime_checkable
 class SupportsDeformationRate(Protocol):
     """A film that can put the bore's rate ∂u/∂t
     (``RatedFilmState.deformation_rate``, :mod:`conrod.film.rated_state`) in its squeeze
@@ -311,6 +328,18 @@ def refuse_deformation(state: FilmState, name: str) -> None:
 def film_memory(film: Any) -> Any:
     """Initial memory of ``film`` (None for a memoryless film)."""
     return film.initial_memory() if isinstance(film, HasMemory) else None
+
+
+def accepted_film(film: Any, state: FilmState, memory: Any, *,
+                  with_pressure: bool = False) -> tuple[FilmResult, Any]:
+    """(result, memory) of the film at a state an integrator accepted with ``memory``: the
+    step's own answer when the memory holds it (:class:`HasAcceptedAnswer`), else a solve
+    (:func:`solve_film`)."""
+    if isinstance(film, HasAcceptedAnswer):
+        result = film.accepted_result(state, memory, with_pressure=with_pressure)
+        if result is not None:
+            return result, memory
+    return solve_film(film, state, memory, with_pressure=with_pressure)
 
 
 def solve_film(

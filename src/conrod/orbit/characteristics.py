@@ -1,7 +1,9 @@
 """Hydromechanical characteristics along the orbit ([D2] Table 1 columns).
 
 At each output angle the film model is solved once for the orbit state, giving h_min and
-its shell angle, p_max, friction torque, side and supply flow. Derived here:
+its shell angle, p_max, friction torque, side and supply flow; where the integrator's step
+that ended there holds its own converged answer (the implicit content step of a
+mass-conserving film), that answer is the row. Derived here:
 
 * attitude angle: from the load vector to the line of centres [rad];
 * journal rotation relative to the shell ∫(ω_j − ω_b)/ω dφ (trapezoid) [rad], and the
@@ -52,13 +54,19 @@ def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[Fi
 def film_results(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[FilmResult]:
     """Film results at the output angles, each with the film memory sampled there by the
     integrator when it carried one (film fraction of a mass-conserving film), else with
-    the memory threaded from angle to angle (warm start)."""
+    the memory threaded from angle to angle (warm start). Where that memory is the answer
+    of the implicit step that ended at the angle (the content step of a mass-conserving
+    film), the row is that answer: one truth, the pressure of the converged state the orbit
+    accepted there (a new solve with the film fraction frozen is another problem, whose
+    pressure can be tens of times off in single rows)."""
     session = problem.session()
     results = []
     for i, state in enumerate(film_states(problem, traj, wj, wb)):
         if traj.film_memory:
             session.restore(traj.film_memory[i])
-        results.append(session.solve(state))
+            results.append(session.accepted(state))
+        else:
+            results.append(session.solve(state))
     return results
 
 

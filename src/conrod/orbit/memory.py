@@ -14,7 +14,7 @@ from __future__ import annotations
 from typing import Any
 
 from conrod.film.base import FilmModel, FilmResult, FilmState
-from conrod.film.capabilities import HasMemory
+from conrod.film.capabilities import HasMemory, accepted_film
 
 
 class FilmSession:
@@ -44,6 +44,16 @@ class FilmSession:
             return self.film.solve(state, with_pressure=with_pressure)
         result, self.memory = self.film.solve_with_memory(
             state, self.memory, with_pressure=with_pressure)
+        return result
+
+    def accepted(self, state: FilmState, *, with_pressure: bool = False) -> FilmResult:
+        """Full film result at a state the integrator accepted with the current memory: the
+        answer of the step that ended there when the memory holds it
+        (:class:`~conrod.film.capabilities.HasAcceptedAnswer`), else a solve."""
+        if not self.has_memory:
+            return self.film.solve(state, with_pressure=with_pressure)
+        result, self.memory = accepted_film(self.film, state, self.memory,
+                                            with_pressure=with_pressure)
         return result
 
     def advance(self, state: FilmState, dt: float) -> None:

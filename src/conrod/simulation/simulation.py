@@ -414,7 +414,7 @@ def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list 
         viscosity=problem.viscosity,
     )
     session = problem.session(film_memory[i] if film_memory else None)
-    field = session.solve(state, with_pressure=True).pressure
+    field = session.accepted(state, with_pressure=True).pressure
     if field is None:
         return None, None
     return field, problem.film.grid()

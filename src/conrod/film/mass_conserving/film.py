@@ -184,6 +184,15 @@ class MassConservingFilm:
 
         return content_step(self, state, memory, dt, warm, previous)
 
+    def accepted_result(self, state: FilmState, memory: MassConservingMemory, *,
+                        with_pressure: bool = False) -> FilmResult | None:
+        """The answer of the content step that ended at ``state`` with ``memory`` (its
+        pressure and film fraction), None when ``memory`` is not such an answer
+        (:func:`conrod.film.mass_conserving.step.accepted_result`)."""
+        from conrod.film.mass_conserving.step import accepted_result
+
+        return accepted_result(self, state, memory, with_pressure)
+
     def with_deformation_rate(self) -> MassConservingFilm:
         """This film with the bore's rate in the squeeze term of its instantaneous solve
         (:class:`~conrod.film.capabilities.SupportsDeformationRate`)."""

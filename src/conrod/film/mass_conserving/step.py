@@ -44,6 +44,10 @@ STEP_TOLERANCE = 1.0e-10
 """Tightest relative change per sweep the step's Ausas sweep is asked for: tighter
 tolerances stagnate in round-off on some fields [-]."""
 
+SAME_FILM = 1.0e-9
+"""Largest difference of the film thickness, share of the radial clearance, at which a
+step's memory is the answer at a state [-]."""
+
 
 
 def content_step(
@@ -90,6 +94,26 @@ def content_step(
             residual=change)
     fx, fy = shifted_pressure_force(film, pressure, state)
     return fx, fy, MassConservingMemory(fraction, pressure, f.h)
+
+
+def accepted_result(film: Any, state: FilmState, memory: MassConservingMemory | None,
+                    with_pressure: bool) -> Any:
+    """FilmResult of the content step that ended at ``state`` with ``memory``: forces,
+    extremes, friction and flows of the step's own pressure p̃ and film fraction ϑ (what
+    the orbit accepted), not of a new instantaneous solve with ϑ frozen. None when
+    ``memory`` holds no step answer or the film thickness of ``state`` is not the step's
+    (within :data:`SAME_FILM` of the clearance)."""
+    if memory is None or memory.thickness is None or memory.pressure is None:
+        return None
+    f = film.fields(state)
+    if (np.shape(memory.thickness) != f.h.shape or float(np.max(np.abs(
+            f.h - memory.thickness))) > SAME_FILM * film.geometry.radial_clearance):
+        return None
+    result = film.characteristics(state, f, memory.pressure,
+                                  film.fraction_field(memory.fraction, f))
+    if with_pressure:
+        result.pressure = film.gauge_pressure(memory.pressure, state)
+    return result
 
 
 def _content(film: Any, f, memory: MassConservingMemory, cell: float,

@@ -309,10 +309,15 @@ class GroovedShortBearingFilm:
         return None
 
     def compiled_kernel(self) -> CompiledKernel | None:
-        """Twice the land's closed-form force; the orbit's generic compiled Newton loop
-        (None when the lands have a pressure-dependent viscosity)."""
+        """Twice the land's closed-form force; the land's exact massless inversion (None
+        when the lands have a pressure-dependent viscosity)."""
         if self.land.pressure_viscosity is not None:
             return None
         g = self.land.geometry
         return CompiledKernel(kernel_force, (g.radius, g.width, g.radial_clearance, 2.0),
-                              None, radial_damping)
+                              self._quasi_static_cycle, radial_damping)
+
+    def _quasi_static_cycle(self, r: QuasiStaticRequest) -> Any:
+        """Booker's inversion of one land at twice the viscosity: the force of two equal
+        lands, 2 F_land(μ) = F_land(2μ), is linear in μ."""
+        return self.land._quasi_static_cycle(dataclasses.replace(r, viscosity=2.0 * r.viscosity))
