@@ -167,32 +167,111 @@ def _support(angle: float, major: float, minor: float) -> tuple:
 
 
 @njit(cache=True)
+def _penetration_curve(angle: float, u: float, v: float, diameter: float, major: float,
+                       minor: float) -> tuple:
+    """g(ψ) = u cos ψ + v sin ψ − H(ψ) + D/2 and its first two derivatives [m, m/rad,
+    m/rad²]: the depth of the journal beyond the shell's tangent of normal ψ."""
+    value, first, second = _support(angle, major, minor)
+    c, s = math.cos(angle), math.sin(angle)
+    return (u * c + v * s - value + 0.5 * diameter, -u * s + v * c - first,
+            -u * c - v * s - second)
+
+
+@njit(cache=True)
+def _climb(u: float, v: float, diameter: float, major: float, minor: float, angle: float,
+           sense: float) -> tuple:
+    """(ψ, g(ψ), g''(ψ), converged) at the local maximum (``sense`` 1) or minimum (−1) of g
+    reached from ``angle`` by safeguarded Newton steps that never lose height: the extremum
+    of the basin ``angle`` lies in [rad, m, m/rad², -]."""
+    value, slope, curvature = _penetration_curve(angle, u, v, diameter, major, minor)
+    for _ in range(100):
+        bent = sense * curvature
+        step = -slope / curvature if bent < 0.0 else math.copysign(0.1, sense * slope)
+        step = min(max(step, -0.3), 0.3)
+        for _ in range(40):  # halve until the step does not lose height
+            trial = _penetration_curve(angle + step, u, v, diameter, major, minor)
+            if sense * (trial[0] - value) >= -1e-15 * major or abs(step) < 1e-14:
+                break
+            step *= 0.5
+        angle += step
+        value, slope, curvature = trial
+        if abs(step) < 1e-13:
+            return angle, value, curvature, sense * curvature < 0.0
+    return angle, value, curvature, False
+
+
+@njit(cache=True)
+def _apart(first: float, second: float, limit: float) -> bool:
+    """True when the angles ``first`` and ``second`` [rad] are more than ``limit`` apart."""
+    return abs(math.sin(0.5 * (second - first))) > math.sin(0.5 * limit)
+
+
+@njit(cache=True)
+def _two_contacts_possible(u: float, v: float, diameter: float, major: float,
+                           minor: float) -> bool:
+    """False when g has one maximum only, or its second cannot be a contact: the offset
+    lies outside the evolute of the ellipse, (a|u|)^{2/3} + (b|v|)^{2/3} = (a² − b²)^{2/3}
+    (one normal to the ellipse through the point, hence one maximum), or the tip of the
+    major axis is wider than the journal (b²/a ≥ D/2: a journal touching there has one
+    contact point)."""
+    if minor * minor / major >= 0.5 * diameter:
+        return False
+    reach = (major * major - minor * minor) ** (2.0 / 3.0)
+    return (major * abs(u)) ** (2.0 / 3.0) + (minor * abs(v)) ** (2.0 / 3.0) < reach
+
+
+@njit(cache=True)
+def support_contacts(u: float, v: float, diameter: float, major: float,
+                     minor: float) -> tuple:
+    """Contact points of a journal offset (u, v) in the shell frame (major axis along u).
+
+    The journal touches the shell where g(ψ) = u cos ψ + v sin ψ − H(ψ) + D/2 has a local
+    maximum: once in general, twice in the worn tip of the major axis when that is
+    narrower than the journal (curvature radius b²/a < D/2, i.e. Δmin < ~Δmax/2), where it
+    lies in a wedge and is pushed from both flanks. Returns (count as a float, (depth, ψ,
+    sign) × 3): the deepest maximum first, then, when there are two, the other maximum and
+    the minimum of g between them (the bottom of the wedge) with sign −1. The contact force
+    is the sum over these points of sign × the contact law at their depth (those with
+    depth > 0): continuous where two maxima appear or merge (a maximum and the minimum
+    beside it meet with equal depth and normal and cancel), and the gradient of the
+    potential Σ sign c δ^{α+1}/(α+1) (envelope theorem at every critical point)."""
+    first, depth, _, _ = _climb(u, v, diameter, major, minor, math.atan2(v, u), 1.0)
+    if not _two_contacts_possible(u, v, diameter, major, minor):
+        return 1.0, depth, first, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    tip = 0.0 if u >= 0.0 else math.pi  # the tip of the major axis on the journal's side
+    middle, low, _, valley = _climb(u, v, diameter, major, minor, tip, -1.0)
+    side = math.copysign(1.0, math.sin(middle - first))  # from the minimum away from `first`
+    other, other_depth, _, peak = _climb(u, v, diameter, major, minor,
+                                         middle + side * 1e-3, 1.0)
+    wedge = (valley and peak and not _apart(tip, middle, 0.5 * math.pi)
+             and not _apart(tip, other, 0.5 * math.pi) and _apart(first, other, 1e-6)
+             and low < min(depth, other_depth))
+    if not wedge:
+        return 1.0, depth, first, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    if other_depth > depth:
+        first, depth, other, other_depth = other, other_depth, first, depth
+    return 3.0, depth, first, 1.0, other_depth, other, 1.0, low, middle, -1.0
+
+
+@njit(cache=True)
 def support_penetration(u: float, v: float, diameter: float, major: float,
                         minor: float) -> tuple:
     """Exact penetration for an offset (u, v) in the shell frame (major axis along u).
 
-    Returns (δ [m], ψ contact-normal angle [rad]): safeguarded Newton iterations on
-    g(ψ) = u cos ψ + v sin ψ − H(ψ) + D/2 from ψ₀ = atan2(v, u).
+    Returns (δ [m], ψ contact-normal angle [rad]): the largest violation
+    max_ψ g(ψ), g = u cos ψ + v sin ψ − H(ψ) + D/2, at the deepest contact point of
+    :func:`support_contacts`.
     """
-    angle = math.atan2(v, u)
-    for _ in range(30):
-        _, first, second = _support(angle, major, minor)
-        slope = -u * math.sin(angle) + v * math.cos(angle) - first
-        curvature = -u * math.cos(angle) - v * math.sin(angle) - second
-        step = -slope / curvature if curvature < 0.0 else math.copysign(0.05, slope)
-        step = min(max(step, -0.3), 0.3)
-        angle += step
-        if abs(step) < 1e-13:
-            break
-    value = _support(angle, major, minor)[0]
-    return u * math.cos(angle) + v * math.sin(angle) - value + 0.5 * diameter, angle
+    found = support_contacts(u, v, diameter, major, minor)
+    return found[1], found[2]
 
 
 @njit(cache=True)
 def exact_contact(dx: float, dy: float, vx: float, vy: float, rod_angle: float,
                   rod_rate: float, diameter: float, major: float, minor: float,
                   ellipse_angle: float) -> tuple:
-    """Exact contact of a shell-centre offset d = (dx, dy) (engine frame).
+    """Exact contact of a shell-centre offset d = (dx, dy) (engine frame) at its deepest
+    point.
 
     Returns (δ, nx, ny, δ̇, lever): contact normal n (engine frame, along which the shell
     is pushed back: force on the shell −R n), penetration rate
@@ -204,6 +283,14 @@ def exact_contact(dx: float, dy: float, vx: float, vy: float, rod_angle: float,
     c, s = math.cos(turn), math.sin(turn)
     depth, angle = support_penetration(c * dx + s * dy, -s * dx + c * dy, diameter, major,
                                        minor)
-    nx, ny = math.cos(angle + turn), math.sin(angle + turn)
+    return contact_point(depth, angle + turn, dx, dy, vx, vy, rod_rate)
+
+
+@njit(cache=True)
+def contact_point(depth: float, normal_angle: float, dx: float, dy: float, vx: float,
+                  vy: float, rod_rate: float) -> tuple:
+    """(δ, nx, ny, δ̇, lever) of one contact point of depth δ [m] with its normal at
+    ``normal_angle`` (engine frame) [rad] (:func:`exact_contact`)."""
+    nx, ny = math.cos(normal_angle), math.sin(normal_angle)
     lever = dx * ny - dy * nx
     return depth, nx, ny, nx * vx + ny * vy - rod_rate * lever, lever

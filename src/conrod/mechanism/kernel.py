@@ -43,9 +43,11 @@ from numba import njit
 
 from conrod.mechanism.geometry import (
     contact_force,
+    contact_point,
     exact_contact,
     penetration,
     penetration_rate,
+    support_contacts,
     support_penetration,
 )
 
@@ -58,7 +60,7 @@ BIG_END, SMALL_END = 8, 18
  GEOMETRY) = range(10)
 """Entries of a joint block (GEOMETRY: 0 radial penetration of [D3], 1 exact contact)."""
 BLOCK_SIZE = 10
-FX, FY, MOMENT, NORMAL, ELASTIC, RADIAL_RATE, DEPTH_RATE, SLIDE, TANGENTIAL = range(9)
+FX, FY, MOMENT, NORMAL, ELASTIC, LOSS, DEPTH_RATE, SLIDE, TANGENTIAL = range(9)
 """Entries of the tuple returned by :func:`joint_loads`."""
 PARAMETER_COUNT = 28
 STATE_SIZE = 9
@@ -125,17 +127,33 @@ def joint_loads(dx: float, dy: float, vx: float, vy: float, rod_angle: float, ro
                 journal_rate: float, p: np.ndarray, block: int) -> tuple:
     """Contact of one joint; rates per radian of crank angle.
 
-    Returns (Fx, Fy, moment, normal, elastic, radial_rate, depth_rate, slide_rate, tangential):
+    Returns (Fx, Fy, moment, normal, elastic, loss, depth_rate, slide_rate, tangential):
     force on the rod [N], moment about the shell centre (friction; exact geometry also the
-    off-centre normal force) [N m], normal force R and its elastic part [N], work rate of
-    the normal force (ṙ, or δ̇ for exact geometry) and δ̇ [m/s], sliding speed [m/s],
-    friction force [N].
+    off-centre normal force) [N m], normal force R and its elastic part [N], the power the
+    contact takes out of the mechanism (R ṙ − c δ^α δ̇ − F_t v_t: damping, clipping,
+    friction, and the non-potential part of [D3]'s radial force on an elliptical shell)
+    [W], δ̇ [m/s], sliding speed [m/s], friction force [N] (of the deepest point where the
+    exact geometry has two, :func:`conrod.mechanism.geometry.support_contacts`; forces,
+    moment, normal force and loss are summed over the points).
     journal_rate : rotation of the journal per radian of crank (1 crank pin, 0 piston pin).
     """
+    if p[block + GEOMETRY] > 0.5:
+        return _exact_loads(dx, dy, vx, vy, rod_angle, rod_rate, journal_rate, p, block)
     depth, nx, ny, radial, depth_rate, lever = joint_kinematics(
         dx, dy, vx, vy, rod_angle, rod_rate, p, block)
     if depth <= 0.0:
         return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    return _point_loads(depth, nx, ny, radial, depth_rate, lever, vx, vy, rod_rate,
+                        journal_rate, p, block, 1.0)
+
+
+@njit(cache=True)
+def _point_loads(depth: float, nx: float, ny: float, radial: float, depth_rate: float,
+                 lever: float, vx: float, vy: float, rod_rate: float, journal_rate: float,
+                 p: np.ndarray, block: int, sign: float) -> tuple:
+    """:func:`joint_loads` of one contact point of depth δ > 0 [m], normal n, work rate
+    and δ' [m/rad], lever [m], times ``sign`` (−1: the minimum between two points of the
+    exact geometry)."""
     omega = p[CRANK_SPEED]
     normal, elastic = contact_force(depth, omega * depth_rate, p[block + STIFFNESS],
                                     p[block + EXPONENT], p[block + DAMPING])
@@ -145,8 +163,34 @@ def joint_loads(dx: float, dy: float, vx: float, vy: float, rod_angle: float, ro
     tangential = -p[block + FRICTION] * normal * slide / math.sqrt(slide * slide + v_reg * v_reg)
     fx = -normal * nx - tangential * ny
     fy = -normal * ny + tangential * nx
-    return (fx, fy, normal * lever - half_d * tangential, normal, elastic, omega * radial,
-            omega * depth_rate, slide, tangential)
+    loss = normal * omega * radial - elastic * omega * depth_rate - tangential * slide
+    return (sign * fx, sign * fy, sign * (normal * lever - half_d * tangential), sign * normal,
+            sign * elastic, sign * loss, omega * depth_rate, slide, sign * tangential)
+
+
+@njit(cache=True)
+def _exact_loads(dx: float, dy: float, vx: float, vy: float, rod_angle: float,
+                 rod_rate: float, journal_rate: float, p: np.ndarray, block: int) -> tuple:
+    """:func:`joint_loads` of the exact geometry: the sum over its contact points."""
+    turn = p[block + ELLIPSE_ANGLE] + rod_angle
+    c, s = math.cos(turn), math.sin(turn)
+    found = support_contacts(c * dx + s * dy, -s * dx + c * dy, p[block + DIAMETER],
+                             p[block + MAJOR], p[block + MINOR])
+    total = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    for i in range(int(found[0])):
+        depth, angle, sign = found[1 + 3 * i], found[2 + 3 * i], found[3 + 3 * i]
+        if depth <= 0.0:
+            continue
+        _, nx, ny, rate, lever = contact_point(depth, angle + turn, dx, dy, vx, vy, rod_rate)
+        point = _point_loads(depth, nx, ny, rate, rate, lever, vx, vy, rod_rate,
+                             journal_rate, p, block, sign)
+        if i == 0:
+            total = point
+        else:
+            total = (total[0] + point[0], total[1] + point[1], total[2] + point[2],
+                     total[3] + point[3], total[4] + point[4], total[5] + point[5],
+                     total[6], total[7], total[8] + point[8])
+    return total
 
 
 @njit(cache=True)
@@ -198,7 +242,8 @@ def _net_power(alpha: float, y: np.ndarray, p: np.ndarray, big: tuple, small: tu
     """Crank power + gas power − contact losses [W] (energy balance, see module doc).
 
     Loss of a joint: R ṙ − c δ^α δ̇ − F_t v_t (damping, clipping, friction and the
-    non-potential part of [D3]'s radial force on an elliptical shell).
+    non-potential part of [D3]'s radial force on an elliptical shell), summed over its
+    contact points (:func:`joint_loads`).
     """
     omega, r = p[CRANK_SPEED], p[CRANK_RADIUS]
     pin_vx, pin_vy = -omega * r * math.sin(alpha), omega * r * math.cos(alpha)
@@ -206,11 +251,7 @@ def _net_power(alpha: float, y: np.ndarray, p: np.ndarray, big: tuple, small: tu
     crank = (big[FX] * pin_vx + big[FY] * pin_vy
              - big[TANGENTIAL] * omega * 0.5 * p[BIG_END + DIAMETER])
     gas = -pressure_force * omega * y[7]
-    loss = 0.0
-    for joint in (big, small):
-        loss += (joint[NORMAL] * joint[RADIAL_RATE] - joint[ELASTIC] * joint[DEPTH_RATE]
-                 - joint[TANGENTIAL] * joint[SLIDE])
-    return crank + gas - loss
+    return crank + gas - big[LOSS] - small[LOSS]
 
 
 @njit(cache=True)
@@ -239,10 +280,27 @@ def mechanical_energy(y: np.ndarray, alpha: float, p: np.ndarray) -> float:
     kinetic = 0.5 * omega * omega * (
         p[ROD_MASS] * (y[1] ** 2 + y[3] ** 2) + p[ROD_INERTIA] * y[5] ** 2
         + p[PISTON_MASS] * y[7] ** 2)
-    depths = penetrations(y, alpha, p)
-    elastic = 0.0
-    for depth, block in ((depths[0], BIG_END), (depths[1], SMALL_END)):
+    bx, by, _, _ = big_end_relative(y, alpha, p)
+    sx, sy, _, _ = small_end_relative(y, p)
+    return (kinetic + _elastic_energy(bx, by, y[4], p, BIG_END)
+            + _elastic_energy(sx, sy, y[4], p, SMALL_END))
+
+
+@njit(cache=True)
+def _elastic_energy(dx: float, dy: float, rod_angle: float, p: np.ndarray,
+                    block: int) -> float:
+    """Σ sign c δ^{α+1}/(α+1) over the contact points of one joint [J]."""
+    exponent, stiffness = p[block + EXPONENT], p[block + STIFFNESS]
+    if p[block + GEOMETRY] <= 0.5:
+        depth = joint_depth(dx, dy, rod_angle, p, block)
+        return stiffness * depth ** (exponent + 1.0) / (exponent + 1.0) if depth > 0.0 else 0.0
+    turn = p[block + ELLIPSE_ANGLE] + rod_angle
+    c, s = math.cos(turn), math.sin(turn)
+    found = support_contacts(c * dx + s * dy, -s * dx + c * dy, p[block + DIAMETER],
+                             p[block + MAJOR], p[block + MINOR])
+    energy = 0.0
+    for i in range(int(found[0])):
+        depth, sign = found[1 + 3 * i], found[3 + 3 * i]
         if depth > 0.0:
-            exponent = p[block + EXPONENT]
-            elastic += p[block + STIFFNESS] * depth ** (exponent + 1.0) / (exponent + 1.0)
-    return kinetic + elastic
+            energy += sign * stiffness * depth ** (exponent + 1.0) / (exponent + 1.0)
+    return energy

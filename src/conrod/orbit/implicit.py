@@ -31,7 +31,13 @@ from conrod.orbit.adaptive import (
 from conrod.orbit.compiled_flight import flight_segment
 from conrod.orbit.problem import OrbitProblem, OrbitState, periodic_sample
 from conrod.orbit.progress import REPORT_EVERY_DEG, report_angle
-from conrod.orbit.tr_bdf2 import STATUS_END, STATUS_HIT, STATUS_NEWTON, specialise
+from conrod.orbit.tr_bdf2 import (
+    STATUS_END,
+    STATUS_HIT,
+    STATUS_JACOBIAN,
+    STATUS_NEWTON,
+    specialise,
+)
 from conrod.orbit.trajectory import CycleTrajectory
 
 FIRST_STEP = 1.0e-4
@@ -184,8 +190,9 @@ class _FreeFlight:
         if self.flight is not None:  # the warm start goes on in the session
             self.session.restore(self.flight.memory())
         if status not in (STATUS_END, STATUS_HIT):
-            what = ("Newton iteration failed at the smallest step"
-                    if status == STATUS_NEWTON else "step size collapsed")
+            what = {STATUS_NEWTON: "Newton iteration failed at the smallest step",
+                    STATUS_JACOBIAN: "the film's force Jacobian could not be evaluated "
+                    "at the state reached"}.get(status, "step size collapsed")
             raise ConvergenceError(
                 f"implicit orbit integration: {what} (eccentricity ratio "
                 f"{math.hypot(u_new[0], u_new[1]):.4f}); {self.hint}",

@@ -40,9 +40,10 @@ NEWTON_ITERATIONS = 8
 NEWTON_KAPPA = 0.05
 """Newton stops when its estimated error is below this fraction of the tolerance [-]."""
 
-STATUS_END, STATUS_HIT, STATUS_COLLAPSE, STATUS_NEWTON = 0, 1, -1, -2
+STATUS_END, STATUS_HIT, STATUS_COLLAPSE, STATUS_NEWTON, STATUS_JACOBIAN = 0, 1, -1, -2, -3
 """Segment outcomes: end reached; contact circle reached; step size collapsed; Newton
-failed with a fresh Jacobian at the smallest step."""
+failed with a fresh Jacobian at the smallest step; the Jacobian at an accepted state is not
+finite (the film could not be solved there)."""
 
 
 UNBOUND = ("a TR-BDF2 template function was called unbound; the step code runs only through "
@@ -214,6 +215,8 @@ def _segment(params, data, phi, end, u, h, max_step, rtol, atol, circle,
         elif phi + 2.0 * h > stop:  # two equal steps to it rather than a step and a sliver
             h = 0.5 * (stop - phi)
         dh = GAMMA_HALF * h
+        if not np.all(np.isfinite(jac)):
+            return STATUS_JACOBIAN, phi, u, h, steps, next_out, evaluations
         if dh != dh_inverse:
             inverse = np.linalg.inv(eye - dh * jac)
             dh_inverse = dh

@@ -217,6 +217,8 @@ def reynolds_jacobian(x, y, vx, vy, omega_sum, viscosity, params):
     speed = clearance * abs(omega_sum) + math.hypot(q[2], q[3])
     for k in range(4):
         step = JACOBIAN_STEP * (clearance if k < 2 else max(speed, 1e-9 * clearance))
+        if k < 2 and q[k] > 0.0:  # towards the centre: a journal closer to the shell than
+            step = -step          # the step stays inside it (the film opens, never closes)
         shifted = q.copy()
         shifted[k] += step
         fx, fy = _solve(shifted, viscosity, params, tolerance)
