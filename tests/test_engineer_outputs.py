@@ -384,16 +384,17 @@ def test_rk2_automatic_step_is_checked_against_the_implicit_orbit():
 
 
 @pytest.mark.slow
-def test_rk2_automatic_step_beyond_the_budget_exits_3_with_the_fix(runner, tmp_path):
-    """The KamAZ case's film asks rk2 for a step far below the step budget: refused with
-    exit 3 and the fix, not a 6-exabyte allocation (exit 1)."""
-    result = runner.invoke(app, ["run", str(EXAMPLES / "kamaz_740_truck_diesel.toml"),
-                                 "--integrator", "rk2", "--grid", "24x8", "--max-cycles", "4",
+def test_rk2_automatic_step_beyond_the_budget_is_refused_with_the_fix(runner, tmp_path):
+    """The passenger car's film at 2000 rpm asks rk2 for a step below the step budget
+    (1e-4 deg, measured along its implicit orbit): refused with exit 2 and the working
+    integrators, not a 6-exabyte allocation (exit 1) nor an exit 3 after trial cycles."""
+    result = runner.invoke(app, ["run", str(EXAMPLES / "passenger_car_diesel_2000rpm.toml"),
+                                 "--integrator", "rk2", "--max-cycles", "4",
                                  "--no-figures", "--no-step-check",
                                  "--out", str(tmp_path / "o")])
-    assert result.exit_code == 3, result.output
-    assert "rk2 would need a step below" in result.output
-    assert "use integrator = 'implicit'" in result.output
+    assert result.exit_code == 2, result.output
+    assert "solver.integrator = 'rk2': this bearing's film is too stiff" in result.output
+    assert "integrator = 'implicit' or 'auto'" in result.output
 
 
 @pytest.mark.slow

@@ -233,7 +233,10 @@ def test_short_orbit_unchanged_by_the_booker_path(monkeypatch, journal):
     assert qs.compiled_applies(problem)
     fast = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
     newton = _python_loop(problem, monkeypatch)
-    assert np.count_nonzero(newton.contact_force) > 3  # reaches the contact circle ε = 0.96
+    # reaches the contact circle ε = 0.96 at the firing peak (18-20°; before the first
+    # output interval from the concentric start was sub-stepped, the first Heun step
+    # threw the journal onto the circle at 2° and kept it there to 20°)
+    assert np.count_nonzero(newton.contact_force) >= 2
     assert np.abs(fast.x - newton.x).max() < 1e-9 * problem.clearance
     assert np.abs(fast.y - newton.y).max() < 1e-9 * problem.clearance
     np.testing.assert_allclose(fast.contact_force, newton.contact_force, rtol=1e-9,
@@ -251,7 +254,7 @@ def test_mobility_orbit_unchanged_by_the_compiled_loop(monkeypatch):
     assert isinstance(film, HasCompiledKernel) and qs.compiled_applies(problem)
     fast = qs.quasi_static_cycle(problem, OrbitState(), 1.0, 2.0)
     slow = _python_loop(problem, monkeypatch)
-    assert np.count_nonzero(slow.contact_force) > 3
+    assert np.count_nonzero(slow.contact_force) >= 2  # the firing peak, as above
     for name in ("x", "y", "vx", "vy", "contact_force", "friction_force"):
         reference = getattr(slow, name)
         np.testing.assert_allclose(getattr(fast, name), reference, rtol=1e-12,

@@ -152,7 +152,8 @@ class HeunIntegrator:
         """One cycle of fixed-step Heun integration."""
         from conrod.orbit.rk2 import rk2_cycle
 
-        return rk2_cycle(problem, state, settings.step_deg, settings.output_step_deg)
+        return rk2_cycle(problem, state, settings.step_deg, settings.output_step_deg,
+                         settings)
 
 
 @dataclass(frozen=True)

@@ -15,6 +15,7 @@ contact model) and the unbalanced normal force is reported as the contact force.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -68,9 +69,20 @@ def _velocity_solver(problem: OrbitProblem, session: FilmSession):
     return _generic_newton(problem, scale, session)
 
 
+JACOBIAN_STEPS = (1.0e-6, 1.0e-8)
+"""Steps of the finite-difference velocity Jacobian of the generic massless solve, in
+units of c ω: forward differences at the first, central differences at the second after a
+Newton step that found no decrease [-]. (A step of 1e-4 c ω left the iteration at a
+relative residual of 2e-4 on a fed Reynolds film at ε = 0.998, where one central step of
+1e-6 c ω converges in one iteration.)"""
+
+
 def _generic_newton(problem: OrbitProblem, scale: float, session: FilmSession | None = None):
-    """Damped Newton (backtracking, step ≤ 10 c ω) with a finite-difference Jacobian; the
-    film memory of the Jacobian's trial solves is restored before the Newton step."""
+    """Damped Newton (backtracking, step ≤ max(10 c ω, 2|v|)) with a finite-difference Jacobian
+    (:data:`JACOBIAN_STEPS`); the film memory of the Jacobian's trial solves is restored
+    before the Newton step; a step that lowers the residual by no backtracking gets a
+    central-difference Jacobian at the finer step, and the iteration stops where neither
+    lowers it (never accepting a larger residual)."""
     session = session if session is not None else problem.session()
     force = problem.force_function(session)
 
@@ -78,34 +90,53 @@ def _generic_newton(problem: OrbitProblem, scale: float, session: FilmSession | 
         fx, fy = force(x, y, v[0], v[1], wj, wb)
         return np.array([fx + wx, fy + wy])
 
+    def jacobian(x, y, v, r, wx, wy, wj, wb, central: bool):
+        delta = (JACOBIAN_STEPS[1] if central else JACOBIAN_STEPS[0]) * scale
+        jac = np.empty((2, 2))
+        base = session.snapshot()
+        for i in range(2):
+            dv = v.copy()
+            dv[i] += delta
+            plus = residual(x, y, dv, wx, wy, wj, wb)
+            session.restore(base)
+            if central:
+                dv[i] -= 2.0 * delta
+                jac[:, i] = (plus - residual(x, y, dv, wx, wy, wj, wb)) / (2.0 * delta)
+                session.restore(base)
+            else:
+                jac[:, i] = (plus - r) / delta
+        return jac
+
     def solve(x, y, wx, wy, wj, wb, guess, angle=0.0):
         v = np.array(guess, dtype=float)
         load = math.hypot(wx, wy) + 1.0
         r = residual(x, y, v, wx, wy, wj, wb)
         norm = float(np.hypot(*r))
+        central = False
         for _ in range(NEWTON_ITERATIONS):
             if norm <= 1e-8 * load:
                 break
-            delta = 1e-4 * scale
-            jac = np.empty((2, 2))
-            base = session.snapshot()
-            for i in range(2):
-                dv = v.copy()
-                dv[i] += delta
-                jac[:, i] = (residual(x, y, dv, wx, wy, wj, wb) - r) / delta
-                session.restore(base)
+            jac = jacobian(x, y, v, r, wx, wy, wj, wb, central)
             step = -np.linalg.lstsq(jac, r, rcond=None)[0]
             length = float(np.hypot(*step))
-            if length > 10.0 * scale:
-                step *= 10.0 * scale / length
-            lam = 1.0
-            while True:
+            limit = max(10.0 * scale, 2.0 * float(np.hypot(*v)))  # grows geometrically
+            if length > limit:
+                step *= limit / length
+            lam, found = 1.0, None
+            while lam >= 1e-4:
                 trial = v + lam * step
                 r_trial = residual(x, y, trial, wx, wy, wj, wb)
-                if np.hypot(*r_trial) < norm or lam < 1e-4:
+                if np.hypot(*r_trial) < norm:
+                    found = trial, r_trial
                     break
                 lam *= 0.5
-            v, r, norm = trial, r_trial, float(np.hypot(*r_trial))
+            if found is None:
+                if central:
+                    break  # no decrease with the finest Jacobian: as good as it gets
+                central = True
+                continue
+            v, r = found
+            norm = float(np.hypot(*r))
         return float(v[0]), float(v[1]), norm / load
 
     return solve
@@ -131,33 +162,27 @@ def quasi_static_cycle(
                                      problem.crank_speed)
         return _compiled(problem, kernel, request, phi, n_out)
     session = problem.session(state.film_memory)
-    velocity = _velocity_solver(problem, session)
+    stepper = _HeunSteps(problem, session, rc)
     x, y, guess = state.x, state.y, (state.vx, state.vy)
     table = np.zeros((n_out, 7))
     memory = [None] * n_out if session.has_memory else None
     worst, worst_k, reports = 0.0, 0, AngleReports()
     for k in range(len(phi) - 1):
         reports.reached(phi[k])
-        vx, vy, r1 = velocity(x, y, load_x[k], load_y[k], wj[k], wb[k], guess, phi[k])
-        contact = math.hypot(x, y) >= _radius(problem, session, x, y, rc) * (1.0 - 1e-9)
+        vx, vy, r1 = stepper.velocity(x, y, phi[k], guess)
+        contact = stepper.on_circle(x, y)
         if contact:
             vx, vy = _inward_only(x, y, vx, vy)
         if k % record_every == 0:
             table[k // record_every] = (x, y, vx, vy, 0.0, 0.0, float(contact))
             if memory is not None:
                 memory[k // record_every] = session.snapshot()
-        xp, yp = _project(problem, session, x + dt * vx, y + dt * vy, rc)
-        k1 = k + 1
-        vx2, vy2, r2 = velocity(xp, yp, load_x[k1], load_y[k1], wj[k1], wb[k1], (vx, vy),
-                                phi[k1])
-        x, y = _project(problem, session, x + 0.5 * dt * (vx + vx2),
-                        y + 0.5 * dt * (vy + vy2), rc)
-        guess = (vx2, vy2)
+        if k == 0:
+            settle = _moves_far(problem, dt, vx, vy)
+        count = MAX_SUBSTEPS if settle and k < record_every else 1
+        x, y, guess, r2 = stepper.step(x, y, (vx, vy), phi[k], phi[k + 1], count)
         if max(r1, r2) > worst:
             worst, worst_k = max(r1, r2), k
-        session.advance(FilmState(eccentricity_x=xp, eccentricity_y=yp, velocity_x=vx,
-                                  velocity_y=vy, journal_speed=wj[k], shell_speed=wb[k],
-                                  viscosity=problem.viscosity), dt)
     if worst > 1e-4 or not np.all(np.isfinite(table)):
         raise ConvergenceError(
             "quasi-static velocity solve failed (relative force residual; try a smaller "
@@ -166,9 +191,76 @@ def quasi_static_cycle(
     sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
     _contact_forces(problem, table, *sampled)
     end = OrbitState(x, y, guess[0], guess[1], False, session.snapshot())
-    traj = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, 2 * (len(phi) - 1))
+    traj = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end,
+                                      2 * (len(phi) - 1) + stepper.extra_steps)
     traj.film_memory = memory
     return traj
+
+
+MAX_MOVE = 0.05
+"""Largest journal-centre move of the first Heun step of a cycle, share of the radial
+clearance [-]: a cycle whose first step would move the journal more takes its first output
+interval in :data:`MAX_SUBSTEPS` × as many steps. From the concentric start the massless
+journal crosses much of the clearance within a fraction of a degree; one Heun step of
+``quasi_static_step_deg`` there put the predictor far outside the film (onto the shell),
+where no velocity balances the load."""
+MAX_SUBSTEPS = 64
+"""Sub-steps of each Heun step of a settled first output interval [-]."""
+
+
+def _moves_far(problem: OrbitProblem, dt: float, vx: float, vy: float) -> bool:
+    """True when a step ``dt`` [s] at (v_x, v_y) [m/s] moves the journal more than
+    :data:`MAX_MOVE` of the clearance [-]."""
+    return dt * math.hypot(vx, vy) > MAX_MOVE * problem.clearance
+
+
+class _HeunSteps:
+    """Heun steps of the massless orbit in Python with the film's velocity solve and the
+    contact circle, in sub-steps on request, the film memory advanced after each."""
+
+    def __init__(self, problem: OrbitProblem, session: FilmSession, rc: float):
+        self.problem, self.session, self.rc = problem, session, rc
+        self.solve = _velocity_solver(problem, session)
+        self.extra_steps = 0
+
+    def velocity(self, x, y, angle, guess):
+        """(v_x, v_y, relative residual) balancing the load at φ = ``angle`` [rad]."""
+        wx, wy = (float(a[0]) for a in self.problem.loads.load(np.array([angle])))
+        wj, wb = (float(a[0]) for a in self.problem.loads.speeds(np.array([angle])))
+        return self.solve(x, y, wx, wy, wj, wb, guess, angle)
+
+    def on_circle(self, x, y) -> bool:
+        """On the contact circle (of the deformed bore where it closes first) [-]."""
+        return math.hypot(x, y) >= _radius(self.problem, self.session, x, y,
+                                           self.rc) * (1.0 - 1e-9)
+
+    def step(self, x, y, v, phi0, phi1, count: int = 1):
+        """(x, y, velocity at φ1, worst relative residual) of the Heun step φ0 → φ1 from
+        (x, y) with the start velocity ``v`` [m, m/s], in ``count`` sub-steps."""
+        self.extra_steps += 2 * (count - 1)
+        worst, angles = 0.0, np.linspace(phi0, phi1, count + 1)
+        for i in range(count):
+            if i > 0:
+                vx, vy, r = self.velocity(x, y, angles[i], v)
+                v, worst = (vx, vy), max(worst, r)
+                if self.on_circle(x, y):
+                    v = _inward_only(x, y, *v)
+            x, y, v, r = self._heun(x, y, v, angles[i], angles[i + 1])
+            worst = max(worst, r)
+        return x, y, v, worst
+
+    def _heun(self, x, y, v, phi0, phi1):
+        problem, session = self.problem, self.session
+        dt = (phi1 - phi0) / problem.crank_speed
+        xp, yp = _project(problem, session, x + dt * v[0], y + dt * v[1], self.rc)
+        vx2, vy2, r2 = self.velocity(xp, yp, phi1, v)
+        wj, wb = (float(a[0]) for a in problem.loads.speeds(np.array([phi0])))
+        x1, y1 = _project(problem, session, x + 0.5 * dt * (v[0] + vx2),
+                          y + 0.5 * dt * (v[1] + vy2), self.rc)
+        session.advance(FilmState(eccentricity_x=xp, eccentricity_y=yp, velocity_x=v[0],
+                                  velocity_y=v[1], journal_speed=wj, shell_speed=wb,
+                                  viscosity=problem.viscosity), dt)
+        return x1, y1, (vx2, vy2), r2
 
 
 def compiled_kernel(problem: OrbitProblem) -> CompiledKernel | None:
@@ -187,20 +279,19 @@ def compiled_applies(problem: OrbitProblem) -> bool:
 
 def _compiled(problem: OrbitProblem, kernel: CompiledKernel, request: QuasiStaticRequest,
               phi: np.ndarray, n_out: int) -> CycleTrajectory:
-    """Compiled Heun loop of ``kernel`` over ``request``, then the contact forces."""
-    if kernel.quasi_static_cycle is not None:
-        table, end, worst = kernel.quasi_static_cycle(request)
-    else:
-        r = request
-        scale = problem.clearance * max(problem.crank_speed, 1e-3)
-        table, end, worst = newton_cycle(
-            kernel.force, kernel.params, r.x, r.y, r.vx, r.vy, r.dt, r.load_x, r.load_y,
-            r.journal_speed, r.shell_speed, r.record_every, r.viscosity, r.contact_radius,
-            scale)
-    if worst > 1e-4 or not np.all(np.isfinite(table)):
+    """Compiled Heun loop of ``kernel`` over ``request``, then the contact forces. Where
+    the first step moves the journal far (:data:`MAX_MOVE`) or the velocity solve fails,
+    the cycle is run again with the first output interval in :data:`MAX_SUBSTEPS` ×
+    as many steps (:func:`_settled_start`), as the Python loop takes it; a failure that
+    remains names its crank angle (:func:`_failure_angle`)."""
+    table, end, worst = _run_compiled(problem, kernel, request)
+    if _failed(table, worst) or _moves_far(problem, request.dt, *table[0, 2:4]):
+        table, end, worst = _settled_start(problem, kernel, request, phi)
+    if _failed(table, worst):
         raise ConvergenceError(
-            "quasi-static velocity solve failed (relative force residual, worst over the cycle; "
-            "try a smaller solver.quasi_static_step_deg or the integrator 'implicit')",
+            "quasi-static velocity solve failed (relative force residual; try a smaller "
+            "solver.quasi_static_step_deg or the integrator 'implicit')",
+            where=f"crank angle {_failure_angle(problem, kernel, request, phi):.1f} deg",
             residual=worst)
     every = request.record_every
     sampled = [a[::every][:n_out] for a in (request.load_x, request.load_y,
@@ -214,6 +305,59 @@ def _compiled(problem: OrbitProblem, kernel: CompiledKernel, request: QuasiStati
     end_state = OrbitState(end[0], end[1], end[2], end[3], False)
     return CycleTrajectory.from_table(phi[::every][:n_out], table, end_state,
                                       2 * (len(phi) - 1))
+
+
+def _failed(table: np.ndarray, worst: float) -> bool:
+    return worst > 1e-4 or not np.all(np.isfinite(table))
+
+
+def _run_compiled(problem: OrbitProblem, kernel: CompiledKernel, r: QuasiStaticRequest):
+    """(rows, end state array, worst relative residual) of the kernel's compiled loop."""
+    if kernel.quasi_static_cycle is not None:
+        return kernel.quasi_static_cycle(r)
+    scale = problem.clearance * max(problem.crank_speed, 1e-3)
+    return newton_cycle(
+        kernel.force, kernel.params, r.x, r.y, r.vx, r.vy, r.dt, r.load_x, r.load_y,
+        r.journal_speed, r.shell_speed, r.record_every, r.viscosity, r.contact_radius,
+        scale)
+
+
+def _settled_start(problem: OrbitProblem, kernel: CompiledKernel, r: QuasiStaticRequest,
+                   phi: np.ndarray):
+    """The compiled cycle with its first output interval in :data:`MAX_SUBSTEPS` × as many
+    steps, then the rest from where they end: (rows, end state array, worst residual)."""
+    every = r.record_every
+    angles = np.linspace(phi[0], phi[every], MAX_SUBSTEPS * every + 1)
+    load_x, load_y = problem.loads.load(angles)
+    wj, wb = problem.loads.speeds(angles)
+    first = dataclasses.replace(r, dt=r.dt / MAX_SUBSTEPS, load_x=load_x, load_y=load_y,
+                                journal_speed=wj, shell_speed=wb,
+                                record_every=MAX_SUBSTEPS * every)
+    rows, start, worst = _run_compiled(problem, kernel, first)
+    rest = dataclasses.replace(
+        r, x=float(start[0]), y=float(start[1]), vx=float(start[2]), vy=float(start[3]),
+        load_x=r.load_x[every:], load_y=r.load_y[every:],
+        journal_speed=r.journal_speed[every:], shell_speed=r.shell_speed[every:])
+    table, end, later = _run_compiled(problem, kernel, rest)
+    return np.vstack([rows[:1], table]), end, max(worst, later)
+
+
+def _failure_angle(problem: OrbitProblem, kernel: CompiledKernel, r: QuasiStaticRequest,
+                   phi: np.ndarray) -> float:
+    """Crank angle [deg] of the first step whose velocity solve fails in the compiled loop
+    over ``r`` (bisection on the number of steps: the loop is deterministic)."""
+    low, high = 0, r.load_x.size - 1  # steps known to pass / to fail
+    while high - low > 1:
+        middle = (low + high) // 2
+        cut = dataclasses.replace(r, load_x=r.load_x[:middle + 1],
+                                  load_y=r.load_y[:middle + 1],
+                                  journal_speed=r.journal_speed[:middle + 1],
+                                  shell_speed=r.shell_speed[:middle + 1])
+        if _failed(*_run_compiled(problem, kernel, cut)[::2]):
+            high = middle
+        else:
+            low = middle
+    return math.degrees(float(phi[high]))
 
 
 def _radius(problem: OrbitProblem, session: FilmSession, x: float, y: float,

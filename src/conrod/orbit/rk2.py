@@ -103,55 +103,145 @@ def step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
 
 
 DEFAULT_STEP_DEG = 0.01
-"""rk2 step for a film without a damping estimate when none is given [deg]."""
+"""rk2 step for a film whose stiffness cannot be estimated, when none is given [deg]."""
 STABILITY_MARGIN = 1.8
 """Largest Δt·B/m the automatic step aims at (Heun: stable up to 2) [-]."""
+GROWTH_LIMIT = 10.0
+"""Largest refinement of the automatic step from one trial cycle to the next [-]: a trial
+whose stability number exceeded 2 diverged, and the stiffness it met on its way towards
+the shell says little about the stiffness of the orbit."""
+PYTHON_STEPS = 72_000
+"""Most automatic rk2 steps per 720° for a film solved in Python (two film solves each):
+those of :data:`DEFAULT_STEP_DEG`, already minutes per cycle on a grid [-]."""
+ALTERNATIVES = ("integrator = 'implicit' or 'auto' (the same orbit with mass, L-stable and "
+                "error-controlled), 'adaptive' or 'quasi_static'")
+"""The integrators that run a bearing too stiff for rk2 [-]."""
 
 
 def rk2_cycle(
-    problem: OrbitProblem, state: OrbitState, step_deg: float | None, output_step_deg: float
+    problem: OrbitProblem, state: OrbitState, step_deg: float | None, output_step_deg: float,
+    settings=None,
 ) -> CycleTrajectory:
     """One cycle of fixed-step Heun integration from ``state`` at φ = 0; ``step_deg`` None:
-    :func:`stable_step_cycle`."""
+    the largest stable step (:func:`stable_step_cycle`; ``settings``: the ``[solver]``
+    section, for the implicit cycle that measures the stiffness of the orbit, None: its
+    defaults)."""
     if step_deg is None:
-        if problem.compiled_force is not None and problem.kernel.radial_damping is not None:
-            return stable_step_cycle(problem, state, output_step_deg)
-        step_deg = DEFAULT_STEP_DEG
-    return _fixed_step_cycle(problem, state, step_deg, output_step_deg)
+        return stable_step_cycle(problem, state, output_step_deg, settings)
+    return _fixed_step_cycle(problem, state, step_deg, output_step_deg, given=True)
 
 
-def stable_step_cycle(problem: OrbitProblem, state: OrbitState,
-                      output_step_deg: float) -> CycleTrajectory:
-    """Heun at the largest step output_step_deg/k whose stability number Δt·B_rr/m, with
-    the film's radial squeeze damping B_rr along the computed orbit, stays below
-    :data:`STABILITY_MARGIN`: a cycle at a trial step tells the stiffness met, and the step
-    shrinks until the cycle is stable."""
-    from conrod.cases.solver import MAX_INTEGRATOR_STEPS
-
-    divisions = 1
+def stable_step_cycle(problem: OrbitProblem, state: OrbitState, output_step_deg: float,
+                      settings=None) -> CycleTrajectory:
+    """Heun at the largest step output_step_deg/k whose stability number Δt·B/m, with the
+    film's squeeze damping B along the orbit, stays below :data:`STABILITY_MARGIN`. The
+    first step is chosen from the damping along the implicit (TR-BDF2) cycle from the same
+    state (:func:`orbit_stiffness`); a trial cycle of a film with a compiled radial damping
+    that still meets more (its orbit is not quite the implicit one) tells the stiffness it
+    met, and the step shrinks until the cycle is stable, at most :data:`GROWTH_LIMIT`
+    times per trial. A film whose damping cannot be measured runs at
+    :data:`DEFAULT_STEP_DEG`. A bearing that needs more steps than the step budget is
+    refused (:class:`CaseError`, naming the working integrators)."""
+    stiffness = orbit_stiffness(problem, state, output_step_deg, settings)
+    compiled = problem.compiled_force is not None and problem.kernel.radial_damping is not None
+    if stiffness is None and not compiled:
+        return _fixed_step_cycle(problem, state, DEFAULT_STEP_DEG, output_step_deg)
+    divisions = max(1, math.ceil(stiffness / STABILITY_MARGIN)) if stiffness else 1
     for _ in range(12):
         step = output_step_deg / divisions
-        if problem.loads.cycle / math.radians(step) > MAX_INTEGRATOR_STEPS:
-            raise ConvergenceError(
-                f"rk2 would need a step below {step:.3g} deg, more than {MAX_INTEGRATOR_STEPS} "
-                "steps per cycle (film too stiff for an explicit scheme); use integrator = "
-                "'implicit'", where="automatic rk2 step")
+        _check_budget(problem, step, compiled)
+        if not compiled:
+            return _fixed_step_cycle(problem, state, step, output_step_deg)
         try:
             return _fixed_step_cycle(problem, state, step, output_step_deg)
         except ConvergenceError as error:
             stiffness = error.residual if error.residual == error.residual else None
             factor = (stiffness / STABILITY_MARGIN if stiffness and math.isfinite(stiffness)
-                      else 10.0)
-            divisions = max(divisions + 1, math.ceil(divisions * factor))
+                      else GROWTH_LIMIT)
+            divisions = max(divisions + 1, math.ceil(divisions * min(factor, GROWTH_LIMIT)))
     raise ConvergenceError(
         f"rk2 found no stable step down to {output_step_deg / divisions:.3g} deg (film too "
-        "stiff for an explicit scheme); use integrator = 'implicit'",
-        where="automatic rk2 step")
+        f"stiff for an explicit scheme); use {ALTERNATIVES}", where="automatic rk2 step")
+
+
+def _check_budget(problem: OrbitProblem, step_deg: float, compiled: bool) -> None:
+    """CaseError when a cycle at ``step_deg`` takes more steps than the budget (of a
+    compiled loop, or :data:`PYTHON_STEPS` per 720° for a film solved in Python)."""
+    from conrod.cases.solver import MAX_INTEGRATOR_STEPS
+
+    steps = problem.loads.cycle / math.radians(step_deg)
+    budget = MAX_INTEGRATOR_STEPS if compiled else PYTHON_STEPS * problem.loads.cycle / (
+        4.0 * math.pi)
+    if steps > budget:
+        kind = "" if compiled else " for a film solved in Python (two film solves a step)"
+        raise CaseError(
+            f"solver.integrator = 'rk2': this bearing's film is too stiff for the explicit "
+            f"scheme: a stable step (Δt·B/m ≤ 2, B the squeeze damping along the orbit) is "
+            f"below {step_deg:.3g} deg, {steps:.3g} steps per cycle, more than the budget of "
+            f"{budget:.0f}{kind} (allowed: {ALTERNATIVES})")
+
+
+def orbit_stiffness(problem: OrbitProblem, state: OrbitState, output_step_deg: float,
+                    settings=None) -> float | None:
+    """Largest stability number Δt·B/m at the step ``output_step_deg`` along the orbit with
+    mass from ``state`` by the implicit integrator, B the squeeze damping at its largest
+    eccentricity: the film's compiled radial damping, else the largest eigenvalue of
+    −∂F/∂ė there (central differences of the film force) [-]; None when that orbit or
+    the damping cannot be computed."""
+    from conrod.cases.solver import SolverSection
+
+    settings = settings if settings is not None else SolverSection()
+    try:
+        cycle = _implicit_orbit(problem, state, settings)
+    except (CaseError, ConvergenceError):
+        return None
+    row = int(np.argmax(np.hypot(cycle.x, cycle.y)))
+    kernel = problem.kernel
+    if problem.compiled_force is not None and kernel.radial_damping is not None:
+        ratio = min(math.hypot(cycle.x[row], cycle.y[row]) / problem.clearance, 1.0)
+        damping = float(kernel.radial_damping(ratio, problem.viscosity, kernel.params))
+    else:
+        damping = _damping(problem, cycle, row)
+    dt = math.radians(output_step_deg) / problem.crank_speed
+    stiffness = dt * damping / min(problem.mass_x, problem.mass_y)
+    return stiffness if math.isfinite(stiffness) and stiffness > 0.0 else None
+
+
+def _implicit_orbit(problem: OrbitProblem, state: OrbitState, settings) -> CycleTrajectory:
+    """One cycle with mass by the implicit integrator from ``state``."""
+    from conrod.orbit.implicit import implicit_cycle
+    from conrod.orbit.implicit_step import implicit_step_cycle, implicit_step_deg
+
+    if problem.has_film_content:
+        return implicit_step_cycle(problem, state, implicit_step_deg(settings),
+                                   settings.output_step_deg, with_mass=True)
+    return implicit_cycle(problem, state, settings)
+
+
+def _damping(problem: OrbitProblem, cycle: CycleTrajectory, row: int) -> float:
+    """Largest eigenvalue modulus of the damping −∂F/∂ė [N s/m] at the output ``row`` of
+    ``cycle`` (central differences of the film force, the row's film memory)."""
+    memory = cycle.film_memory[row] if cycle.film_memory else None
+    wj, wb = (float(a[0]) for a in problem.loads.speeds(cycle.crank_angle[row:row + 1]))
+    x, y, vx, vy = (float(a[row]) for a in (cycle.x, cycle.y, cycle.vx, cycle.vy))
+    delta = 1e-4 * problem.clearance * problem.crank_speed
+    columns = []
+    for dvx, dvy in ((delta, 0.0), (0.0, delta)):
+        plus = problem.force_function(problem.session(memory))(x, y, vx + dvx, vy + dvy, wj, wb)
+        minus = problem.force_function(problem.session(memory))(x, y, vx - dvx, vy - dvy,
+                                                                wj, wb)
+        columns.append([(minus[0] - plus[0]) / (2 * delta), (minus[1] - plus[1]) / (2 * delta)])
+    return float(np.max(np.abs(np.linalg.eigvals(np.array(columns).T))))
 
 
 def _fixed_step_cycle(
-    problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float
+    problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float,
+    given: bool = False,
 ) -> CycleTrajectory:
+    """One cycle of Heun steps of ``step_deg``; ``given``: the user's ``solver.step_deg``,
+    refused (:class:`CaseError`) where the scheme is unstable for this bearing's film
+    (otherwise ConvergenceError, which :func:`stable_step_cycle` answers with a finer
+    step)."""
     phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
@@ -166,12 +256,17 @@ def _fixed_step_cycle(
             wj, wb, record_every, problem.viscosity, g.radius, g.radial_clearance,
             problem.mass_x, problem.mass_y, problem.dry_friction, problem.contact_radius,
 )
+        if stiffness > 2.0 and given:
+            raise CaseError(
+                f"solver.step_deg = {step_deg:g}: too large for this bearing's film stiffness "
+                f"(Δt·B/m = {stiffness:.3g} > 2 along the orbit: explicit Heun unstable) "
+                f"(allowed: <= {step_deg * 1.9 / stiffness:.2g} deg, unset for the "
+                f"automatic stable step, or {ALTERNATIVES}) [deg]")
         if stiffness > 2.0:
             raise ConvergenceError(
                 f"rk2 step too large for the film stiffness: Δt·B/m = {stiffness:.3g} > 2 "
                 f"(explicit Heun unstable); use solver.step_deg ≤ {step_deg * 1.9 / stiffness:.2g}"
-                " deg, leave it unset (automatic stable step) or use integrator = 'implicit'",
-                where=f"step {step_deg} deg", residual=stiffness,
+                f" deg or {ALTERNATIVES}", where=f"step {step_deg} deg", residual=stiffness,
 )
     else:
         session = problem.session(state.film_memory)
@@ -179,10 +274,12 @@ def _fixed_step_cycle(
             problem, start, dt, load_x, load_y, wj, wb, record_every, session
 )
     if not np.all(np.isfinite(table)):
-        raise ConvergenceError(
-            "rk2 orbit diverged (film too stiff for the step; reduce solver.step_deg)",
-            where=f"step {step_deg} deg",
-)
+        what = (f"solver.step_deg = {step_deg:g}" if given
+                else f"solver.integrator = 'rk2' (automatic step {step_deg:g} deg)")
+        raise CaseError(
+            f"{what}: the explicit Heun orbit diverges at this step on this bearing's film "
+            f"(too stiff for the step) (allowed: a smaller solver.step_deg, or "
+            f"{ALTERNATIVES})")
     memory = session.snapshot() if session is not None else None
     end_state = OrbitState(end[0], end[1], end[2], end[3], bool(end[4] > 0.5), memory)
     traj = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end_state, len(phi) - 1)
