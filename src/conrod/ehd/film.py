@@ -30,10 +30,11 @@ corrector solves both seeing φ at the start of the step.
 Deformation rate. The squeeze term 12 μ ∂h/∂t includes the bore's rate ∂u/∂t, taken
 backward in time from the deformation at the previous crank angle
 (:mod:`conrod.film.rated_state`: the base film ``with_deformation_rate()``, films without a
-transported content of their own; ``ElasticSettings(deformation_rate=False)`` leaves it out
-as Rodin 2004 does).
-Without it the bore moves into a journal that the massless orbit holds in place with no
-film resistance, and the force balance on the deformed bore fails. The largest rate seen
+transported content of their own). Without it (Rodin 2004) the bore moves into the film with
+no squeeze resistance where its inertia deformation changes fastest, and the force balance
+on the deformed bore fails there with or without the journal's mass:
+``ElasticSettings(deformation_rate=False)`` is refused for such a film
+(:data:`conrod.ehd.memory.RATE_REFUSAL`). The largest rate seen
 over a step is kept in the memory (``deformation_rate`` [m/s]).
 
 The massless orbit asks :meth:`ElasticFilm.balance_velocity` for the velocity that balances
@@ -64,7 +65,12 @@ from conrod.ehd.coupling import (
     fixed_point_coupling,
     solve_coupling,
 )
-from conrod.ehd.memory import ElasticMemory, ElasticSettings, extrapolated_deformation
+from conrod.ehd.memory import (
+    RATE_REFUSAL,
+    ElasticMemory,
+    ElasticSettings,
+    extrapolated_deformation,
+)
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.capabilities import (
@@ -106,8 +112,11 @@ class ElasticFilm(FilmWrapper):
         if len(theta) != len(housing.angles) or not np.allclose(theta, housing.angles):
             raise CaseError(f"housing: {len(housing.angles)} bore nodes do not match the "
                             f"film's {len(theta)} θ nodes (allowed: solver.n_theta nodes)")
+        own_content = base.initial_history() is not None
+        if settings is not None and not settings.deformation_rate and not own_content:
+            raise CaseError(RATE_REFUSAL)
         self.base = (base.with_deformation_rate() if isinstance(base, SupportsDeformationRate)
-                     and base.initial_history() is None else base)
+                     and not own_content else base)
         self.housing = housing
         self.crank_speed = float(crank_speed)
         self.settings = settings or ElasticSettings()

@@ -120,3 +120,15 @@ def extrapolated_deformation(before: ElasticMemory, after: ElasticMemory) -> np.
         return after.deformation
     ratio = after.reference_dt / before.reference_dt
     return before.deformation + ratio * (before.deformation - before.reference)
+
+
+RATE_REFUSAL = (
+    "ElasticSettings deformation_rate = False (the squeeze term without the bore's rate "
+    "∂u/∂t, the housing following the pressure quasi-statically as in Rodin 2004): on a "
+    "film without a content of its own the bore then moves into the film with no squeeze "
+    "resistance where its inertia deformation changes fastest, and the orbit has no force "
+    "balance there, with or without the journal's mass (measured on the KamAZ-740 rod at "
+    "36 × 8: both orbits stop at 197°) (allowed: deformation_rate = True, the default, the "
+    "bore's rate in the squeeze term of the transient Reynolds equation, Hamrock 1994; or "
+    "film = 'mass_conserving', whose content step holds the rate)")
+"""Why :class:`ElasticFilm` refuses ``ElasticSettings(deformation_rate=False)`` [-]."""
