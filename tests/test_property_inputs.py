@@ -2,7 +2,9 @@
 
 Every generated input either runs with finite results or fails with conrod's own error:
 a CaseError whose every line names the file, a field (``section.key``) or a row, or a
-ConvergenceError saying where. Derandomized: the same cases on every CI run.
+ConvergenceError saying where; through the command line, a case file with one mistake is
+refused (exit 2) with exactly one line naming the field, never a traceback (exit 1).
+Derandomized: the same cases on every CI run.
 """
 
 from __future__ import annotations
@@ -34,10 +36,12 @@ from hardening_helpers import (
     cheap_mechanism,
     cheap_table_run,
     mutated,
+    write_case,
 )
 
-CASES_PER_RUN = {"run": 300, "loads": 250, "mechanism": 150, "tables": 300}
-"""Generated inputs per CI run (1000 in all)."""
+CASES_PER_RUN = {"run": 300, "loads": 250, "mechanism": 150, "tables": 300,
+                 "command line": 40}
+"""Generated inputs per CI run (1040 in all)."""
 
 FIELD = re.compile(
     r"^(case file '[^']*': )?("
@@ -245,3 +249,53 @@ def test_table_readers_are_total(data):
 
         _outcome("load table", read_load)
         _outcome("pressure trace", read_trace)
+
+
+# -- the command line: one mistake, one line --------------------------------------------------
+CLI_BASES = {"run": (cheap_engine_run, cheap_table_run), "loads": (cheap_engine_run,),
+             "mechanism": (cheap_mechanism,)}
+CLI_LINE = re.compile(r"^error: (case file '[^']*': )?")
+"""The command line's prefix of a CaseError line, before what :data:`FIELD` matches."""
+
+
+@st.composite
+def one_mistake(draw) -> tuple[str, dict]:
+    """(command, a shipped example with one leaf rescaled, replaced, deleted or misspelt)."""
+    command = draw(st.sampled_from(["run", "run", "loads", "mechanism"]))
+    base = draw(st.sampled_from(CLI_BASES[command]))()
+    paths = [p for p in _leaves(base) if p[0] not in ("title", "source")]
+    path = draw(st.sampled_from(paths))
+    old = _get(base, path)
+    kind = draw(st.sampled_from(["scale", "nasty", "delete", "misspelt"]))
+    if kind == "scale" and isinstance(old, int | float) and not isinstance(old, bool):
+        factor = draw(SCALE)
+        return command, mutated(base, path, type(old)(old * factor))
+    if kind == "misspelt":
+        return command, mutated(mutated(base, path, DELETE), (*path[:-1], path[-1] + "x"), old)
+    return command, mutated(base, path, DELETE if kind == "delete" else draw(NASTY))
+
+
+@_settings("command line")
+@given(one_mistake())
+def test_command_line_refuses_one_mistake_in_one_line(item):
+    """Exit 0, 3 or 4, or exit 2 with one line that names the file, field or row."""
+    from typer.testing import CliRunner
+
+    from conrod.cli.app import _register_commands, app
+
+    _register_commands()
+    command, data = item
+    with tempfile.TemporaryDirectory() as folder:
+        case = write_case(Path(folder), data)
+        arguments = [command, str(case), "--out", str(Path(folder) / "out")]
+        result = CliRunner().invoke(app, arguments + (["--no-figures"] if command == "run"
+                                                      else []))
+    assert "Traceback" not in result.output, result.output
+    assert result.exit_code in (0, 2, 3, 4), (result.exit_code, result.output)
+    lines = [line for line in result.stderr.splitlines()
+             if line.startswith(("error", "not converged"))]
+    OUTCOMES["command line", f"exit {result.exit_code}"] += 1
+    if result.exit_code == 2:
+        assert len(lines) == 1, lines
+        rest = CLI_LINE.sub("", lines[0])
+        assert FIELD.match(rest) or FIELD.match(lines[0][len("error: "):]), lines[0]
