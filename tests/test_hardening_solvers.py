@@ -80,6 +80,29 @@ def test_mass_conserving_rows_with_mass_are_the_accepted_steps():
     assert _largest_spike(p_max) < 3.0
 
 
+def test_elastic_mass_conserving_film_reports_the_accepted_step():
+    """On the deforming bore too, the answer at a step's end is that step's pressure (on
+    the deformation the step solved), not a new solve."""
+    from conrod.ehd.mass_conserving_ehd import ElasticMassConservingFilm
+    from conrod.film.base import FilmState
+
+    geometry = _fed_passenger_car().bearing.geometry()
+    base = MassConservingFilm(geometry, n_theta=36, n_z=8, tolerance=1e-10)
+    film = ElasticMassConservingFilm(base, winkler_housing(geometry, 36, 1e-13), 209.0,
+                                     ElasticSettings(rigid_start=0.0, ramp=0.0))
+    assert isinstance(film, HasAcceptedAnswer)
+    c = geometry.radial_clearance
+    state = FilmState(eccentricity_x=0.8 * c, eccentricity_y=0.1 * c, velocity_x=2e-3,
+                      velocity_y=-1e-3, journal_speed=209.0, shell_speed=0.0, viscosity=0.01)
+    memory = film.initial_memory()
+    fx, fy, after = film.content_step(state, memory, 1e-4)
+    result = film.accepted_result(state, after)
+    assert result.force_x == pytest.approx(fx, rel=1e-12)
+    assert result.force_y == pytest.approx(fy, rel=1e-12)
+    assert float(np.max(after.deformation)) > 0.0  # the bore gave way
+    assert film.accepted_result(state, memory) is None  # not a step's answer
+
+
 # -- Reynolds film with mass: the flight Jacobian next to the shell ------------------------
 def test_reynolds_flight_jacobian_is_finite_next_to_the_shell():
     """A journal 1e-6 c from the shell (the default integrator of a fed two-land bearing

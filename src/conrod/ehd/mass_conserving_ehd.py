@@ -27,8 +27,9 @@ the rigid film, and the stiff-housing limit is the rigid orbit of the same integ
 also declares :class:`~conrod.film.capabilities.HasStepSystem`: the orbit then hands it the
 whole step, journal velocity and bore deformation in one Newton iteration
 (:func:`conrod.ehd.bore_system.content_step_system`). Between steps (the per-angle
-characteristics) the instantaneous JFO solve sees the bore's rate in its squeeze term (the
-base film ``with_deformation_rate()``).
+characteristics) the rows are the accepted content steps
+(:class:`~conrod.film.capabilities.HasAcceptedAnswer`); an instantaneous JFO solve elsewhere
+sees the bore's rate in its squeeze term (the base film ``with_deformation_rate()``).
 """
 
 from __future__ import annotations
@@ -105,6 +106,27 @@ class ElasticMassConservingFilm(ElasticFilm):
             "bore_displacement_max_m": float(memory.deformation.max()),
             "deformation_rate_m_per_s": memory.deformation_rate})
         return result, dataclasses.replace(memory, inner=inner)
+
+    def accepted_result(self, state: FilmState, memory: ElasticMemory, *,
+                        with_pressure: bool = False) -> FilmResult | None:
+        """The answer of the content step that ended at ``state`` with ``memory`` (its
+        pressure and film fraction on the bore deformation it solved), with the coupling
+        diagnostics; None when ``memory`` is not such an answer
+        (:class:`~conrod.film.capabilities.HasAcceptedAnswer`)."""
+        if memory.inner is None or memory.inner.thickness is None:
+            return None
+        deformed = dataclasses.replace(state, deformation=self.film_field(memory.deformation))
+        result = self.base.accepted_result(deformed, memory.inner, with_pressure=with_pressure)
+        if result is None:
+            return None
+        result.extra.update({
+            "coupling_iterations": float(memory.iterations),
+            "coupling_residual_m": memory.residual,
+            "deformation_increment_m": memory.increment,
+            "bore_displacement_min_m": float(memory.deformation.min()),
+            "bore_displacement_max_m": float(memory.deformation.max()),
+            "deformation_rate_m_per_s": memory.deformation_rate})
+        return result
 
     def content_step(self, state: FilmState, memory: ElasticMemory, dt: float,
                      warm: ElasticMemory | None = None,
