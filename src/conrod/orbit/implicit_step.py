@@ -41,7 +41,7 @@ import numpy as np
 
 from conrod.film.capabilities import HasContentStep, HasStepSystem
 from conrod.film.step_system import StepRequest
-from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.problem import OrbitProblem, OrbitState, step_grid
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -153,8 +153,6 @@ def implicit_step_cycle(problem: OrbitProblem, state: OrbitState, step_deg: floa
                         output_step_deg: float, *, with_mass: bool) -> CycleTrajectory:
     """One cycle from ``state`` by implicit steps of ``step_deg`` [deg] (BDF2 after a first
     backward Euler step); massless (``with_mass`` False) or with the problem's masses."""
-    from conrod.orbit.rk2 import step_grid
-
     phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)
     steps_of = _strategy(problem)(problem, with_mass)
     memory = state.film_memory if state.film_memory is not None else problem.film.initial_memory()

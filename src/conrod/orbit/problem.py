@@ -22,6 +22,7 @@ from typing import Any
 import numba as nb
 import numpy as np
 
+from conrod.errors import CaseError
 from conrod.film.base import FilmModel, FilmState
 from conrod.film.capabilities import CarriesAsperityContact, CompiledKernel, HasCompiledKernel
 from conrod.loads.cycle import LoadCycle
@@ -230,3 +231,18 @@ def load_table(loads: LoadCycle) -> tuple[np.ndarray, np.ndarray]:
 def initial_state() -> OrbitState:
     """Concentric start x = y = ẋ = ẏ = 0 ([D0] eq. 3.5.1)."""
     return OrbitState()
+
+
+def step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
+    """(step points φ over the cycle [rad], steps per output row, output rows) of a fixed
+    step ``step_deg`` [deg] that divides ``output_step_deg`` [deg]; CaseError otherwise."""
+    record_every = int(round(output_step_deg / step_deg))
+    if record_every < 1 or abs(record_every * step_deg - output_step_deg) > 1e-9 * output_step_deg:
+        raise CaseError(
+            f"solver.step_deg = {step_deg!r}: must divide solver.output_step_deg = "
+            f"{output_step_deg!r} (allowed: output_step_deg / k, k = 1, 2, ...) [deg]"
+)
+    n_out = len(problem.output_angles(output_step_deg))
+    n_steps = n_out * record_every
+    phi = np.linspace(0.0, problem.loads.cycle, n_steps + 1)
+    return phi, record_every, n_out

@@ -37,7 +37,7 @@ from conrod.film.massless import (
 from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
 from conrod.orbit.implicit_step import implicit_step_cycle as content_cycle
 from conrod.orbit.memory import FilmSession
-from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.problem import OrbitProblem, OrbitState, step_grid
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -146,8 +146,6 @@ def quasi_static_cycle(
     problem: OrbitProblem, state: OrbitState, step_deg: float, output_step_deg: float
 ) -> CycleTrajectory:
     """One cycle of the massless orbit from ``state`` (only its position is used)."""
-    from conrod.orbit.rk2 import step_grid
-
     if isinstance(problem.film, HasContentStep):
         return content_cycle(problem, state, step_deg, output_step_deg, with_mass=False)
     phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)

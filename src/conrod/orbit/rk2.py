@@ -18,9 +18,10 @@ import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmState
+from conrod.film.capabilities import CompiledKernel
 from conrod.orbit.contact import contact_acceleration
 from conrod.orbit.memory import FilmSession
-from conrod.orbit.problem import OrbitProblem, OrbitState
+from conrod.orbit.problem import OrbitProblem, OrbitState, step_grid
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -89,19 +90,6 @@ def rk2_compiled_cycle(
     return out, np.array([x, y, vx, vy, 1.0 if contact else 0.0]), stiffness
 
 
-def step_grid(problem: OrbitProblem, step_deg: float, output_step_deg: float):
-    record_every = int(round(output_step_deg / step_deg))
-    if record_every < 1 or abs(record_every * step_deg - output_step_deg) > 1e-9 * output_step_deg:
-        raise CaseError(
-            f"solver.step_deg = {step_deg!r}: must divide solver.output_step_deg = "
-            f"{output_step_deg!r} (allowed: output_step_deg / k, k = 1, 2, ...) [deg]"
-)
-    n_out = len(problem.output_angles(output_step_deg))
-    n_steps = n_out * record_every
-    phi = np.linspace(0.0, problem.loads.cycle, n_steps + 1)
-    return phi, record_every, n_out
-
-
 DEFAULT_STEP_DEG = 0.01
 """rk2 step for a film whose stiffness cannot be estimated, when none is given [deg]."""
 STABILITY_MARGIN = 1.8
@@ -143,7 +131,7 @@ def stable_step_cycle(problem: OrbitProblem, state: OrbitState, output_step_deg:
     :data:`DEFAULT_STEP_DEG`. A bearing that needs more steps than the step budget is
     refused (:class:`CaseError`, naming the working integrators)."""
     stiffness = orbit_stiffness(problem, state, output_step_deg, settings)
-    compiled = problem.compiled_force is not None and problem.kernel.radial_damping is not None
+    compiled = _damped_kernel(problem) is not None
     if stiffness is None and not compiled:
         return _fixed_step_cycle(problem, state, DEFAULT_STEP_DEG, output_step_deg)
     divisions = max(1, math.ceil(stiffness / STABILITY_MARGIN)) if stiffness else 1
@@ -196,8 +184,8 @@ def orbit_stiffness(problem: OrbitProblem, state: OrbitState, output_step_deg: f
     except (CaseError, ConvergenceError):
         return None
     row = int(np.argmax(np.hypot(cycle.x, cycle.y)))
-    kernel = problem.kernel
-    if problem.compiled_force is not None and kernel.radial_damping is not None:
+    kernel = _damped_kernel(problem)
+    if kernel is not None:
         ratio = min(math.hypot(cycle.x[row], cycle.y[row]) / problem.clearance, 1.0)
         damping = float(kernel.radial_damping(ratio, problem.viscosity, kernel.params))
     else:
@@ -205,6 +193,13 @@ def orbit_stiffness(problem: OrbitProblem, state: OrbitState, output_step_deg: f
     dt = math.radians(output_step_deg) / problem.crank_speed
     stiffness = dt * damping / min(problem.mass_x, problem.mass_y)
     return stiffness if math.isfinite(stiffness) and stiffness > 0.0 else None
+
+
+def _damped_kernel(problem: OrbitProblem) -> CompiledKernel | None:
+    """The film's compiled kernel when it has a compiled force and radial damping (the
+    compiled Heun loop), else None."""
+    kernel = problem.compiled_force
+    return kernel if kernel is not None and kernel.radial_damping is not None else None
 
 
 def _implicit_orbit(problem: OrbitProblem, state: OrbitState, settings) -> CycleTrajectory:
