@@ -34,13 +34,17 @@ class ElasticRunResults:
 
     elastic : RunResults  The answer on the deforming bore.
     columns : dict  Coupling diagnostics per output crank angle (names with units).
-    deformation : ndarray  Corrected bore displacement (n_out, n_θ) [m], outward +.
+    deformation : ndarray  Corrected bore displacement (n_out, n_θ) [m], outward +; for a
+        housing that deforms along the width, its mean over the width.
     bore_angles : ndarray  Bore-node angles θ [rad].
     housing : object  The :class:`conrod.housing.housing.Housing` used.
     rigid : RunResults or None  The rigid companion run (None when skipped).
     info : dict  Coupling settings and totals for summary.json.
     peak_load_index : int  Output row of the largest load [-].
     peak_load_pressure : ndarray or None  Film pressure p(θ, z) there [Pa].
+    deformation_field : ndarray or None  Corrected bore displacement u(θ, z)
+        (n_out, n_θ, n_z + 1) [m] of a housing that deforms along the width (a 3-D
+        compliance); None for a plane housing, whose deformation is uniform in z.
     """
 
     elastic: RunResults
@@ -52,6 +56,20 @@ class ElasticRunResults:
     info: dict | None = None
     peak_load_index: int = 0
     peak_load_pressure: np.ndarray | None = None
+    deformation_field: np.ndarray | None = None
+
+    @property
+    def axial_positions(self) -> np.ndarray | None:
+        """z_k of ``deformation_field`` [m] from the bearing mid-plane; None when plane."""
+        return None if self.deformation_field is None else self.housing.axial
+
+    def gap_field(self, index: int) -> np.ndarray:
+        """Film thickness on the deformed bore h(θ, z) = c − e_x cos θ − e_y sin θ + u(θ, z)
+        (n_θ, n_z + 1) [m] at output row ``index`` (needs ``deformation_field``)."""
+        cycle, theta = self.cycle, self.bore_angles
+        rigid = (self.clearance - cycle.eccentricity_x[index] * np.cos(theta)
+                 - cycle.eccentricity_y[index] * np.sin(theta))
+        return rigid[:, None] + self.deformation_field[index]
 
     @property
     def cycle(self):

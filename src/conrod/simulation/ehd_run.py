@@ -91,7 +91,8 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
         deformation=diagnostics.deformation, bore_angles=diagnostics.angles,
         housing=film.housing, rigid=rigid, info=info,
         peak_load_index=diagnostics.peak_load_index,
-        peak_load_pressure=diagnostics.peak_load_pressure)
+        peak_load_pressure=diagnostics.peak_load_pressure,
+        deformation_field=diagnostics.field)
 
 
 def _staged(progress, prefix: str):
