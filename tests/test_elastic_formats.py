@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from conrod.housing import matrix_formats as formats
+from conrod.housing import nastran_formats as nastran
 from conrod.housing.housing import Housing
 from solid_ring_helpers import (
     grid_nodes,
@@ -78,7 +79,7 @@ def test_nastran_dmig_round_trip(tmp_path, ring_compliance, field, kind):
     amplifies them by its condition number): C back within the field's precision."""
     ids, theta, z = grid_nodes()
     matrix = ring_compliance if kind == "compliance" else np.linalg.inv(ring_compliance)
-    formats.write_dmig(tmp_path / "ring.dmig", "KBORE", matrix,
+    nastran.write_dmig(tmp_path / "ring.dmig", "KBORE", matrix,
                        [(int(node), 1) for node in ids], field)
     write_nodes(tmp_path / "nodes.csv", ids, theta, z, cartesian=True)
     housing = _read(imported_case({"compliance_file": str(tmp_path / "ring.dmig"),
@@ -91,7 +92,7 @@ def test_nastran_dmig_round_trip(tmp_path, ring_compliance, field, kind):
 def test_nastran_op4_round_trip(tmp_path, ring_compliance, binary):
     """OP4 compliance (dense, double precision, ASCII 1P,3E23.16 or binary records)."""
     ids, theta, z = grid_nodes()
-    formats.write_op4(tmp_path / "ring.op4", "CBORE", ring_compliance, binary=binary)
+    nastran.write_op4(tmp_path / "ring.op4", "CBORE", ring_compliance, binary=binary)
     write_nodes(tmp_path / "nodes.csv", ids, theta, z)
     housing = _read(imported_case({"compliance_file": str(tmp_path / "ring.op4"),
                                    "node_file": str(tmp_path / "nodes.csv")}))
@@ -121,11 +122,11 @@ def test_pynastran_dmig_and_op4_are_read():
     """Files written by pyNastran 1.4.1 (large-field DMIG with D exponents and one column
     entry per term; dense and sparse ASCII OP4) give the matrix they were written from."""
     expected = np.loadtxt(DATA / "pynastran_matrix.csv", delimiter=",", comments="#")
-    dmig = formats.read_dmig(DATA / "pynastran_dmig.bdf")
+    dmig = nastran.read_dmig(DATA / "pynastran_dmig.bdf")
     order = [dmig.labels.index(label) for label in PYNASTRAN_LABELS]
     assert _close(dmig.matrix[np.ix_(order, order)], expected, 1e-10)  # 11 digits written
     for name in ("pynastran_dense.op4", "pynastran_sparse.op4"):
-        assert np.array_equal(formats.read_op4(DATA / name).matrix, expected)
+        assert np.array_equal(nastran.read_op4(DATA / name).matrix, expected)
 
 
 def test_abaqus_layouts_are_read(tmp_path):
@@ -159,7 +160,7 @@ def test_nastran_reals():
         assert formats.nastran_real(text) == pytest.approx(value, rel=1e-15)
     for value in (6.023643249400513, -1.2345678e-7, 123456789.0, 0.0):
         for width in (8, 16):
-            text = formats.nastran_field_real(value, width)
+            text = nastran.nastran_field_real(value, width)
             assert len(text) <= width
             assert formats.nastran_real(text) == pytest.approx(value, rel=0.5 * 10.0 ** (5 - width))
 

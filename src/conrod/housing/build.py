@@ -101,7 +101,8 @@ def _finite_element(case, make, angles, radius, common, cache_dir, use_cache) ->
     start = time.perf_counter()
     arrays, from_cache = load_or_build(cache_key(_cache_payload(case)), build, cache_dir,
                                        use_cache)
-    info = {"model": case.housing.model, "from_cache": from_cache,
+    info = {"model": case.housing.model, "axial": "uniform in z (plane stress)",
+            "from_cache": from_cache,
             "seconds": time.perf_counter() - start,
             **{name: arrays[name].item() for name in ("build_seconds", "n_dofs", "n_elements",
                                                        "bore_nodes")}}

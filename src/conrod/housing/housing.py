@@ -104,6 +104,21 @@ class Housing:
         """u at the bore nodes (n,) [m] as (n_θ, n_z) over the width, (n_θ, 1) plane [m]."""
         return np.asarray(deformation).reshape(len(self.angles), -1)
 
+    def plane_equivalent(self) -> Housing:
+        """The plane housing of the same body: a row force spread uniformly over the width,
+        the row's displacement its mean over the width, C₂ = Sᵀ C S with S_(jk),j = w_k/L
+        (w_k the axial node widths), inertia fields averaged alike; itself when plane."""
+        if self.axial is None:
+            return self
+        from conrod.housing.transfer import axial_weights
+
+        share = axial_weights(self.axial) / np.ptp(self.axial)
+        spread = np.kron(np.eye(len(self.angles)), share[:, None])
+        compliance = spread.T @ self.compliance @ spread
+        return Housing(self.angles, self.radius, 0.5 * (compliance + compliance.T),
+                       spread.T @ self.inertia_base, self.correction, self.kinematics,
+                       {**self.info, "axial": "width mean of a 3-D compliance"})
+
     def row_mean(self, deformation: np.ndarray) -> np.ndarray:
         """u per film row θ_j [m]: itself (plane) or its mean over the width, weighted by the
         axial node widths (over the width) [m]."""

@@ -20,6 +20,7 @@ import numpy as np
 
 from conrod.errors import CaseError
 from conrod.housing import matrix_formats as formats
+from conrod.housing import nastran_formats as nastran
 from conrod.housing.compliance_io import (
     check_compliance,
     check_matrix,
@@ -71,8 +72,8 @@ def read_labelled(path: Path, fmt: str, name: str | None) -> formats.LabelledMat
     if not path.exists():
         raise CaseError(f"housing.compliance_file {str(path)!r}: no such file")
     readers = {"matrix_market": lambda: formats.read_matrix_market(path),
-               "nastran_dmig": lambda: formats.read_dmig(path, name),
-               "nastran_op4": lambda: formats.read_op4(path, name),
+               "nastran_dmig": lambda: nastran.read_dmig(path, name),
+               "nastran_op4": lambda: nastran.read_op4(path, name),
                "abaqus": lambda: formats.read_abaqus(path)}
     try:
         return readers[fmt]()
@@ -114,7 +115,8 @@ def _own_format(case, make, angles, radius, common, path: Path, fmt: str) -> Any
         if section.inertia_file is not None:
             inertia_angles, fields = read_inertia(case.resolve(section.inertia_file))
             inertia = interpolation_matrix(inertia_angles, angles) @ fields
-        info = {"model": "compliance", "source_nodes": len(source_angles)}
+        info = {"model": "compliance", "source_nodes": len(source_angles),
+                "axial": "uniform in z (a plane compliance)"}
         compliance = interpolate @ matrix @ interpolate.T
         return make(angles, radius, 0.5 * (compliance + compliance.T), inertia, info=info,
                     **common)

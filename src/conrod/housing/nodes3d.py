@@ -265,9 +265,10 @@ def film_interpolation(nodes: BoreNodes, radius: float, film_angles: np.ndarray,
                                    nodes.angles + 2 * np.pi])
     points = np.column_stack([arc, np.tile(nodes.axial, 3)])
     triangulation = Delaunay(points)
-    target = np.column_stack([radius * theta,
-                              np.clip(z, nodes.axial.min(), nodes.axial.max())])
-    simplex = triangulation.find_simplex(target, tol=1e-9)
+    low, high = nodes.axial.min(), nodes.axial.max()
+    inset = 1e-12 * (high - low)  # on the hull's edge a point may be found outside it
+    target = np.column_stack([radius * theta, np.clip(z, low + inset, high - inset)])
+    simplex = triangulation.find_simplex(target)
     if np.any(simplex < 0):
         raise CaseError("housing.node_file: the bore nodes do not cover the bore around its "
                         "circumference (a film node lies outside their triangulation)")

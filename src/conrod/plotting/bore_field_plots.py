@@ -15,7 +15,8 @@ def plot_bore_field(results) -> Figure:
     axial position z [mm] at the largest load and at the smallest h_min, and across the
     width at the angle of the smallest film thickness: h(z) [µm] on the bore deformed along
     the width against h(z) on the bore deformed by its width-mean (what a plane housing of
-    the same mean deformation would give)."""
+    the same mean deformation would give). The profile holds the film nodes' values; the
+    h_min of cycle.csv is refined between nodes by a parabola in θ."""
     cycle = results.cycle
     rows = {"largest load": results.peak_load_index,
             "smallest h_min": int(np.argmin(cycle.h_min))}
@@ -46,7 +47,8 @@ def _width_profile(ax, results, index: int, z_mm: np.ndarray) -> None:
     cycle, theta = results.cycle, results.bore_angles[row]
     mean = (results.clearance - cycle.eccentricity_x[index] * np.cos(theta)
             - cycle.eccentricity_y[index] * np.sin(theta) + results.deformation[index, row])
-    ax.plot(z_mm, gap[row] * UM, "o-", color="C3", ms=3, label="bore deformed along the width")
+    ax.plot(z_mm, gap[row] * UM, "o-", color="C3", ms=3,
+            label="bore deformed along the width (film nodes)")
     ax.plot(z_mm, np.full(len(z_mm), mean * UM), "--", color="C0",
             label="bore deformed by its width-mean")
     for end in (0, -1):

@@ -127,6 +127,10 @@ class ElasticRunResults:
                 f"({100.0 * (e.h_min - r.h_min) / r.h_min:+.1f} %), p_max "
                 f"{r.p_max / 1e6:.1f} → {e.p_max / 1e6:.1f} MPa "
                 f"({100.0 * (e.p_max - r.p_max) / r.p_max:+.1f} %)")
+        if self.deformation_field is not None:
+            field = self.deformation_field
+            lines["bore"] = (f"deforms along the width: u(θ, z) at {field[0].size} film nodes, "
+                             f"{field.min() * 1e6:.1f} … {field.max() * 1e6:.1f} µm")
         iterations = self.columns.get("coupling_iterations")
         if iterations is not None and len(iterations):
             updates = self.columns.get("newton_updates")

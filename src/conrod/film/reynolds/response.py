@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from scipy.linalg import lu_factor, lu_solve
 from scipy.sparse.linalg import splu
 
 from conrod.film.base import FilmResult
@@ -70,10 +71,16 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
                                            omega_sum, state.viscosity)
     d_pressure = np.zeros((n_bore + 2,) + shape)
     matrix, nodes = active_matrix(a_east, a_north, active)
-    factor = splu(matrix, permc_spec="MMD_AT_PLUS_A")  # K_AA is symmetric
     right = -imbalance[:, nodes[0], nodes[1]]
-    for q in range(n_bore + 2):  # one column at a time: SuperLU's blocked solve is ~20x slower
-        d_pressure[q, nodes[0], nodes[1]] = factor.solve(np.ascontiguousarray(right[q]))
+    if nodal.ndim == 1 and right.shape[0] > right.shape[1]:
+        # more directions than active nodes (a node per film node): one dense LU and one
+        # blocked solve, 3x faster than as many sparse back-substitutions
+        factor = lu_factor(matrix.toarray())
+        d_pressure[:, nodes[0], nodes[1]] = lu_solve(factor, right.T).T
+    else:
+        factor = splu(matrix, permc_spec="MMD_AT_PLUS_A")  # K_AA is symmetric
+        for q in range(n_bore + 2):  # one column at a time: SuperLU's blocked solve is slow
+            d_pressure[q, nodes[0], nodes[1]] = factor.solve(np.ascontiguousarray(right[q]))
     w_x, w_y = film.force_weights
     force = -np.stack([np.einsum("qik,ik->q", d_pressure, w_x),
                        np.einsum("qik,ik->q", d_pressure, w_y)])
