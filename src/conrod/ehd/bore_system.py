@@ -121,7 +121,7 @@ def bore_force_weights(film, housing) -> np.ndarray:
     return node_weights(housing.angles, z, housing.radius).ravel()
 
 
-def bore_loads(weights: np.ndarray, pressure: np.ndarray) -> np.ndarray:
+def bore_loads(weights: Any, pressure: np.ndarray) -> np.ndarray:
     """Nodal loads [N] of the pressure p (n_θ, n_z + 1) [Pa] with the weights of
     :func:`bore_force_weights`: f_j = Σ_k W_jk p_jk per row, f_jk = w_jk p_jk per node."""
     if weights.ndim == 1:

@@ -57,7 +57,7 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
     force = np.zeros((len(cycle.crank_angle), 2))
     updates = np.zeros(len(cycle.crank_angle))
     deformation = np.zeros((len(cycle.crank_angle), len(film.housing.angles)))
-    fields = [] if not film.housing.uniform_in_z else None
+    fields: list[np.ndarray] | None = [] if not film.housing.uniform_in_z else None
     peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
     peak_pressure = None
     for i, memory in enumerate(film_memory):

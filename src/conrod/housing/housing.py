@@ -193,6 +193,7 @@ class Housing:
         repeated over ``n_axial_nodes`` for a plane housing (it deforms alike at every z),
         u(θ_j, z_k) itself over the width."""
         if self.axial is None:
+            assert n_axial_nodes is not None, "a plane housing needs the film's axial nodes"
             return np.repeat(np.asarray(deformation)[:, None], n_axial_nodes, axis=1)
         return self.field_view(deformation)
 

@@ -207,7 +207,7 @@ def read_op4(path: Path, name: str | None = None) -> LabelledMatrix:
     return LabelledMatrix(matrices[key])
 
 
-def _op4_header(fields: tuple[int, int, int, int]) -> tuple[int, int, bool]:
+def _op4_header(fields: tuple[int, ...]) -> tuple[int, int, bool]:
     ncol, nrow, _, kind = fields
     if abs(kind) not in (1, 2):
         raise FormatError(f"OP4 matrix of TYPE {kind}: complex (allowed: 1 or 2, real)")
@@ -276,7 +276,7 @@ def _op4_binary(data: bytes) -> dict[str, np.ndarray]:
     k = 0
     while k < len(records):
         head = records[k]
-        ncol, nrow, bigmat = _op4_header(struct.unpack(endian + "4i", head[:16]))
+        ncol, nrow, bigmat = _op4_header(tuple(struct.unpack(endian + "4i", head[:16])))
         name = head[16:24].decode("ascii", "replace").strip().upper() or "MATRIX"
         kind = struct.unpack(endian + "4i", head[:16])[3]
         real = endian + ("d" if abs(kind) == 2 else "f")

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from itertools import permutations
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -132,7 +133,7 @@ class SolidRing:
     held: np.ndarray = field(init=False, repr=False)
     _logical: np.ndarray = field(init=False, repr=False)
     _free: np.ndarray = field(init=False, repr=False)
-    _factor: object = field(init=False, repr=False)
+    _factor: Any = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
         self.mesh, self._logical = ring_mesh(self.geometry, self.n_theta, self.n_radial,

@@ -1,6 +1,7 @@
 """The bore of a housing that deforms along the width (a 3-D compliance):
 :func:`plot_bore_field` draws u(θ, z) and the film thickness across the width from
-:class:`conrod.results.ehd.ElasticRunResults` (``deformation_field``, ``gap_field``)."""
+:class:`conrod.results.ehd.ElasticRunResults` (``deformation_field``, ``gap_field``,
+``mean_gap``)."""
 
 from __future__ import annotations
 
@@ -45,8 +46,7 @@ def _width_profile(ax, results, index: int, z_mm: np.ndarray) -> None:
     gap = results.gap_field(index)
     row = int(np.argmin(gap.min(axis=1)))
     cycle, theta = results.cycle, results.bore_angles[row]
-    mean = (results.clearance - cycle.eccentricity_x[index] * np.cos(theta)
-            - cycle.eccentricity_y[index] * np.sin(theta) + results.deformation[index, row])
+    mean = results.mean_gap(index)[row]
     ax.plot(z_mm, gap[row] * UM, "o-", color="C3", ms=3,
             label="bore deformed along the width (film nodes)")
     ax.plot(z_mm, np.full(len(z_mm), mean * UM), "--", color="C0",

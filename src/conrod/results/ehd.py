@@ -66,10 +66,18 @@ class ElasticRunResults:
     def gap_field(self, index: int) -> np.ndarray:
         """Film thickness on the deformed bore h(θ, z) = c − e_x cos θ − e_y sin θ + u(θ, z)
         (n_θ, n_z + 1) [m] at output row ``index`` (needs ``deformation_field``)."""
+        assert self.deformation_field is not None, "a plane housing has no u(θ, z)"
+        return self._rigid_gap(index)[:, None] + self.deformation_field[index]
+
+    def mean_gap(self, index: int) -> np.ndarray:
+        """Film thickness per row on the bore deformed by ``deformation`` (the width-mean of
+        a 3-D bore), c − e_x cos θ − e_y sin θ + ū(θ) (n_θ,) [m] at output row ``index``."""
+        return self._rigid_gap(index) + self.deformation[index]
+
+    def _rigid_gap(self, index: int) -> np.ndarray:
         cycle, theta = self.cycle, self.bore_angles
-        rigid = (self.clearance - cycle.eccentricity_x[index] * np.cos(theta)
-                 - cycle.eccentricity_y[index] * np.sin(theta))
-        return rigid[:, None] + self.deformation_field[index]
+        return (self.clearance - cycle.eccentricity_x[index] * np.cos(theta)
+                - cycle.eccentricity_y[index] * np.sin(theta))
 
     @property
     def cycle(self):
