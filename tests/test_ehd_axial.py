@@ -173,6 +173,17 @@ def test_plane_housing_on_3d_nodes_gives_the_plane_answer(kamaz_pair):
     assert np.max(np.abs(u_plane)) > 1e-2 * c  # the bore does deform
 
 
+def test_plane_equivalent_of_a_repeated_plane_housing_is_itself(kamaz_pair):
+    """Spreading a row force uniformly over the width and taking the width-mean undoes the
+    repetition over the width: Sᵀ E C Eᵀ S = C."""
+    _, plane, solid = kamaz_pair
+    back = solid.plane_equivalent()
+    assert back.uniform_in_z
+    scale = np.max(np.abs(plane.compliance))
+    assert np.max(np.abs(back.compliance - plane.compliance)) <= 1e-14 * scale
+    assert np.allclose(back.inertia_base, plane.inertia_base, rtol=1e-14, atol=0.0)
+
+
 def test_step_jacobian_on_3d_nodes_with_asperity_contact(kamaz_pair):
     """One BDF2 step of the journal with mass, the rod seen on the 3-D nodes with a Winkler
     bedding of its own at every node (a housing that deforms along the width), asperity

@@ -200,3 +200,26 @@ def test_film_grid_other_than_the_bore_nodes(tmp_path, ring_compliance):
         deformation.append(housing.field_view(housing.corrected_compliance @ forces))
     coarse, fine = deformation
     assert np.max(np.abs(fine[::2, ::2] - coarse)) < 0.05 * np.ptp(coarse)
+
+
+def test_npz_with_axial_positions_and_a_3d_inertia_file(tmp_path, ring_compliance):
+    """conrod's own ``.npz`` with ``axial_position_m`` holds a 3-D compliance (any node
+    order); an inertia file with axial positions lands on the same film nodes, a plane one
+    is repeated over the width."""
+    ids, theta, z = grid_nodes()
+    order = np.random.default_rng(4).permutation(len(ids))
+    fields = np.random.default_rng(5).standard_normal((len(ids), 4)) * 1e-6
+    np.savez(tmp_path / "c.npz", angle_deg=np.degrees(theta[order]),
+             axial_position_m=z[order], compliance_m_per_N=ring_compliance[np.ix_(order, order)])
+    np.savez(tmp_path / "u.npz", angle_deg=np.degrees(theta[order]),
+             axial_position_m=z[order], inertia_base_m=fields[order])
+    housing = _read(imported_case({"compliance_file": str(tmp_path / "c.npz"),
+                                   "inertia_file": str(tmp_path / "u.npz")}))
+    assert not housing.uniform_in_z
+    assert _close(housing.compliance, ring_compliance, 1e-15)
+    assert _close(housing.inertia_base, fields, 1e-15)
+    plane_fields = fields[::5]
+    np.savez(tmp_path / "u.npz", angle_deg=np.degrees(theta[::5]), inertia_base_m=plane_fields)
+    housing = _read(imported_case({"compliance_file": str(tmp_path / "c.npz"),
+                                   "inertia_file": str(tmp_path / "u.npz")}))
+    assert np.array_equal(housing.inertia_base, np.repeat(plane_fields, 5, axis=0))

@@ -166,6 +166,7 @@ def _bore_field_figures(results: ElasticRunResults) -> tuple[FigureSpec, ...]:
         return ()
     return (FigureSpec("bore_deformation_width.png", "Bore deformation along the width",
                        "Corrected radial bore displacement u [µm] over θ [deg] and z [mm] at "
-                       "the largest load and the smallest h_min, and the film thickness "
-                       "h [µm] across the width at the angle of the smallest film.",
+                       "the largest load and the smallest h_min, whole and less its "
+                       "width-mean, and the film thickness h [µm] across the width at the "
+                       "angle of the smallest film.",
                        lambda: _plots("bore_field_plots").plot_bore_field(results)),)

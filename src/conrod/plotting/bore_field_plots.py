@@ -13,32 +13,38 @@ UM, MM = 1e6, 1e3
 
 def plot_bore_field(results) -> Figure:
     """Corrected radial bore displacement u(θ, z) [µm] over the shell angle θ [deg] and the
-    axial position z [mm] at the largest load and at the smallest h_min, and across the
-    width at the angle of the smallest film thickness: h(z) [µm] on the bore deformed along
-    the width against h(z) on the bore deformed by its width-mean (what a plane housing of
-    the same mean deformation would give). The profile holds the film nodes' values; the
-    h_min of cycle.csv is refined between nodes by a parabola in θ."""
+    axial position z [mm] at the largest load and at the smallest h_min — whole, and less
+    its width-mean ū(θ) (the part that varies along the width) — and across the width at
+    the angle of the smallest film: h(z) [µm] on the bore deformed along the width against
+    h(z) on the bore deformed by its width-mean (what a plane housing of the same mean
+    deformation would give). The profile holds the film nodes' values; the h_min of
+    cycle.csv is refined between nodes by a parabola in θ."""
     cycle = results.cycle
     rows = {"largest load": results.peak_load_index,
             "smallest h_min": int(np.argmin(cycle.h_min))}
     theta_deg = np.degrees(results.bore_angles)
     z_mm = results.axial_positions * MM
-    fields = [results.deformation_field[i] * UM for i in rows.values()]
-    limit = max(float(np.max(np.abs(field))) for field in fields) or 1.0
-    fig = Figure(figsize=(14.0, 4.6), layout="constrained")
-    axes = fig.subplots(1, 3, width_ratios=(1.0, 1.0, 0.8))
-    for ax, (label, i), field in zip(axes[:2], rows.items(), fields, strict=True):
-        mesh = ax.pcolormesh(theta_deg, z_mm, field.T, shading="auto", cmap="RdBu_r",
-                             vmin=-limit, vmax=limit)
-        lines = ax.contour(theta_deg, z_mm, field.T, levels=8, colors="k", linewidths=0.5)
-        ax.clabel(lines, fontsize=6, fmt="%.1f")
-        ax.set_xlabel("θ [deg] (film frame)")
-        ax.set_title(f"{label}: φ = {cycle.crank_angle_deg[i]:.0f}°, "
-                     f"h_min = {cycle.h_min[i] * UM:.2f} µm", fontsize=9)
-    axes[0].set_ylabel("z [mm] from the mid-plane")
-    fig.colorbar(mesh, ax=axes[:2], label="corrected bore displacement u [µm] (outward +)",
-                 shrink=0.9)
-    _width_profile(axes[2], results, rows["smallest h_min"], z_mm)
+    fig = Figure(figsize=(15.0, 7.5), layout="constrained")
+    axes = fig.subplot_mosaic([["whole 0", "along 0", "profile"],
+                               ["whole 1", "along 1", "profile"]],
+                              width_ratios=(1.0, 1.0, 0.75))
+    whole = [results.deformation_field[i] * UM for i in rows.values()]
+    along = [field - results.deformation[i][:, None] * UM
+             for field, i in zip(whole, rows.values(), strict=True)]
+    for key, fields, label in (("whole", whole, "u [µm] (outward +)"),
+                               ("along", along, "u − ū(θ) [µm]: along the width")):
+        limit = max(float(np.max(np.abs(field))) for field in fields) or 1.0
+        for k, ((name, i), field) in enumerate(zip(rows.items(), fields, strict=True)):
+            ax = axes[f"{key} {k}"]
+            mesh = ax.pcolormesh(theta_deg, z_mm, field.T, shading="auto", cmap="RdBu_r",
+                                 vmin=-limit, vmax=limit)
+            ax.set_title(f"{name}: φ = {cycle.crank_angle_deg[i]:.0f}°, "
+                         f"h_min = {cycle.h_min[i] * UM:.2f} µm", fontsize=9)
+            ax.set_xlabel("θ [deg] (film frame)")
+            ax.set_ylabel("z [mm] from the mid-plane")
+        fig.colorbar(mesh, ax=[axes[f"{key} 0"], axes[f"{key} 1"]], label=label,
+                     shrink=0.8)
+    _width_profile(axes["profile"], results, rows["smallest h_min"], z_mm)
     return fig
 
 

@@ -57,19 +57,17 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     n_theta, n_nodes = pressure.shape
     shape = (n_theta, n_nodes)
     rate = 0.0 if rate_step is None else 1.0 / rate_step
-    if nodal.ndim == 1:
-        imbalance = _node_directions(pressure, problem.h, rate, grid, omega_sum,
-                                     state.viscosity)
-    else:
-        imbalance = _row_directions(pressure, problem.h, rate, grid, omega_sum,
-                                    state.viscosity, nodal.shape[0])
-    n_bore = imbalance.shape[0] - 2
+    bore_part = (_node_directions if nodal.ndim == 1 else _row_directions)(
+        pressure, problem.h, rate, grid, omega_sum, state.viscosity, nodal.shape[0])
+    n_bore = bore_part.shape[0]
+    imbalance = np.zeros((n_bore + 2,) + shape)
+    imbalance[:n_bore] = bore_part
     zero = np.zeros(shape)
     for k, trig in enumerate(film.node_directions):
         dh_rate = -np.ascontiguousarray(np.broadcast_to(trig[:, None], shape))
         imbalance[n_bore + k] = _imbalance(pressure, problem.h, zero, dh_rate, grid,
                                            omega_sum, state.viscosity)
-    d_pressure = np.zeros((n_bore + 2,) + shape)
+    d_pressure = np.zeros(imbalance.shape)
     matrix, nodes = active_matrix(a_east, a_north, active)
     right = -imbalance[:, nodes[0], nodes[1]]
     if nodal.ndim == 1 and right.shape[0] > right.shape[1]:
@@ -79,13 +77,13 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
         d_pressure[:, nodes[0], nodes[1]] = lu_solve(factor, right.T).T
     else:
         factor = splu(matrix, permc_spec="MMD_AT_PLUS_A")  # K_AA is symmetric
-        for q in range(n_bore + 2):  # one column at a time: SuperLU's blocked solve is slow
+        for q in range(len(right)):  # one column at a time: SuperLU's blocked solve is slow
             d_pressure[q, nodes[0], nodes[1]] = factor.solve(np.ascontiguousarray(right[q]))
     w_x, w_y = film.force_weights
     force = -np.stack([np.einsum("qik,ik->q", d_pressure, w_x),
                        np.einsum("qik,ik->q", d_pressure, w_y)])
     if nodal.ndim == 1:
-        nodal_response = (d_pressure.reshape(n_bore + 2, -1) * nodal[None, :]).T
+        nodal_response = (d_pressure.reshape(len(d_pressure), -1) * nodal[None, :]).T
     else:
         nodal_response = np.einsum("qjk,jk->jq", d_pressure, nodal)
     return FilmResponse(nodal_response[:, :n_bore], nodal_response[:, n_bore:],
@@ -93,26 +91,24 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
 
 
 def _row_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> np.ndarray:
-    """∂r/∂u_j (n_bore + 2, n_θ, n_z + 1) of whole film rows (the last two left for the
-    journal velocity) [Pa m^3]."""
+    """∂r/∂u_j (n_bore, n_θ, n_z + 1) of whole film rows [Pa m^3]."""
     n_theta = pressure.shape[0]
     rows = bore_row_imbalance(pressure, h, rate, grid.radius, grid.d_theta, grid.d_z,
                               omega_sum, viscosity)
-    imbalance = np.zeros((n_bore + 2,) + pressure.shape)
+    imbalance = np.zeros((n_bore,) + pressure.shape)
     bore = np.arange(n_bore)
     for shift in range(3):
         imbalance[bore, (bore - 1 + shift) % n_theta, :] = rows[:, shift, :]
     return imbalance
 
 
-def _node_directions(pressure, h, rate, grid, omega_sum, viscosity) -> np.ndarray:
-    """∂r/∂u_jk (n_θ (n_z + 1) + 2, n_θ, n_z + 1) of single film nodes, row-major (the last
-    two left for the journal velocity) [Pa m^3]."""
+def _node_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> np.ndarray:
+    """∂r/∂u_jk (n_bore = n_θ (n_z + 1), n_θ, n_z + 1) of single film nodes, row-major
+    [Pa m^3]."""
     n_theta, n_nodes = pressure.shape
     stencil = bore_node_imbalance(pressure, h, rate, grid.radius, grid.d_theta, grid.d_z,
                                   omega_sum, viscosity)
-    n_bore = n_theta * n_nodes
-    imbalance = np.zeros((n_bore + 2, n_theta, n_nodes))
+    imbalance = np.zeros((n_bore, n_theta, n_nodes))
     node = np.arange(n_bore)
     j, k = np.divmod(node, n_nodes)
     np.add.at(imbalance, (node, j, k), stencil[j, k, 0])
