@@ -34,6 +34,13 @@ def _length(description: str, upper: float = 5.0, default: float | None = None):
 CorrectionName = Literal["least_squares_circle", "centroid", "none"]
 """Rigid-body corrections of the bore displacement (:mod:`conrod.housing.correction`)."""
 
+MatrixFormatName = Literal["auto", "npz", "csv", "matrix_market", "nastran_dmig",
+                           "nastran_op4", "abaqus"]
+"""Formats of an imported matrix (:mod:`conrod.housing.imported`, docs/elastic.md)."""
+NODE_FILE_FORMATS = ("matrix_market", "nastran_dmig", "nastran_op4", "abaqus")
+"""Formats whose bore nodes are given by ``node_file``."""
+_SUFFIX_NEEDS_NODES = (".mtx", ".op4", ".dmig", ".bdf", ".dat", ".pch", ".inc", ".blk")
+
 
 class HousingSection(Section):
     """How the big-end housing deforms (rigid by default)."""
@@ -93,7 +100,21 @@ class HousingSection(Section):
     thickness: float | None = _length(
         "Plane-stress thickness of an imported mesh; default bearing width [m]", 2.0)
     compliance_file: Path | None = Field(default=None, strict=False, description=(
-        "Compliance matrix (.npz with angle_deg and compliance_m_per_N, or .csv) [-]"))
+        "Compliance or stiffness matrix: .npz (angle_deg, [axial_position_m,] "
+        "compliance_m_per_N), .csv, Matrix Market, Nastran DMIG or OP4, Abaqus .mtx [-]"))
+    compliance_format: MatrixFormatName = Field(default="auto", description=(
+        "Format of compliance_file: auto (by its suffix), npz, csv, matrix_market, "
+        "nastran_dmig, nastran_op4 or abaqus [-]"))
+    node_file: Path | None = Field(default=None, strict=False, description=(
+        "Bore nodes of compliance_file (Matrix Market, DMIG, OP4, Abaqus): CSV of node_id "
+        "with angle_deg, axial_position_m or with x_m, y_m, z_m (rod frame) [-]"))
+    matrix_kind: Literal["compliance", "stiffness"] = Field(default="compliance", description=(
+        "compliance_file holds a compliance [m/N] or the stiffness of a held model [N/m] "
+        "[-]"))
+    dof_frame: Literal["cylindrical", "cartesian"] = Field(default="cylindrical", description=(
+        "Components 1, 2, 3 of a node are along (r, θ, z) or (x, y, z) of the rod frame [-]"))
+    matrix_name: str | None = Field(default=None, description=(
+        "DMIG or OP4 matrix to read when the file holds several [-]"))
     inertia_file: Path | None = Field(default=None, strict=False, description=(
         ".npz with angle_deg and inertia_base_m (n, 4): inertia base fields [-]"))
     stress_angles: list[float] = Field(default_factory=list, description=(
@@ -115,7 +136,14 @@ class HousingSection(Section):
                              "file in metres)")
         if self.model == "compliance" and self.compliance_file is None:
             raise ValueError("housing.compliance_file is required with model = 'compliance' "
-                             "(.npz or .csv)")
+                             "(.npz, .csv, Matrix Market, Nastran DMIG or OP4, Abaqus .mtx)")
+        if self.model == "compliance" and self.node_file is None and (
+                self.compliance_format in NODE_FILE_FORMATS or (
+                    self.compliance_format == "auto"
+                    and Path(self.compliance_file).suffix.lower() in _SUFFIX_NEEDS_NODES)):
+            raise ValueError(f"housing.node_file is required with compliance_file = "
+                             f"{str(self.compliance_file)!r} (CSV of node_id with angle_deg, "
+                             "axial_position_m or with x_m, y_m, z_m)")
         for angle in self.stress_angles:
             if not 0.0 <= angle <= 720.0:
                 raise ValueError(f"housing.stress_angles contains {angle!r}: out of range "

@@ -7,15 +7,17 @@ bore the gap is the deformed film thickness the elastic film already has at ever
 h(θ, z) = h_rigid + P(C f + U c(φ)), so the contact circle is no longer rigid: the asperity
 pressure is taken node by node on that h. It acts like the film pressure:
 
-* on the bore nodes through the same transfer, a_j = Σ_k W_jk p_a(h_jk)
-  (:func:`conrod.ehd.bore_system.nodal_force_weights`), added to the film's nodal forces
-  in the deformation G = u − λP(C (f + a) + U c(φ));
+* on the bore nodes through the same transfer, a_j = Σ_k W_jk p_a(h_jk) per film row, or
+  a_jk = w_jk p_a(h_jk) per film node of a housing over the width
+  (:func:`conrod.ehd.bore_system.bore_force_weights`), added to the film's nodal forces in
+  the deformation G = u − λP(C (f + a) + U c(φ));
 * on the journal as A = −Σ p_a (w_x, w_y) with the film's force weights, added to the film
   force.
 
 Its derivative is local: a bore displacement u_j moves h by +1 at every axial node of row
 j, so ∂a_j/∂u_i = δ_ij Σ_k W_jk p_a'(h_jk) (diagonal) and ∂A/∂u_j = −Σ_k p_a'(h_jk)
-(w_x, w_y)_jk, with p_a' = (K E'/σ) F_{5/2}'(h/σ) the exact slope of the tabulated F_{5/2}
+(w_x, w_y)_jk (per film node: w_jk p_a'(h_jk) and −p_a'(h_jk) (w_x, w_y)_jk), with
+p_a' = (K E'/σ) F_{5/2}'(h/σ) the exact slope of the tabulated F_{5/2}
 (log-linear between table points). The journal moves h as a bore displacement −cos θ_j
 (−sin θ_j) does, so the journal columns of an implicit step follow from these bore columns
 (:mod:`conrod.ehd.bore_system`); the asperity pressure does not depend on the velocity.
@@ -37,6 +39,7 @@ import numba as nb
 import numpy as np
 
 from conrod.contact.asperity import F52_STEP, F52_X_MAX, F52_X_MIN, LOG_F52, f52
+from conrod.ehd.bore_system import bore_loads
 
 
 @nb.njit(cache=True)
@@ -79,9 +82,10 @@ deformed bore keeps open (:func:`open_radius`) [-]."""
 
 def deformed_min_gap(angles: np.ndarray, clearance: float, deformation: np.ndarray,
                      position) -> float:
-    """min_j (c − x cos θ_j − y sin θ_j + u_j) [m]: h_min on the deformed bore (a 2-D
-    housing deforms alike at every z) for the journal at ``position`` (x, y) [m], bore-node
-    angles θ [rad], corrected displacement u [m]; ≤ 0 where the film is closed."""
+    """min_j (c − x cos θ_j − y sin θ_j + u_j) [m]: h_min on the deformed bore for the
+    journal at ``position`` (x, y) [m], bore-node angles θ [rad] (the film rows of a plane
+    housing, which deforms alike at every z; every film node of one over the width),
+    corrected displacement u [m]; ≤ 0 where the film is closed."""
     gap = (clearance - position[0] * np.cos(angles) - position[1] * np.sin(angles)
            + deformation)
     return float(np.min(gap))
@@ -107,7 +111,9 @@ class DeformedAsperity:
 
     roughness : float  Combined RMS roughness σ [m].
     scale : float  K E' [Pa] (:class:`conrod.contact.asperity.AsperityParameters`).
-    nodal : ndarray  W (n, n_z + 1): bore-node load per nodal pressure [m²].
+    nodal : ndarray  W (n_θ, n_z + 1) per film row, or w (n_θ (n_z + 1),) per film node:
+        bore-node load per nodal pressure [m²]
+        (:func:`conrod.ehd.bore_system.bore_force_weights`).
     force_weights : tuple  (w_x, w_y) of the film: journal force −Σ p w [m²].
     """
 
@@ -137,7 +143,7 @@ class DeformedAsperity:
 
     def nodal_forces(self, pressure: np.ndarray) -> np.ndarray:
         """Asperity load on the bore nodes a_j [N] of p_a [Pa]."""
-        return np.sum(self.nodal * pressure, axis=1)
+        return bore_loads(self.nodal, pressure)
 
     def add_response(self, response, slope: np.ndarray):
         """The film response plus the asperity terms (module docstring) at dp_a/dh
@@ -145,8 +151,12 @@ class DeformedAsperity:
         n = self.nodal.shape[0]
         w_x, w_y = self.force_weights
         nodal_by_bore = response.nodal_by_bore.copy()
-        nodal_by_bore[np.arange(n), np.arange(n)] += np.sum(self.nodal * slope, axis=1)
-        force_by_bore = response.force_by_bore - np.stack(
-            [np.sum(slope * w_x, axis=1), np.sum(slope * w_y, axis=1)])
+        nodal_by_bore[np.arange(n), np.arange(n)] += bore_loads(self.nodal, slope)
+        if self.nodal.ndim == 1:  # per film node
+            force_by_bore = response.force_by_bore - np.stack(
+                [(slope * w_x).ravel(), (slope * w_y).ravel()])
+        else:
+            force_by_bore = response.force_by_bore - np.stack(
+                [np.sum(slope * w_x, axis=1), np.sum(slope * w_y, axis=1)])
         return dataclasses.replace(response, nodal_by_bore=nodal_by_bore,
                                    force_by_bore=force_by_bore)

@@ -13,7 +13,8 @@ residuals r = (G/c, (F + W)/W_s):
 
 with ∂f/∂u from finite differences along the dominant directions W of P C
 (:func:`conrod.ehd.coupling.dominant_directions`), ∂f/∂v and ∂F/∂v from two more film
-solves, N the 2 × n matrix (cos θ_j, sin θ_j) taking nodal forces to the film force on the
+solves, N the 2 × n matrix (cos θ_j, sin θ_j) of the bore nodes (film rows, or film nodes
+(θ_j, z_k) of a housing over the width) taking nodal forces to the film force on the
 journal (F = −N f), then Broyden's updates of J⁻¹ carried from step to step; the
 increment is scaled when |Δu| exceeds a share of h_min (Rodin's Δ safeguard) or |Δv|
 exceeds 10 c ω.

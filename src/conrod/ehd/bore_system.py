@@ -17,6 +17,9 @@ velocity, and in the implicit step of the journal (:class:`~conrod.film.capabili
 HasStepSystem`, :func:`pressure_step_system` for a film answered by its pressure,
 :func:`content_step_system` for the mass-conserving film's content step).
 
+The bore nodes are the film rows θ_j of a plane housing, or the film nodes (θ_j, z_k) of a
+housing that deforms along the width (:func:`bore_force_weights`); below, j runs over them.
+
 In the implicit step the journal's end position e = e_r + τ v moves h at film row j by
 −τ(cos θ_j, sin θ_j)·δv, as a bore displacement u_j = −τ cos θ_j (−τ sin θ_j) does, so the
 velocity columns of the step are those of the bore, d/dv = −τ Σ_j (cos θ_j, sin θ_j) ∂/∂u_j
@@ -106,6 +109,33 @@ def nodal_force_weights(film, angles: np.ndarray, radius: float) -> np.ndarray:
     return (radius * arc_weights(angles))[:, None] * widths[None, :]
 
 
+def bore_force_weights(film, housing) -> np.ndarray:
+    """The nodal-load weights of the film nodes on the bore nodes of ``housing``: W
+    (n_θ, n_z + 1) per film row for a plane housing (:func:`nodal_force_weights`), w
+    (n_θ (n_z + 1),) per film node, R Δθ_j w_k, for one over the width [m²]."""
+    if housing.uniform_in_z:
+        return nodal_force_weights(film, housing.angles, housing.radius)
+    from conrod.housing.transfer import node_weights
+
+    _, z = film.grid()
+    return node_weights(housing.angles, z, housing.radius).ravel()
+
+
+def bore_loads(weights: Any, pressure: np.ndarray) -> np.ndarray:
+    """Nodal loads [N] of the pressure p (n_θ, n_z + 1) [Pa] with the weights of
+    :func:`bore_force_weights`: f_j = Σ_k W_jk p_jk per row, f_jk = w_jk p_jk per node."""
+    if weights.ndim == 1:
+        return weights * pressure.ravel()
+    return np.sum(weights * pressure, axis=1)
+
+
+def film_node_angles(film) -> np.ndarray:
+    """θ [rad] of the bore nodes of the elastic ``film`` from its base film's grid: the film
+    rows, repeated over the axial nodes for a housing over the width."""
+    theta, z = film.base.grid()
+    return theta if film.housing.uniform_in_z else np.repeat(theta, len(z))
+
+
 def directions(angles: np.ndarray) -> np.ndarray:
     """(cos θ_j, sin θ_j) of the bore nodes (n, 2) [-]."""
     return np.stack([np.cos(angles), np.sin(angles)], axis=1)
@@ -153,7 +183,7 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
         reference=bore_reference(memory, request.previous, request.bdf2),
         reference_dt=request.tau, iterations=0, updates=0)
     share = settings.share(at_end.elapsed)
-    tau, trig = request.tau, directions(film.housing.angles)
+    tau, trig = request.tau, directions(film.housing.node_angles)
     rate = tau if settings.deformation_rate else None
 
     def evaluate(own: np.ndarray, velocity: np.ndarray):
@@ -198,7 +228,7 @@ def content_step_system(film, request: StepRequest) -> BoreSystem:
     share = film.settings.share(elapsed)
     bdf2 = content_bdf2(memory, previous)
     rate_step = dt / (1.5 if bdf2 else 1.0)
-    tau, trig = request.tau, directions(film.base.grid()[0])
+    tau, trig = request.tau, directions(film_node_angles(film))
     before = previous.inner if previous is not None else None
     latest = [None]
 
@@ -206,7 +236,7 @@ def content_step_system(film, request: StepRequest) -> BoreSystem:
         state = _state(request, velocity, film.film_field(own))
         fx, fy, inner = film.base.content_step(state, memory.inner, dt, latest[0], before)
         latest[0] = inner
-        forces = np.sum(film.nodal * film.base.gauge_pressure(inner.pressure, state), axis=1)
+        forces = bore_loads(film.nodal, film.base.gauge_pressure(inner.pressure, state))
         return forces, np.array([fx, fy]), float(inner.thickness.min()), (state, inner)
 
     def respond(payload) -> FilmResponse:

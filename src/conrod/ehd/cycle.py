@@ -32,9 +32,12 @@ from conrod.film.base import FilmState
 class ElasticCycle:
     """The bore deformation and the coupling diagnostics over the output crank angles.
 
-    deformation : ndarray  Corrected bore displacement u (n_out, n_θ) [m], outward +.
+    deformation : ndarray  Corrected bore displacement u (n_out, n_θ) [m], outward +; for a
+        housing that deforms along the width, its mean over the width.
     angles : ndarray  Bore-node angles θ [rad].
     columns : dict  Diagnostic columns (names with units) of length n_out.
+    field : ndarray or None  u(θ, z) (n_out, n_θ, n_z + 1) [m] of a housing that deforms
+        along the width; None for a plane one (uniform in z).
     """
 
     deformation: np.ndarray
@@ -42,6 +45,7 @@ class ElasticCycle:
     columns: dict[str, np.ndarray]
     peak_load_index: int = 0
     peak_load_pressure: np.ndarray | None = None
+    field: np.ndarray | None = None
 
 
 def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticCycle:
@@ -53,6 +57,7 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
     force = np.zeros((len(cycle.crank_angle), 2))
     updates = np.zeros(len(cycle.crank_angle))
     deformation = np.zeros((len(cycle.crank_angle), len(film.housing.angles)))
+    fields: list[np.ndarray] | None = [] if not film.housing.uniform_in_z else None
     peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
     peak_pressure = None
     for i, memory in enumerate(film_memory):
@@ -67,7 +72,9 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
         if i == peak:
             peak_pressure = result.pressure
         force[i] = result.force_x, result.force_y
-        deformation[i] = after.deformation
+        deformation[i] = film.housing.row_mean(after.deformation)
+        if fields is not None:
+            fields.append(film.housing.field_view(after.deformation))
         columns["coupling_iterations"][i] = memory.iterations
         updates[i] = memory.updates
         columns["coupling_residual_m"][i] = after.residual
@@ -82,7 +89,7 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
     columns["force_residual_N"] = _force_residual(problem, cycle, force, massless,
                                                   _step_accelerations(film_memory))
     return ElasticCycle(deformation, np.asarray(film.housing.angles), columns, peak,
-                        peak_pressure)
+                        peak_pressure, None if fields is None else np.array(fields))
 
 
 def _step_accelerations(film_memory: list) -> np.ndarray | None:

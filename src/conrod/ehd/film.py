@@ -56,7 +56,12 @@ import numpy as np
 
 from conrod.ehd.asperity import DeformedAsperity, deformed_min_gap, open_radius
 from conrod.ehd.balance import BalanceJacobian, solve_balance
-from conrod.ehd.bore_system import BoreSystem, nodal_force_weights, pressure_step_system
+from conrod.ehd.bore_system import (
+    BoreSystem,
+    bore_force_weights,
+    bore_loads,
+    pressure_step_system,
+)
 from conrod.ehd.coupling import (
     CouplingOutcome,
     CouplingSettings,
@@ -115,6 +120,10 @@ class ElasticFilm(FilmWrapper):
         own_content = base.initial_history() is not None
         if settings is not None and not settings.deformation_rate and not own_content:
             raise CaseError(RATE_REFUSAL)
+        if not housing.uniform_in_z and (len(z) != len(housing.axial)
+                                         or not np.allclose(z, housing.axial)):
+            raise CaseError(f"housing: the 3-D compliance has {len(housing.axial)} axial "
+                            f"nodes, the film {len(z)} (allowed: solver.n_z + 1 nodes)")
         self.base = (base.with_deformation_rate() if isinstance(base, SupportsDeformationRate)
                      and not own_content else base)
         self.housing = housing
@@ -128,8 +137,8 @@ class ElasticFilm(FilmWrapper):
             increment_share=self.settings.increment_share)
         directions = dominant_directions(housing.corrected_compliance, self.coupling.modes)
         self.jacobian = JacobianCache(directions)
-        self.balance_jacobian = BalanceJacobian(directions, housing.angles)
-        self.rigid_jacobian = BalanceJacobian(directions[:, :0], housing.angles)
+        self.balance_jacobian = BalanceJacobian(directions, housing.node_angles)
+        self.rigid_jacobian = BalanceJacobian(directions[:, :0], housing.node_angles)
         self._zero_operator = np.zeros_like(housing.corrected_compliance)
         self.chords = {"balance": ChordJacobian(), "rigid": ChordJacobian(),
                        "coupling": ChordJacobian()}
@@ -137,8 +146,7 @@ class ElasticFilm(FilmWrapper):
                       and isinstance(self.base, HasThicknessResponse)
                       and self.base.exact_thickness_response()
                       and self.settings.method == "quasi_newton")
-        self.nodal = (nodal_force_weights(self.base, housing.angles, housing.radius)
-                      if self.exact else None)
+        self.nodal = bore_force_weights(self.base, housing) if self.exact else None
         self.contact = (DeformedAsperity.from_parameters(asperity, self.nodal,
                                                          self.base.force_weights)
                         if asperity is not None and self.exact else None)
@@ -158,7 +166,7 @@ class ElasticFilm(FilmWrapper):
         """The inner film's history, else the (zero) bore deformation [m]: a memory that
         evolves in lock-step with a fixed step."""
         inner = self.base.initial_history()
-        return inner if inner is not None else np.zeros(len(self.housing.angles))
+        return inner if inner is not None else np.zeros(self.housing.node_count)
 
     def compiled_kernel(self) -> None:
         """No compiled kernel: the coupling runs in Python around the compiled film."""
@@ -166,7 +174,7 @@ class ElasticFilm(FilmWrapper):
 
     def initial_memory(self) -> ElasticMemory:
         """Rigid bore, crank angle of the orbit start, the inner film's initial memory."""
-        return ElasticMemory(film_memory(self.base), np.zeros(len(self.housing.angles)),
+        return ElasticMemory(film_memory(self.base), np.zeros(self.housing.node_count),
                              self.settings.start_angle)
 
     def solve_with_memory(self, state: FilmState, memory: ElasticMemory, *,
@@ -240,7 +248,7 @@ class ElasticFilm(FilmWrapper):
                     else self._zero_operator)
         inertia = share * self.inertia_deformation(memory.crank_angle)
         start = (extrapolated_deformation(before, memory) if elastic
-                 else np.zeros(len(self.housing.angles)))
+                 else np.zeros(self.housing.node_count))
         c = self.clearance
         scale = c * max(self.crank_speed, 1e-3)
         velocity = np.array([state.velocity_x, state.velocity_y])
@@ -297,14 +305,14 @@ class ElasticFilm(FilmWrapper):
 
     def film_field(self, deformation: np.ndarray) -> np.ndarray:
         """The bore deformation u [m] at the bore nodes as a field δ(θ, z) on the film grid
-        (alike at every z) [m]."""
+        (alike at every z for a plane housing, u(θ_j, z_k) itself over the width) [m]."""
         return self.housing.film_field(deformation, self._axial_nodes)
 
     def inertia_deformation(self, crank_angle: float) -> np.ndarray:
         """Corrected inertia deformation P U c(φ) at φ [rad] [m]; zero without crank
         kinematics (table loads)."""
         if self.housing.kinematics is None:
-            return np.zeros(len(self.housing.angles))
+            return np.zeros(self.housing.node_count)
         return self.housing.inertia_deformation(crank_angle)
 
     def _clock(self, memory: ElasticMemory, crank_angle: float) -> ElasticMemory:
@@ -338,7 +346,7 @@ class ElasticFilm(FilmWrapper):
                 solved = self.base.evaluate_pressure(deformed, inner)
                 if self.contact is not None:  # asperity pressure on the deformed film
                     solved = self.contact.attach(solved)
-                forces = np.sum(self.nodal * solved.load_pressure, axis=1)
+                forces = bore_loads(self.nodal, solved.load_pressure)
                 return forces, solved.min_film_thickness(), solved
             result, after = solve_film(self.base, deformed, inner, with_pressure=True)
             forces = self.housing.nodal_forces(result.pressure, self._z)
@@ -361,14 +369,14 @@ class ElasticFilm(FilmWrapper):
     def deformed_min_film_thickness(self, position, memory: ElasticMemory) -> float:
         """h_min [m] on the bore deformed by ``memory``, journal at ``position`` (x, y) [m]
         (:func:`conrod.ehd.asperity.deformed_min_gap`; ≤ 0: closed)."""
-        return deformed_min_gap(self.housing.angles, self.base.geometry.radial_clearance,
+        return deformed_min_gap(self.housing.node_angles, self.base.geometry.radial_clearance,
                                 memory.deformation, position)
 
     def open_radius(self, x: float, y: float, memory: ElasticMemory) -> float:
         """Largest |e| [m] along the direction of (x, y) [m] at which the film on the bore
         deformed by ``memory`` stays open (:func:`conrod.ehd.asperity.open_radius`):
         the contact circle of the massless orbit on the deformed bore."""
-        return open_radius(self.housing.angles, self.base.geometry.radial_clearance,
+        return open_radius(self.housing.node_angles, self.base.geometry.radial_clearance,
                            memory.deformation, x, y)
 
     def with_contact_response(self, response, payload):
@@ -383,7 +391,7 @@ class ElasticFilm(FilmWrapper):
         share = self.settings.share(memory.elapsed)
         if share == 0.0:
             result, after = solve_film(self.base, state, memory.inner, with_pressure=True)
-            zero = np.zeros(len(self.housing.angles))
+            zero = np.zeros(self.housing.node_count)
             return CouplingOutcome(zero, SolvedPayload(result, after), 1, 0.0, 0.0, True)
         inertia = share * self.inertia_deformation(memory.crank_angle)
         operator = share * self.housing.corrected_compliance

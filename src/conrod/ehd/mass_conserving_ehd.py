@@ -40,7 +40,7 @@ from typing import Any
 
 import numpy as np
 
-from conrod.ehd.bore_system import BoreSystem, content_step_system, nodal_force_weights
+from conrod.ehd.bore_system import BoreSystem, bore_force_weights, bore_loads, content_step_system
 from conrod.ehd.coupling import CouplingOutcome, secant_coupling, semismooth_coupling
 from conrod.ehd.film import ElasticFilm, ElasticMemory, ElasticSettings
 from conrod.ehd.memory import content_bdf2, start_deformation
@@ -77,7 +77,7 @@ class ElasticMassConservingFilm(ElasticFilm):
             self.base = base.with_deformation_rate()
         self.chords["content"] = ChordJacobian()
         self.chords["secant"] = ChordJacobian()
-        self.nodal = nodal_force_weights(base, housing.angles, housing.radius)
+        self.nodal = bore_force_weights(base, housing)
         self.content_calls = 0
         self.content_solves = 0
         self.content_failures = 0
@@ -150,7 +150,7 @@ class ElasticMassConservingFilm(ElasticFilm):
             if not np.all(np.isfinite(kinematics)):
                 raise ConvergenceError("no journal state")
             if share == 0.0:
-                outcome = _rigid(evaluate, len(self.housing.angles))
+                outcome = _rigid(evaluate, self.housing.node_count)
             else:
                 capacity = 1.5 if content_bdf2(memory, previous) else 1.0
                 outcome = self._newton(
@@ -219,7 +219,7 @@ class ElasticMassConservingFilm(ElasticFilm):
                                                    before)
             latest[0] = inner
             pressure = self.base.gauge_pressure(inner.pressure, deformed)
-            forces = np.sum(self.nodal * pressure, axis=1)
+            forces = bore_loads(self.nodal, pressure)
             return forces, float(inner.thickness.min()), (fx, fy, inner, deformed, pressure)
         return evaluate
 

@@ -16,7 +16,9 @@ class ElasticMemory:
     """Memory of :class:`ElasticFilm` (immutable; arrays never modified in place).
 
     inner : object  Memory of the wrapped film (None when it has none).
-    deformation : ndarray  Corrected bore deformation u of the last solve [m] (n_θ,).
+    deformation : ndarray  Corrected bore deformation u of the last solve [m] at the
+        housing's bore nodes (n,): the film rows (n_θ) of a plane housing, the film nodes
+        (n_θ (n_z + 1), row-major) of one that deforms along the width.
     crank_angle : float  Crank angle φ of the current step [rad].
     elapsed : float  Crank angle turned since the orbit started [rad].
     iterations : int  Film solves of the couplings since the last step [-].

@@ -263,7 +263,8 @@ class HasThicknessResponse(Protocol):
     """A film that gives the exact response of its loads to its film thickness at one solve:
     ∂f/∂u and ∂F/∂u of the nodal loads f_j = Σ_k W_jk p_jk and of the force F on the
     journal to a displacement u_j of whole film rows (with the rate u_j/τ_r in its squeeze or
-    content term), and ∂/∂v of the journal's own squeeze term
+    content term) — or, given per-node weights, of f_jk = w_jk p_jk to a displacement u_jk of
+    single film nodes — and ∂/∂v of the journal's own squeeze term
     (:class:`~conrod.film.step_system.FilmResponse`)."""
 
     def exact_thickness_response(self) -> bool:
@@ -274,8 +275,9 @@ class HasThicknessResponse(Protocol):
                            rate_step: float | None) -> FilmResponse:
         """The response at the solve of ``state`` whose answer is ``solved`` (it holds the
         converged pressure, and the film fraction of a content step); ``nodal`` W
-        (n, n_z + 1) [m²]; ``rate_step`` τ_r [s] of the film-thickness rate (None: the
-        rate is not in the film's answer)."""
+        (n_θ, n_z + 1) [m²] per film row, or w (n_θ (n_z + 1),) [m²] per film node
+        (row-major); ``rate_step`` τ_r [s] of the film-thickness rate (None: the rate is
+        not in the film's answer)."""
         ...
 
 

@@ -11,12 +11,10 @@ from typing import Any
 import numpy as np
 
 from conrod.housing.cache import cache_key, load_or_build
-from conrod.housing.compliance_io import read_compliance, read_inertia
 from conrod.housing.fe import Material, clamp_dofs_on_boundary, vector_basis
 from conrod.housing.geometry import RodGeometry
 from conrod.housing.inertia import CrankKinematics
 from conrod.housing.structure import rod_clamp_dofs, rod_mesh, structural_rod
-from conrod.housing.transfer import interpolation_matrix
 from conrod.units import rpm_to_rad_s
 
 
@@ -56,17 +54,9 @@ def housing_from_case(case, make: Any, *, cache_dir=None, use_cache: bool = True
 
 
 def _imported(case, make, angles, radius, common) -> Any:
-    section = case.housing
-    source_angles, matrix = read_compliance(case.resolve(section.compliance_file))
-    interpolate = interpolation_matrix(source_angles, angles)
-    inertia = np.zeros((len(angles), 4))
-    if section.inertia_file is not None:
-        inertia_angles, fields = read_inertia(case.resolve(section.inertia_file))
-        inertia = interpolation_matrix(inertia_angles, angles) @ fields
-    info = {"model": "compliance", "source_nodes": len(source_angles)}
-    compliance = interpolate @ matrix @ interpolate.T
-    return make(angles, radius, 0.5 * (compliance + compliance.T), inertia, info=info,
-                   **common)
+    from conrod.housing.imported import imported_housing
+
+    return imported_housing(case, make, angles, radius, common)
 
 
 COUPLING_FIELDS = ("coupling_tolerance", "rigid_start_deg", "increment_share",
@@ -111,7 +101,8 @@ def _finite_element(case, make, angles, radius, common, cache_dir, use_cache) ->
     start = time.perf_counter()
     arrays, from_cache = load_or_build(cache_key(_cache_payload(case)), build, cache_dir,
                                        use_cache)
-    info = {"model": case.housing.model, "from_cache": from_cache,
+    info = {"model": case.housing.model, "axial": "uniform in z (plane stress)",
+            "from_cache": from_cache,
             "seconds": time.perf_counter() - start,
             **{name: arrays[name].item() for name in ("build_seconds", "n_dofs", "n_elements",
                                                        "bore_nodes")}}

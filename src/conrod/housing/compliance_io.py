@@ -103,7 +103,12 @@ def check_compliance(path: Path, angle_deg: np.ndarray, matrix: np.ndarray) -> N
     at least one positive eigenvalue; else CaseError."""
     field = "compliance_file"
     check_angles(field, path, angle_deg)
-    n = len(angle_deg)
+    check_matrix(path, matrix, len(angle_deg))
+
+
+def check_matrix(path: Path, matrix: np.ndarray, n: int) -> None:
+    """The matrix checks of :func:`check_compliance` for ``n`` nodes (any node set)."""
+    field = "compliance_file"
     if matrix.shape != (n, n):
         raise _error(field, path, f"compliance_m_per_N has shape {matrix.shape} (allowed: "
                      f"({n}, {n}), square with one row per angle)")

@@ -9,6 +9,14 @@
 The film thickness of the elastic bearing is h = h_rigid + δ with δ positive outward.
 One update δ = (P C) f + (P U) c(φ) is two small matrix-vector products: the correction P
 (:mod:`conrod.housing.correction`) is folded into the precomputed matrices.
+
+Plane or over the width. A plane housing (the built-in rod and an imported 2-D mesh, plane
+stress; a compliance given on bore angles alone) has one bore node per film row θ_j: the
+nodal force is the pressure integrated over the row's arc and the whole width, and the
+deformation is uniform in z (``axial`` is None). A 3-D compliance (nodes (θ, z) of a solid
+model, :mod:`conrod.housing.nodes3d`) has one bore node per film node (θ_j, z_k), ordered
+row-major (j, then k): nodal forces per node and u(θ, z) at every node (``axial`` holds
+the film's z_k).
 """
 
 from __future__ import annotations
@@ -21,9 +29,9 @@ from typing import Any
 import numpy as np
 
 from conrod.housing.build import housing_from_case
-from conrod.housing.correction import correction_projector
+from conrod.housing.correction import bore_correction_projector, correction_projector
 from conrod.housing.inertia import CrankKinematics
-from conrod.housing.transfer import nodal_forces
+from conrod.housing.transfer import interpolation_matrix, nodal_forces, node_forces
 
 
 @dataclass
@@ -33,12 +41,14 @@ class Housing:
     angles : ndarray  Film-node angles θ_j [rad] (film frame).
     radius : float  Film (journal) radius R [m].
     compliance : ndarray  C (n × n) [m/N]: radial displacement (outward +) of node i per unit
-        outward nodal force at node j.
+        outward nodal force at node j; n = n_θ (plane) or n_θ n_z (over the width).
     inertia_base : ndarray  (n, 4) radial displacements of the inertia base load cases per
         unit coefficient (see :mod:`conrod.housing.inertia`) [m per unit].
     correction : str  least_squares_circle, centroid or none.
     kinematics : CrankKinematics or None  Crank train for the inertia coefficients.
     info : dict  Build diagnostics (model, sizes, times, cache use).
+    axial : ndarray or None  Axial positions z_k of the film nodes [m] (from mid-width) when
+        the compliance has a node at every (θ_j, z_k); None: plane, uniform in z.
     """
 
     angles: np.ndarray
@@ -49,14 +59,75 @@ class Housing:
     kinematics: CrankKinematics | None = None
     info: dict[str, Any] = field(default_factory=dict)
     structure_factory: Any = field(default=None, repr=False)
+    axial: np.ndarray | None = None
     projector: np.ndarray = field(init=False, repr=False)
     corrected_compliance: np.ndarray = field(init=False, repr=False)
     corrected_inertia: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        self.projector = correction_projector(self.angles, self.correction)  # type: ignore[arg-type]
+        if self.axial is None:
+            self.projector = correction_projector(self.angles, self.correction)  # type: ignore[arg-type]
+        else:
+            self.axial = np.asarray(self.axial, dtype=float)
+            self.projector = bore_correction_projector(self.angles, self.axial,
+                                                       self.correction)  # type: ignore[arg-type]
         self.corrected_compliance = self.projector @ self.compliance
         self.corrected_inertia = self.projector @ self.inertia_base
+
+    # ------------------------------------------------------------------ bore nodes
+    @property
+    def uniform_in_z(self) -> bool:
+        """True for a plane housing: one bore node per film row, the same deformation at
+        every axial position [-]."""
+        return self.axial is None
+
+    @property
+    def node_count(self) -> int:
+        """Number of bore nodes n (the size of the compliance) [-]."""
+        return len(self.angles) * (1 if self.axial is None else len(self.axial))
+
+    @property
+    def node_angles(self) -> np.ndarray:
+        """θ of every bore node (n,) [rad]: the film rows, repeated over z_k over the width."""
+        if self.axial is None:
+            return self.angles
+        return np.repeat(self.angles, len(self.axial))
+
+    @property
+    def node_axial(self) -> np.ndarray | None:
+        """z of every bore node (n,) [m]; None for a plane housing."""
+        if self.axial is None:
+            return None
+        return np.tile(self.axial, len(self.angles))
+
+    def field_view(self, deformation: np.ndarray) -> np.ndarray:
+        """u at the bore nodes (n,) [m] as (n_θ, n_z) over the width, (n_θ, 1) plane [m]."""
+        return np.asarray(deformation).reshape(len(self.angles), -1)
+
+    def plane_equivalent(self) -> Housing:
+        """The plane housing of the same body: a row force spread uniformly over the width,
+        the row's displacement its mean over the width, C₂ = Sᵀ C S with S_(jk),j = w_k/L
+        (w_k the axial node widths), inertia fields averaged alike; itself when plane."""
+        if self.axial is None:
+            return self
+        from conrod.housing.transfer import axial_weights
+
+        share = axial_weights(self.axial) / np.ptp(self.axial)
+        spread = np.kron(np.eye(len(self.angles)), share[:, None])
+        compliance = spread.T @ self.compliance @ spread
+        return Housing(self.angles, self.radius, 0.5 * (compliance + compliance.T),
+                       spread.T @ self.inertia_base, self.correction, self.kinematics,
+                       {**self.info, "axial": "width mean of a 3-D compliance"})
+
+    def row_mean(self, deformation: np.ndarray) -> np.ndarray:
+        """u per film row θ_j [m]: itself (plane) or its mean over the width, weighted by the
+        axial node widths (over the width) [m]."""
+        if self.axial is None:
+            return np.asarray(deformation)
+        from conrod.housing.transfer import axial_weights
+
+        weights = axial_weights(self.axial)
+        return self.field_view(deformation) @ weights / weights.sum()
 
     @classmethod
     def from_case(cls, case, *, cache_dir=None, use_cache: bool = True) -> Housing:
@@ -71,7 +142,16 @@ class Housing:
         if theta is not None and len(theta) == len(self.angles) and np.allclose(theta,
                                                                                  self.angles):
             theta = None
-        return nodal_forces(pressure, z, self.angles, self.radius, theta)
+        if self.axial is None:
+            return nodal_forces(pressure, z, self.angles, self.radius, theta)
+        if theta is not None:  # rows at other angles: p interpolated periodic-linearly in θ
+            pressure = interpolation_matrix(np.asarray(theta), self.angles) @ pressure
+        if len(z) != len(self.axial) or not np.allclose(z, self.axial):
+            from conrod.errors import CaseError
+
+            raise CaseError(f"housing: the pressure has {len(z)} axial nodes, the 3-D "
+                            f"compliance {len(self.axial)} (allowed: the film grid's n_z + 1)")
+        return node_forces(pressure, z, self.angles, self.radius)
 
     def correct(self, displacement: np.ndarray) -> np.ndarray:
         """Rigid-body corrected radial displacement(s) [m] of (n,) or (n, k) [m]."""
@@ -106,11 +186,16 @@ class Housing:
             return self.corrected_compliance @ forces
         return self.deformation_from(forces, self.inertia_coefficients(crank_angle))
 
-    @staticmethod
-    def film_field(deformation: np.ndarray, n_axial_nodes: int) -> np.ndarray:
-        """δ(θ_j) [m] repeated over the axial nodes: the (n, n_z + 1) additive film-thickness
-        field of :class:`conrod.film.base.FilmState` (a 2-D housing deforms alike at every z)."""
-        return np.repeat(np.asarray(deformation)[:, None], n_axial_nodes, axis=1)
+    def film_field(self, deformation: np.ndarray, n_axial_nodes: int | None = None
+                   ) -> np.ndarray:
+        """The (n_θ, n_z + 1) additive film-thickness field of
+        :class:`conrod.film.base.FilmState` [m] from u at the bore nodes [m]: δ(θ_j)
+        repeated over ``n_axial_nodes`` for a plane housing (it deforms alike at every z),
+        u(θ_j, z_k) itself over the width."""
+        if self.axial is None:
+            assert n_axial_nodes is not None, "a plane housing needs the film's axial nodes"
+            return np.repeat(np.asarray(deformation)[:, None], n_axial_nodes, axis=1)
+        return self.field_view(deformation)
 
     # ------------------------------------------------------------------ structure side
     @cached_property

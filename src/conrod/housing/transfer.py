@@ -24,6 +24,11 @@ intervals).
 
 Hence C_bore = Bᵀ K⁻¹ B is symmetric (Betti) and positive definite by construction.
 A 2-D model deforms the same at every z, so the film uses u_j at every axial node.
+
+**Nodes over the width** (a 3-D compliance, :mod:`conrod.housing.nodes3d`): the film nodes
+(θ_j, z_k) are each a bore node, with the nodal force f_jk = R Δθ_j w_k p(θ_j, z_k) (w_k
+the trapezoidal weight of z_k, :func:`axial_weights`) and the displacement u_jk seen by the
+film at that node alone (:func:`node_forces`).
 """
 
 from __future__ import annotations
@@ -109,3 +114,24 @@ def nodal_forces(pressure: np.ndarray, z: np.ndarray, angles: np.ndarray, radius
     if pressure_angles is not None:
         line_load = interpolation_matrix(np.asarray(pressure_angles), angles) @ line_load
     return radius * arc_weights(angles) * line_load
+
+
+def axial_weights(z: np.ndarray) -> np.ndarray:
+    """w_k: the trapezoidal weights of the axial nodes z (Σ w_k = z_max − z_min) [m]."""
+    gaps = np.diff(np.asarray(z, dtype=float))
+    weights = np.zeros(len(z))
+    weights[:-1] += 0.5 * gaps
+    weights[1:] += 0.5 * gaps
+    return weights
+
+
+def node_weights(angles: np.ndarray, z: np.ndarray, radius: float) -> np.ndarray:
+    """W (n_θ, n_z) = R Δθ_j w_k: the area of film node (θ_j, z_k) [m²]."""
+    return (radius * arc_weights(angles))[:, None] * axial_weights(z)[None, :]
+
+
+def node_forces(pressure: np.ndarray, z: np.ndarray, angles: np.ndarray,
+                radius: float) -> np.ndarray:
+    """Film nodal forces per node f_jk = R Δθ_j w_k p(θ_j, z_k) [N], flattened row-major
+    (j, then k), from p (n_θ, n_z + 1) [Pa] on the film nodes θ [rad], z [m]."""
+    return (node_weights(angles, z, radius) * pressure).ravel()

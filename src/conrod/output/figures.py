@@ -157,4 +157,16 @@ def _elastic_figures(results: ElasticRunResults) -> tuple[FigureSpec, ...]:
                        "load of the same resultant.",
                        lambda: _plots("ehd_plots").plot_von_mises(results, "cosine")),
 )
-    return _run_figures(results.elastic) + own
+    return _run_figures(results.elastic) + own + _bore_field_figures(results)
+
+
+def _bore_field_figures(results: ElasticRunResults) -> tuple[FigureSpec, ...]:
+    """u(θ, z) of a housing that deforms along the width (none for a plane housing)."""
+    if results.deformation_field is None:
+        return ()
+    return (FigureSpec("bore_deformation_width.png", "Bore deformation along the width",
+                       "Corrected radial bore displacement u [µm] over θ [deg] and z [mm] at "
+                       "the largest load and the smallest h_min, whole and less its "
+                       "width-mean, and the film thickness h [µm] across the width at the "
+                       "angle of the smallest film.",
+                       lambda: _plots("bore_field_plots").plot_bore_field(results)),)

@@ -94,12 +94,15 @@ def plot_deformed_film_maps(results) -> Figure:
     i = int(np.argmax(elastic.cycle.p_max))
     cycle = elastic.cycle
     h = (results.clearance - cycle.eccentricity_x[i] * np.cos(theta)
-         - cycle.eccentricity_y[i] * np.sin(theta) + results.deformation[i])
+         - cycle.eccentricity_y[i] * np.sin(theta))[:, None] + (
+        results.deformation[i][:, None] if results.deformation_field is None
+        else results.deformation_field[i])
     pressure = elastic.pressure_at_p_max
     peak = np.degrees(theta[np.unravel_index(np.argmax(pressure), pressure.shape)[0]])
     theta_deg = np.degrees(theta)
     for ax, (field, label, cmap) in zip(axes, (
-            (np.repeat(h[:, None], len(z), axis=1) * UM, "film thickness h [µm]", "viridis"),
+            (np.broadcast_to(h, (len(theta), len(z))) * UM, "film thickness h [µm]",
+             "viridis"),
             (pressure * MPA, "pressure p [MPa]", "inferno")), strict=True):
         angles, rolled = _centred(theta_deg, field, peak)
         mesh = ax.pcolormesh(angles, z * 1e3, rolled.T, shading="auto", cmap=cmap)

@@ -34,13 +34,17 @@ class ElasticRunResults:
 
     elastic : RunResults  The answer on the deforming bore.
     columns : dict  Coupling diagnostics per output crank angle (names with units).
-    deformation : ndarray  Corrected bore displacement (n_out, n_θ) [m], outward +.
+    deformation : ndarray  Corrected bore displacement (n_out, n_θ) [m], outward +; for a
+        housing that deforms along the width, its mean over the width.
     bore_angles : ndarray  Bore-node angles θ [rad].
     housing : object  The :class:`conrod.housing.housing.Housing` used.
     rigid : RunResults or None  The rigid companion run (None when skipped).
     info : dict  Coupling settings and totals for summary.json.
     peak_load_index : int  Output row of the largest load [-].
     peak_load_pressure : ndarray or None  Film pressure p(θ, z) there [Pa].
+    deformation_field : ndarray or None  Corrected bore displacement u(θ, z)
+        (n_out, n_θ, n_z + 1) [m] of a housing that deforms along the width (a 3-D
+        compliance); None for a plane housing, whose deformation is uniform in z.
     """
 
     elastic: RunResults
@@ -52,6 +56,28 @@ class ElasticRunResults:
     info: dict | None = None
     peak_load_index: int = 0
     peak_load_pressure: np.ndarray | None = None
+    deformation_field: np.ndarray | None = None
+
+    @property
+    def axial_positions(self) -> np.ndarray | None:
+        """z_k of ``deformation_field`` [m] from the bearing mid-plane; None when plane."""
+        return None if self.deformation_field is None else self.housing.axial
+
+    def gap_field(self, index: int) -> np.ndarray:
+        """Film thickness on the deformed bore h(θ, z) = c − e_x cos θ − e_y sin θ + u(θ, z)
+        (n_θ, n_z + 1) [m] at output row ``index`` (needs ``deformation_field``)."""
+        assert self.deformation_field is not None, "a plane housing has no u(θ, z)"
+        return self._rigid_gap(index)[:, None] + self.deformation_field[index]
+
+    def mean_gap(self, index: int) -> np.ndarray:
+        """Film thickness per row on the bore deformed by ``deformation`` (the width-mean of
+        a 3-D bore), c − e_x cos θ − e_y sin θ + ū(θ) (n_θ,) [m] at output row ``index``."""
+        return self._rigid_gap(index) + self.deformation[index]
+
+    def _rigid_gap(self, index: int) -> np.ndarray:
+        cycle, theta = self.cycle, self.bore_angles
+        return (self.clearance - cycle.eccentricity_x[index] * np.cos(theta)
+                - cycle.eccentricity_y[index] * np.sin(theta))
 
     @property
     def cycle(self):
@@ -109,6 +135,10 @@ class ElasticRunResults:
                 f"({100.0 * (e.h_min - r.h_min) / r.h_min:+.1f} %), p_max "
                 f"{r.p_max / 1e6:.1f} → {e.p_max / 1e6:.1f} MPa "
                 f"({100.0 * (e.p_max - r.p_max) / r.p_max:+.1f} %)")
+        if self.deformation_field is not None:
+            field = self.deformation_field
+            lines["bore"] = (f"deforms along the width: u(θ, z) at {field[0].size} film nodes, "
+                             f"{field.min() * 1e6:.1f} … {field.max() * 1e6:.1f} µm")
         iterations = self.columns.get("coupling_iterations")
         if iterations is not None and len(iterations):
             updates = self.columns.get("newton_updates")

@@ -85,13 +85,17 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
             isinstance(film, HasContentStep) or (film.settings.deformation_rate
                                               and film.base.name == "reynolds")),
     }
+    if not film.housing.uniform_in_z:  # a 3-D compliance: bore nodes over the width
+        info["bore_nodes"] = film.housing.node_count
+        info["bore_axial_nodes"] = len(film.housing.axial)
     summary = dataclasses.replace(results.summary, wall_time=time.perf_counter() - start)
     return ElasticRunResults(
         elastic=dataclasses.replace(results, summary=summary), columns=diagnostics.columns,
         deformation=diagnostics.deformation, bore_angles=diagnostics.angles,
         housing=film.housing, rigid=rigid, info=info,
         peak_load_index=diagnostics.peak_load_index,
-        peak_load_pressure=diagnostics.peak_load_pressure)
+        peak_load_pressure=diagnostics.peak_load_pressure,
+        deformation_field=diagnostics.field)
 
 
 def _staged(progress, prefix: str):

@@ -25,6 +25,12 @@ TEST_DIRECTIONS_DEG = (0.0, 90.0, 180.0, 270.0)
 
 def housing_study(housing: Any, case: Case) -> HousingResults:
     """Summary, bore under the test loads and under the rod's inertia of ``housing``."""
+    if not housing.uniform_in_z:  # test loads and figures are per film row
+        from conrod.errors import CaseError
+
+        raise CaseError(f"housing.compliance_file: a 3-D compliance ({housing.node_count} "
+                        "film nodes over the width) is not summarised by conrod housing "
+                        "(allowed: a plane housing); conrod run draws its u(θ, z)")
     return HousingResults(housing, housing_summary(housing, case), TEST_LOAD,
                           _test_loads(housing), _inertia_cases(housing))
 

@@ -15,7 +15,10 @@ step) does not move. For a fixed set,
 .. math:: ∂R/∂x\\;∂x/∂u_r = −∂R/∂u_r
 
 is one sparse LU and n back-substitutions, and the nodal forces f_j = Σ_k W_jk p(θ_j, z_k)
-follow linearly. Unlike the Reynolds response (:mod:`conrod.film.reynolds.response`), the
+follow linearly. A displacement u_jk of a single film node (a housing that deforms along the
+width; ``nodal`` w per node, flattened row-major) moves h at that node alone: its faces by
+half of a row's move, its own capacity by κ ϑ; summed over k it is the row's response.
+Unlike the Reynolds response (:mod:`conrod.film.reynolds.response`), the
 film fraction of the broken-film cells and its transport are in it, which is what makes
 the coupled Newton iteration converge in a few steps.
 """
@@ -42,14 +45,18 @@ def content_step_response(film: Any, state, solved, nodal: np.ndarray,
     position, so the velocity blocks are zero."""
     dx, dz = film.spacing()
     viscous = 12.0 * state.viscosity * dx * dz / rate_step
+    per_node = nodal.ndim == 1
     d_pressure = pressure_by_bore(film.fields(state), solved.pressure, solved.fraction,
-                                  viscous)
-    nodal_response = np.einsum("rjk,jk->jr", d_pressure, nodal)
+                                  viscous, per_node)
+    if per_node:
+        nodal_response = (d_pressure.reshape(d_pressure.shape[0], -1) * nodal[None, :]).T
+    else:
+        nodal_response = np.einsum("rjk,jk->jr", d_pressure, nodal)
     theta, _ = film.grid()
     trig = np.stack([np.cos(theta), np.sin(theta)], axis=1)
     force = force_by_bore(d_pressure, axial_weights(solved.pressure.shape[1], dz),
                           trig[:, 0], trig[:, 1], film.geometry.radius)
-    return FilmResponse(nodal_response, np.zeros((nodal.shape[0], 2)), force,
+    return FilmResponse(nodal_response, np.zeros((nodal_response.shape[0], 2)), force,
                         np.zeros((2, 2)))
 
 
@@ -63,9 +70,11 @@ def force_by_bore(d_pressure: np.ndarray, line_weights: np.ndarray,
 
 
 def pressure_by_bore(fields, pressure: np.ndarray, fraction: np.ndarray,
-                     capacity_per_thickness: float) -> np.ndarray:
+                     capacity_per_thickness: float, per_node: bool = False) -> np.ndarray:
     """∂p/∂u_r (n, n_θ, n_z + 1) [Pa/m] of the content step on its converged cavitation
-    set (module docstring); zero on the cells at the cavitation pressure."""
+    set (module docstring); zero on the cells at the cavitation pressure. u_r moves a whole
+    film row r (n = n_θ), or with ``per_node`` the single film node r = j (n_z + 1) + k
+    (n = n_θ (n_z + 1))."""
     forward = bool(fields.couette_east[0, fields.h.shape[1] // 2] >= 0.0)
     free = fields.free
     full = free & (pressure > 0.0)
@@ -74,7 +83,8 @@ def pressure_by_bore(fields, pressure: np.ndarray, fraction: np.ndarray,
     index = -np.ones(pressure.shape, dtype=np.int64)
     index[unknown] = np.arange(int(unknown.sum()))
     matrix = _unknown_matrix(fields, full, partial, index, capacity_per_thickness, forward)
-    rows = _bore_derivatives(fields, pressure, fraction, capacity_per_thickness, forward)
+    derivatives = _node_derivatives if per_node else _bore_derivatives
+    rows = derivatives(fields, pressure, fraction, capacity_per_thickness, forward)
     right = -rows[:, unknown]  # (n_bore, n_unknown)
     n_bore = rows.shape[0]
     d_pressure = np.zeros((n_bore,) + pressure.shape)
@@ -159,5 +169,40 @@ def _bore_derivatives(fields, pressure, fraction, kappa: float, forward: bool) -
     result[rows, rows, :] += flow_north
     result[rows, rows, 1:] -= flow_north[:, :-1]
     result[rows, rows, :] += kappa * fraction
+    free = fields.free
+    return np.where(free[None, :, :], result, 0.0)
+
+
+def _node_derivatives(fields, pressure, fraction, kappa: float, forward: bool) -> np.ndarray:
+    """∂R/∂u_jk (n_θ (n_z + 1), n_θ, n_z + 1) at fixed unknowns: u_jk moves h at the film
+    node (j, k) alone, each of its faces by half (:func:`_bore_derivatives` per node)."""
+    h = fields.h
+    n, m = h.shape
+    h_east = 0.5 * (h + np.roll(h, -1, axis=0))
+    h_north = h.copy()
+    h_north[:, :-1] = 0.5 * (h[:, :-1] + h[:, 1:])
+    da_east = 1.5 * fields.a_east / h_east       # ∂a_e/∂h of either node of the face
+    dc_east = 0.5 * fields.couette_east / h_east
+    da_north = 1.5 * fields.a_north / h_north     # ∂a_n/∂h of either node of the face
+    p = pressure
+    up = fraction if forward else np.roll(fraction, -1, axis=0)
+    result = np.zeros((n * m, n, m))
+    j, k = np.divmod(np.arange(n * m), m)
+    # east face (i, i + 1) at level k: the nodes (i, k) and (i + 1, k) move it; it enters
+    # R_i (+) and R_{i+1} (−)
+    flow_east = (da_east * (p - np.roll(p, -1, axis=0)) + dc_east * up)
+    for owner_row in (j, (j - 1) % n):  # the node's own east face, and its west face
+        face = flow_east[owner_row, k]
+        np.add.at(result, (np.arange(n * m), owner_row, k), face)
+        np.add.at(result, (np.arange(n * m), (owner_row + 1) % n, k), -face)
+    # north face (k, k + 1) of row j: the nodes (j, k) and (j, k + 1) move it
+    flow_north = np.zeros((n, m))
+    flow_north[:, :-1] = da_north[:, :-1] * (p[:, :-1] - p[:, 1:])
+    for owner_level, valid in ((k, k < m - 1), (k - 1, k > 0)):
+        node = np.flatnonzero(valid)
+        face = flow_north[j[node], owner_level[node]]
+        np.add.at(result, (node, j[node], owner_level[node]), face)
+        np.add.at(result, (node, j[node], owner_level[node] + 1), -face)
+    result[np.arange(n * m), j, k] += kappa * fraction[j, k]
     free = fields.free
     return np.where(free[None, :, :], result, 0.0)

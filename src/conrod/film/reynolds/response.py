@@ -5,14 +5,18 @@ to the film thickness (:class:`~conrod.film.capabilities.HasPressureEvaluation`,
 On its converged active set A (free nodes with p > p_cav) the Swift–Stieber pressure solves
 a linear system K_AA(h) p_A = b(h, ḣ) (:mod:`conrod.film.linearised`). A displacement u_j of
 film row j changes h by u_j at every axial node of the row (a 2-D housing deforms alike at
-every z) and, when the rate is in the squeeze term, ḣ by u_j/τ_r; a journal velocity v
-changes ḣ by −(v_x cos θ + v_y sin θ). For a fixed active set each direction q costs one
-back-substitution with the same sparse LU factor:
+every z) and, when the rate is in the squeeze term, ḣ by u_j/τ_r; a displacement u_jk of
+one film node (a housing that deforms along the width) changes h and ḣ at that node alone;
+a journal velocity v changes ḣ by −(v_x cos θ + v_y sin θ). For a fixed active set each
+direction q costs one back-substitution with the same sparse LU factor:
 
 .. math:: K_{AA}\\,∂p_A/∂q = −\\big(∂K/∂q\\,p − ∂b/∂q\\big)_A
 
-and the nodal loads f_j = Σ_k W_jk p(θ_j, z_k) and the film force F = −(w_x, w_y)·p follow
-linearly. This is the derivative of the discrete film wherever the active set does not
+and the nodal loads — per row f_j = Σ_k W_jk p(θ_j, z_k) (``nodal`` W of shape
+(n_θ, n_z + 1)), per node f_jk = w_jk p(θ_j, z_k) (``nodal`` w flattened row-major, shape
+(n_θ (n_z + 1),)) — and the film force F = −(w_x, w_y)·p follow linearly. The per-row
+response is the sum over k of the per-node one. This is the derivative of the discrete
+film wherever the active set does not
 switch under an infinitesimal move, which makes a Newton iteration of the film with a
 deforming bore converge in a few steps (semismooth Newton where it switches).
 """
@@ -23,21 +27,24 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from scipy.linalg import lu_factor, lu_solve
 from scipy.sparse.linalg import splu
 
 from conrod.film.base import FilmResult
 from conrod.film.linearised import active_matrix
 from conrod.film.reynolds import kernel as kernel
 from conrod.film.reynolds.memory import ReynoldsMemory
-from conrod.film.reynolds.response_kernel import bore_row_imbalance
+from conrod.film.reynolds.response_kernel import bore_node_imbalance, bore_row_imbalance
 from conrod.film.step_system import FilmResponse
 
 
 def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray,
                        rate_step: float | None) -> FilmResponse:
     """∂f/∂u, ∂f/∂v, ∂F/∂u, ∂F/∂v of the isoviscous Reynolds ``film`` at the converged
-    ``pressure`` [Pa] of the (deformed) ``state``; ``nodal`` W (n, n_z + 1) [m²];
-    ``rate_step`` τ_r [s] of the rate in the squeeze term (None: no rate term)."""
+    ``pressure`` [Pa] of the (deformed) ``state``; ``nodal`` W (n_θ, n_z + 1) [m²] for
+    displacements of whole film rows, or w (n_θ (n_z + 1),) [m²] for displacements of single
+    film nodes (row-major); ``rate_step`` τ_r [s] of the rate in the squeeze term (None: no
+    rate term)."""
     problem = film.discrete_problem(state)
     grid = film.film_grid
     omega_sum = state.journal_speed + state.shell_speed
@@ -49,31 +56,68 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
         active = ~problem.fixed
     n_theta, n_nodes = pressure.shape
     shape = (n_theta, n_nodes)
-    n_bore = nodal.shape[0]
     rate = 0.0 if rate_step is None else 1.0 / rate_step
-    rows = bore_row_imbalance(pressure, problem.h, rate, grid.radius, grid.d_theta,
-                              grid.d_z, omega_sum, state.viscosity)
+    bore_part = (_node_directions if nodal.ndim == 1 else _row_directions)(
+        pressure, problem.h, rate, grid, omega_sum, state.viscosity, nodal.shape[0])
+    n_bore = bore_part.shape[0]
     imbalance = np.zeros((n_bore + 2,) + shape)
-    bore = np.arange(n_bore)
-    for shift in range(3):
-        imbalance[bore, (bore - 1 + shift) % n_theta, :] = rows[:, shift, :]
+    imbalance[:n_bore] = bore_part
     zero = np.zeros(shape)
     for k, trig in enumerate(film.node_directions):
         dh_rate = -np.ascontiguousarray(np.broadcast_to(trig[:, None], shape))
         imbalance[n_bore + k] = _imbalance(pressure, problem.h, zero, dh_rate, grid,
                                            omega_sum, state.viscosity)
-    d_pressure = np.zeros((n_bore + 2,) + shape)
+    d_pressure = np.zeros(imbalance.shape)
     matrix, nodes = active_matrix(a_east, a_north, active)
-    factor = splu(matrix, permc_spec="MMD_AT_PLUS_A")  # K_AA is symmetric
     right = -imbalance[:, nodes[0], nodes[1]]
-    for q in range(n_bore + 2):  # one column at a time: SuperLU's blocked solve is ~20x slower
-        d_pressure[q, nodes[0], nodes[1]] = factor.solve(np.ascontiguousarray(right[q]))
+    if nodal.ndim == 1 and right.shape[0] > right.shape[1]:
+        # more directions than active nodes (a node per film node): one dense LU and one
+        # blocked solve, 3x faster than as many sparse back-substitutions
+        factor = lu_factor(matrix.toarray())
+        d_pressure[:, nodes[0], nodes[1]] = lu_solve(factor, right.T).T
+    else:
+        factor = splu(matrix, permc_spec="MMD_AT_PLUS_A")  # K_AA is symmetric
+        for q in range(len(right)):  # one column at a time: SuperLU's blocked solve is slow
+            d_pressure[q, nodes[0], nodes[1]] = factor.solve(np.ascontiguousarray(right[q]))
     w_x, w_y = film.force_weights
     force = -np.stack([np.einsum("qik,ik->q", d_pressure, w_x),
                        np.einsum("qik,ik->q", d_pressure, w_y)])
-    nodal_response = np.einsum("qjk,jk->jq", d_pressure, nodal)
+    if nodal.ndim == 1:
+        nodal_response = (d_pressure.reshape(len(d_pressure), -1) * nodal[None, :]).T
+    else:
+        nodal_response = np.einsum("qjk,jk->jq", d_pressure, nodal)
     return FilmResponse(nodal_response[:, :n_bore], nodal_response[:, n_bore:],
                         force[:, :n_bore], force[:, n_bore:])
+
+
+def _row_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> np.ndarray:
+    """∂r/∂u_j (n_bore, n_θ, n_z + 1) of whole film rows [Pa m^3]."""
+    n_theta = pressure.shape[0]
+    rows = bore_row_imbalance(pressure, h, rate, grid.radius, grid.d_theta, grid.d_z,
+                              omega_sum, viscosity)
+    imbalance = np.zeros((n_bore,) + pressure.shape)
+    bore = np.arange(n_bore)
+    for shift in range(3):
+        imbalance[bore, (bore - 1 + shift) % n_theta, :] = rows[:, shift, :]
+    return imbalance
+
+
+def _node_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> np.ndarray:
+    """∂r/∂u_jk (n_bore = n_θ (n_z + 1), n_θ, n_z + 1) of single film nodes, row-major
+    [Pa m^3]."""
+    n_theta, n_nodes = pressure.shape
+    stencil = bore_node_imbalance(pressure, h, rate, grid.radius, grid.d_theta, grid.d_z,
+                                  omega_sum, viscosity)
+    imbalance = np.zeros((n_bore, n_theta, n_nodes))
+    node = np.arange(n_bore)
+    j, k = np.divmod(node, n_nodes)
+    np.add.at(imbalance, (node, j, k), stencil[j, k, 0])
+    np.add.at(imbalance, (node, (j - 1) % n_theta, k), stencil[j, k, 1])
+    np.add.at(imbalance, (node, (j + 1) % n_theta, k), stencil[j, k, 2])
+    low, high = k > 0, k < n_nodes - 1
+    np.add.at(imbalance, (node[low], j[low], k[low] - 1), stencil[j[low], k[low], 3])
+    np.add.at(imbalance, (node[high], j[high], k[high] + 1), stencil[j[high], k[high], 4])
+    return imbalance
 
 
 def _imbalance(pressure, h, dh, dh_rate, grid, omega_sum, viscosity) -> np.ndarray:

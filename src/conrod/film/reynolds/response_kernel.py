@@ -54,3 +54,49 @@ def bore_row_imbalance(pressure: np.ndarray, h: np.ndarray, rate: float, radius:
                 value += 3.0 * h_s * h_s * arc / d_z * (pressure[j, k] - pressure[j, k - 1])
             out[j, 1, k] = value + 12.0 * viscosity * width * rate * arc
     return out
+
+
+@nb.njit(cache=True)
+def bore_node_imbalance(pressure: np.ndarray, h: np.ndarray, rate: float, radius: float,
+                        d_theta: float, d_z: float, omega_sum: float,
+                        viscosity: float) -> np.ndarray:
+    """E (n_θ, n_z + 1, 5): E[j, k, s] = ∂r[node s of the stencil]/∂u_jk [Pa m^3] for a
+    displacement u_jk of the single film node (j, k) (h and, with ``rate`` = ∂ḣ/∂u [1/s],
+    ḣ raised there alone); the stencil s = 0 the node itself, 1 the node j − 1, 2 the node
+    j + 1 (both periodic), 3 the node k − 1, 4 the node k + 1 (zero beyond the edges).
+
+    A face conductance depends on the mean of its two nodes, so u_jk moves each of the
+    four faces of (j, k) by half of a row's move: ∂a^E = 3h_e² w/(2RΔθ), ∂a^N = 3h_n²
+    RΔθ/(2Δz); the wedge sources of j ∓ 1 change by ∓3μwU as for a row, the node's own
+    source by the rate. Summed over k, E gives the row response of
+    :func:`bore_row_imbalance`."""
+    n_theta, n_nodes = h.shape
+    arc = radius * d_theta
+    surface_speed = radius * omega_sum
+    out = np.zeros((n_theta, n_nodes, 5))
+    for j in range(n_theta):
+        jm = (j - 1) % n_theta
+        jp = (j + 1) % n_theta
+        for k in range(n_nodes):
+            width = d_z if 0 < k < n_nodes - 1 else 0.5 * d_z
+            h_west = 0.5 * (h[jm, k] + h[j, k])
+            h_east = 0.5 * (h[j, k] + h[jp, k])
+            d_west = 1.5 * h_west * h_west * width / arc
+            d_east = 1.5 * h_east * h_east * width / arc
+            wedge = 6.0 * viscosity * width * surface_speed * 0.5
+            out[j, k, 1] = d_west * (pressure[jm, k] - pressure[j, k]) + wedge
+            out[j, k, 2] = d_east * (pressure[jp, k] - pressure[j, k]) - wedge
+            value = (d_east * (pressure[j, k] - pressure[jp, k])
+                     + d_west * (pressure[j, k] - pressure[jm, k]))
+            if k < n_nodes - 1:
+                h_n = 0.5 * (h[j, k] + h[j, k + 1])
+                d_north = 1.5 * h_n * h_n * arc / d_z
+                value += d_north * (pressure[j, k] - pressure[j, k + 1])
+                out[j, k, 4] = d_north * (pressure[j, k + 1] - pressure[j, k])
+            if k > 0:
+                h_s = 0.5 * (h[j, k] + h[j, k - 1])
+                d_south = 1.5 * h_s * h_s * arc / d_z
+                value += d_south * (pressure[j, k] - pressure[j, k - 1])
+                out[j, k, 3] = d_south * (pressure[j, k - 1] - pressure[j, k])
+            out[j, k, 0] = value + 12.0 * viscosity * width * rate * arc
+    return out
