@@ -300,12 +300,24 @@ class SupportsDeformationRate(Protocol):
 
 
 def refuse_deformation(state: FilmState, name: str) -> None:
-    """CaseError when ``state`` carries a deformation the film ``name`` cannot honour."""
+    """CaseError when ``state`` carries a deformation the film ``name`` cannot honour, or a
+    journal tilt (:func:`refuse_tilt`): a film uniform along the width honours neither."""
+    refuse_tilt(state, name)
     if state.deformation is not None:
         raise CaseError(
             f"film = {name!r} cannot take a deformation field δ(θ, z) (allowed: a film "
             "model that honours it: 'reynolds' or 'mass_conserving')"
 )
+
+
+def refuse_tilt(state: FilmState, name: str) -> None:
+    """CaseError when ``state`` tilts the journal and the film ``name`` cannot honour it
+    (the short-bearing closed form and the maps are for an aligned journal)."""
+    if state.tilted:
+        raise CaseError(
+            f"film = {name!r} cannot take a journal tilt (tilt_x = {state.tilt_x:g}, tilt_y = "
+            f"{state.tilt_y:g} rad; allowed: a grid film that resolves the width, "
+            "'reynolds' or 'mass_conserving')")
 
 
 def film_memory(film: Any) -> Any:
