@@ -26,6 +26,8 @@ declares what its inner model declares by delegating the methods.
   characteristics computed once for the accepted one;
 * :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
   integrator's Newton matrix);
+* :class:`HasTiltJacobian` — the film's own ∂(F, M)/∂(e, γ, ė, γ̇) (the implicit step of a
+  tilted journal);
 * :class:`HasSensitivities` — force, stiffness and damping from the film's own solver;
 * :class:`HasFlightKernel` — a compiled force and Jacobian with a warm start that the
   implicit orbit integrator runs inside its compiled free flight;
@@ -188,6 +190,19 @@ class HasForceJacobian(Protocol):
                                                                         Any]:
         """(F (2,) [N], J (2, 4), memory after the solve) at ``state`` from ``memory``
         (None for a memoryless film)."""
+        ...
+
+
+@runtime_checkable
+class HasTiltJacobian(Protocol):
+    """A film that gives the derivatives of its force and tilting moments
+    Q = (F_x, F_y, M_x, M_y) with respect to the journal's position, tilt and their rates,
+    ∂Q/∂(e_x, e_y, γ_x, γ_y, ė_x, ė_y, γ̇_x, γ̇_y) (4 × 8), from its own solver: the
+    implicit step of a tilted journal uses it (:mod:`conrod.orbit.tilt_systems`)."""
+
+    def tilt_jacobian(self, state: FilmState, memory: Any) -> tuple[np.ndarray, np.ndarray,
+                                                                      Any]:
+        """(Q (4,) [N, N m], ∂Q/∂(q, q̇) (4 × 8), memory after the solve) at ``state``."""
         ...
 
 

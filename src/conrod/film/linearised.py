@@ -215,12 +215,16 @@ ADJOINT_TOLERANCE = 1.0e-12
 
 
 def linearise_reynolds(film, state: FilmState, method: str = "adjoint",
-                       memory=None, tilt: bool = False) -> FilmLinearisation:
+                       memory=None, tilt: bool = False,
+                       adjoint_tolerance: float = ADJOINT_TOLERANCE,
+                       idle_full_film: bool = False) -> FilmLinearisation:
     """Exact derivatives of a :class:`~conrod.film.reynolds.film.ReynoldsFilm` force (with
     ``tilt`` also of its moments, and by the tilt angles and rates) on the converged active
     set (module docstring): one film solve (warm-started from the film ``memory`` when
     given), then two (tilt: four) adjoint multigrid solves (``method="adjoint"``) or one
-    sparse LU (``"direct"``)."""
+    sparse LU (``"direct"``). ``idle_full_film``: a film without pressure (a journal at
+    rest) is linearised on the full-film branch (all free nodes), the derivative of the
+    pressure that any motion starts; else its derivatives are zero."""
     if method not in ("adjoint", "direct"):
         raise CaseError(f"method = {method!r}: allowed 'adjoint' or 'direct'")
     problem = film.discrete_problem(state)
@@ -233,6 +237,8 @@ def linearise_reynolds(film, state: FilmState, method: str = "adjoint",
         problem.h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum,
         state.viscosity)
     active = ~problem.fixed & (pressure > film.geometry.cavitation_pressure)
+    if idle_full_film and not active.any():
+        active = ~problem.fixed
     weights = film.force_weights + (film.moment_weights if tilt else ())
     force = np.array([-np.sum(pressure * w) for w in weights])
     directions = _directions(film, state, tilt)
@@ -252,12 +258,29 @@ def linearise_reynolds(film, state: FilmState, method: str = "adjoint",
         else:
             symmetric = film.symmetric and state.deformation is None and not state.tilted
             for row, w in enumerate(weights):
-                adjoint = _adjoint(film, problem.h, w, ~active, symmetric and row < 2)
+                adjoint = _adjoint(film, problem.h, w, ~active, symmetric and row < 2,
+                                   adjoint_tolerance)
                 jacobian[row, :4] = np.tensordot(d_residuals[:4], adjoint * active, axes=2)
                 if tilt:
                     jacobian[row, 4:] = np.tensordot(d_residuals[4:], adjoint * active,
                                                      axes=2)
     return _linearisation(force, jacobian, abs(omega_sum), film.geometry.radial_clearance)
+
+
+def tilt_jacobian(film, state: FilmState, memory, tolerance: float | None = None,
+                  tilt: bool = True) -> tuple[np.ndarray, np.ndarray, object]:
+    """(Q (4,) [N, N m], ∂Q/∂(e, γ, ė, γ̇) (4 × 8), memory) of a Reynolds film at ``state``
+    (``tilt`` False: (F (2,), ∂F/∂(e, ė) (2 × 4), memory)); adjoints to ``tolerance``."""
+    if film.pressure_viscosity is not None:
+        lin = linearise_by_differences(film, state, tilt=tilt)
+    else:
+        lin = linearise_reynolds(film, state, memory=memory, tilt=tilt,
+                                 adjoint_tolerance=tolerance or ADJOINT_TOLERANCE,
+                                 idle_full_film=True)
+    if not tilt:
+        return lin.force, np.hstack([-lin.stiffness, -lin.damping]), memory
+    return (np.concatenate([lin.force, lin.moment]),
+            np.hstack([-lin.full_stiffness, -lin.full_damping]), memory)
 
 
 def _linearisation(generalised: np.ndarray, jacobian: np.ndarray, speed: float,
@@ -275,17 +298,18 @@ def _linearisation(generalised: np.ndarray, jacobian: np.ndarray, speed: float,
 
 
 def _adjoint(film, h: np.ndarray, weights: np.ndarray, masked: np.ndarray,
-              symmetric: bool) -> np.ndarray:
-    """λ with K_AA λ = weights on the active nodes, λ = 0 on ``masked`` ones [m^-2]."""
+              symmetric: bool, tolerance: float = ADJOINT_TOLERANCE) -> np.ndarray:
+    """λ with K_AA λ = weights on the active nodes, λ = 0 on ``masked`` ones [m^-2]
+    (multigrid to the relative change ``tolerance``)."""
     from conrod.errors import ConvergenceError
     from conrod.film.reynolds import multigrid as multigrid
 
     adjoint = np.zeros(h.shape)
     source = np.where(masked, 0.0, weights)
     cycles, change = multigrid.solve_on_grid(
-        adjoint, h, source, masked, film.film_grid, -np.inf, ADJOINT_TOLERANCE,
+        adjoint, h, source, masked, film.film_grid, -np.inf, tolerance,
         film.max_iterations, symmetric)
-    if not change <= ADJOINT_TOLERANCE:
+    if not change <= tolerance:
         raise ConvergenceError(f"adjoint multigrid after {cycles} cycles",
                                where="film sensitivities", residual=change)
     return adjoint

@@ -82,7 +82,7 @@ class AdaptiveIntegrator:
         with a fixed step."""
         from conrod.orbit.adaptive import adaptive_cycle
 
-        if needs_journal_step(problem.film):
+        if needs_journal_step(problem.film) or problem.tilt is not None:
             return _fixed_step_cycle(problem, state, settings)
         if problem.has_film_content:
             raise CaseError(
@@ -149,8 +149,13 @@ class HeunIntegrator:
     journal_step: bool = False
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
-        """One cycle of fixed-step Heun integration."""
+        """One cycle of fixed-step Heun integration (an aligned journal only)."""
         from conrod.orbit.rk2 import rk2_cycle
+
+        if problem.tilt is not None:
+            raise CaseError("solver.integrator = 'rk2' with [misalignment]: the explicit "
+                            "steps do not carry the journal's tilt (allowed: auto, implicit, "
+                            "adaptive, quasi_static)")
 
         return rk2_cycle(problem, state, settings.step_deg, settings.output_step_deg)
 
@@ -166,8 +171,13 @@ class QuasiStaticIntegrator:
     journal_step: bool = True
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
-        """One cycle of the massless orbit."""
+        """One cycle of the massless orbit; a tilted journal takes the implicit steps of
+        :mod:`conrod.orbit.tilt_steps` without mass or inertia."""
         from conrod.orbit.quasi_static import quasi_static_cycle
+
+        if problem.tilt is not None:
+            return implicit_step_cycle(problem, state, settings.quasi_static_step_deg,
+                                       settings.output_step_deg, with_mass=False)
 
         return quasi_static_cycle(problem, state, settings.quasi_static_step_deg,
                                   settings.output_step_deg)

@@ -222,7 +222,7 @@ def _implicit(chosen: Integrator, problem: OrbitProblem) -> bool:
     much as the one with mass (KamAZ-740, 36 × 8: periodic after 3 cycles from rest either
     way)."""
     return (declared(resolved(chosen, problem), "massless_start")
-            and not needs_journal_step(problem.film))
+            and not needs_journal_step(problem.film) and problem.tilt is None)
 
 
 def _massless_start(problem: OrbitProblem, settings) -> OrbitState | None:

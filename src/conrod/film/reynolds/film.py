@@ -193,20 +193,15 @@ class ReynoldsFilm:
         lin = linearise_reynolds(self, state, memory=memory)
         return lin.force, np.hstack([-lin.stiffness, -lin.damping]), memory
 
-    def tilt_jacobian(self, state: FilmState, memory: ReynoldsMemory):
+    def tilt_jacobian(self, state: FilmState, memory: ReynoldsMemory,
+                      tolerance: float | None = None, tilt: bool = True):
         """(Q = (F_x, F_y, M_x, M_y) [N, N m], ∂Q/∂(e, γ, ė, γ̇) (4 × 8), memory) from the
-        linearised solve with the tilt set, warm-started from ``memory``
-        (:class:`~conrod.film.capabilities.HasTiltJacobian`)."""
-        from conrod.film.linearised import linearise_reynolds
+        linearised solve with the tilt set, warm-started from ``memory``, adjoints solved to
+        ``tolerance`` (None: 1e-12) (:class:`~conrod.film.capabilities.HasTiltJacobian`);
+        ``tilt`` False: (F, ∂F/∂(e, ė) (2 × 4), memory) at the (tilted) state."""
+        from conrod.film.linearised import tilt_jacobian
 
-        if self.pressure_viscosity is not None:
-            from conrod.film.linearised import linearise_by_differences
-
-            lin = linearise_by_differences(self, state, tilt=True)
-        else:
-            lin = linearise_reynolds(self, state, memory=memory, tilt=True)
-        return (np.concatenate([lin.force, lin.moment]),
-                np.hstack([-lin.full_stiffness, -lin.full_damping]), memory)
+        return tilt_jacobian(self, state, memory, tolerance, tilt)
 
     def flight_kernel(self, memory: ReynoldsMemory | None, newton_tolerance: float):
         """Compiled force and Jacobian warm-started from ``memory`` for the implicit orbit
@@ -234,12 +229,13 @@ class ReynoldsFilm:
         return self.pressure_viscosity is None
 
     def thickness_response(self, state: FilmState, solved: Any, nodal: np.ndarray,
-                           rate_step: float | None):
-        """Response of the nodal loads and the force to the film thickness at the solve
-        ``solved`` (:func:`conrod.film.reynolds.response.thickness_response`)."""
+                           rate_step: float | None, tilt: tuple[float, float] | None = None):
+        """Response of the nodal loads and the force (with ``tilt`` = (τ, ℓ) also of the
+        moments, and by the edge velocities) to the film thickness at the solve ``solved``
+        (:func:`conrod.film.reynolds.response.thickness_response`)."""
         from conrod.film.reynolds.response import thickness_response
 
-        return thickness_response(self, state, solved.pressure, nodal, rate_step)
+        return thickness_response(self, state, solved.pressure, nodal, rate_step, tilt)
 
     @property
     def force_weights(self) -> tuple[np.ndarray, np.ndarray]:
