@@ -123,7 +123,10 @@ def read_periodic_table(path: Path, what: str, columns: tuple[str, str],
 
 
 def journal_tilt(case, loads: LoadCycle) -> JournalTilt | None:
-    """The :class:`JournalTilt` of the case's ``[misalignment]`` (None without one)."""
+    """The :class:`JournalTilt` of the case's ``[misalignment]`` (None without one), after
+    checking that a bore profile, fixed in the film frame, sits on a shell at rest there
+    (:func:`check_profile_frame`)."""
+    check_profile_frame(case, loads)
     section = getattr(case, "misalignment", None)
     if section is None:
         return None
@@ -154,3 +157,17 @@ def cycle_tilt(axial: dict | None, i: int) -> dict[str, float]:
         return {}
     return {name: float(axial[name][i])
             for name in ("tilt_x", "tilt_y", "tilt_rate_x", "tilt_rate_y")}
+
+
+def check_profile_frame(case, loads: LoadCycle) -> None:
+    """CaseError for a bore profile on a shell that turns in the film frame (ω_b ≠ 0 in the
+    load table): the films hold the profile fixed in that frame, which is the shell only when
+    the shell is at rest in it (a big end: the rod frame)."""
+    bearing = getattr(case, "bearing", None)
+    if bearing is None or (bearing.profile is None and bearing.profile_file is None):
+        return
+    if np.any(np.asarray(loads.shell_speed) != 0.0):
+        raise CaseError(
+            f"bearing.profile with a shell speed up to {np.abs(loads.shell_speed).max():g} "
+            "rad/s: the profile is fixed in the film (bearing) frame, where the shell must be "
+            "at rest (allowed: shell_speed = 0, e.g. the rod frame of a big end)")

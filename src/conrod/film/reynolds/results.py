@@ -41,9 +41,11 @@ def reynolds_characteristics(film: Any, problem: Any, reduced, pressure, state: 
     w_x, w_y = film.force_weights
     sum_x, sum_y, i_p, j_p, i_h, j_h = kernel.force_and_extremes(pressure, w_x, w_y, h)
     fx, fy = -sum_x, -sum_y
-    h_min, h_angle = chars.minimum_film_at(h, grid, i_h, j_h)
+    smooth = film.profile is None  # a profile may have kinks the parabola would overshoot
+    h_min, h_angle = (chars.minimum_film_at(h, grid, i_h, j_h) if smooth
+                      else (float(h[i_h, j_h]), float(grid.theta[i_h])))
     axial = axial_summary(h, i_h, grid, film.geometry.radial_clearance, pressure,
-                          film.moment_weights)
+                          film.moment_weights, refine=smooth)
     p_max, p_angle = chars.peak_pressure_at(pressure, grid, i_p, j_p)
     info = dict(info)
     info["cavitation_flow_m3_per_s"] = lost * to_flow
