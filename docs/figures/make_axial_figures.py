@@ -31,7 +31,8 @@ def tilt_convention() -> None:
     z = np.linspace(-0.5 * width, 0.5 * width, 5)
     for ax, (label, axis, offset) in zip(axes[:2], (
             ("x–z plane: tilt γ_y > 0 moves the axis at +z towards +x", "x", 1.0),
-            ("y–z plane: tilt γ_x > 0 moves the axis at +z towards −y", "y", -1.0))):
+            ("y–z plane: tilt γ_x > 0 moves the axis at +z towards −y", "y", -1.0)),
+            strict=True):
         ax.axhline(gap, color="0.4", lw=3)
         ax.axhline(-gap, color="0.4", lw=3)
         tilt = 0.08
