@@ -4,8 +4,8 @@ and a bore profile, against the aligned cylindrical bearing, per orbit cycle.
 Run from the repository root:  python benchmarks/axial_benchmarks.py [GRID]
 Writes benchmarks/axial_benchmarks.md. Case: examples/kamaz_740_truck_diesel.toml on a rigid
 bore with the finite-length Reynolds film (default 72×16), the orbit with mass (``auto``).
-Every row times cycles started from the end of a warm-up cycle; the fastest of
-:data:`REPEATS` counts (a shared machine), all rows in one run so the ratios compare.
+Every row times cycles started from the end of a warm-up cycle, the rows interleaved in
+:data:`REPEATS` rounds; the fastest cycle of each row counts (a shared machine).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 CASE = ROOT / "examples" / "kamaz_740_truck_diesel.toml"
-REPEATS = 3
+REPEATS = 4
 """Cycles timed per row after the warm-up cycle [-]."""
 
 PROFILE = {"crush_relief_depth": 12e-6, "crush_relief_extent": 20.0,
@@ -27,10 +27,13 @@ PROFILE = {"crush_relief_depth": 12e-6, "crush_relief_extent": 20.0,
 ROWS = [
     # label, case changes, target
     ("aligned, cylindrical bore (reference)", {}, "(reference)"),
-    ("bore profile (crush + end reliefs)", {"bearing": {"profile": PROFILE}},
+    ("uniform 1 nm profile: the profile's code path, the same film",
+     {"bearing": {"profile_file": str(ROOT / "benchmarks" / "data" / "uniform_1nm_profile.csv")}},
      "nothing measurable"),
-    ("prescribed tilt 0 (the tilted journal's steps, aligned)",
-     {"misalignment": {"tilt_x": 0.0}}, "(driver cost)"),
+    ("bore profile (crush + end reliefs; a different film)", {"bearing": {"profile": PROFILE}},
+     "-"),
+    ("prescribed tilt 0 (the tilted journal's path, aligned)",
+     {"misalignment": {"tilt_x": 0.0}}, "(cost of the path)"),
     ("prescribed tilt (0.2, 0.1) mrad", {"misalignment": {"tilt_x": 2e-4, "tilt_y": 1e-4}},
      "-"),
     ("tilt as 2 DOF: load 2 mm off mid-width, J = 0.02 kg m²",
@@ -52,41 +55,53 @@ def case_with(changes: dict):
     return Case.from_dict(data, base_dir=CASE.parent, path=CASE)
 
 
-def time_row(changes: dict, grid: tuple[int, int]) -> tuple[float, str]:
-    """(fastest seconds per cycle, result) of one configuration."""
-    from conrod import Simulation
-    from conrod.orbit import initial_state, integrate_cycle
+class Row:
+    """One configuration: its problem, warmed up by one cycle, and its fastest cycle."""
 
-    sim = Simulation(case_with(changes), film="reynolds", integrator="auto",
-                     n_theta=grid[0], n_z=grid[1])
-    problem = sim.problem()
-    cycle = integrate_cycle(problem, initial_state(), sim.solver)
-    best = float("inf")
-    for _ in range(REPEATS):
+    def __init__(self, changes: dict, grid: tuple[int, int]):
+        from conrod import Simulation
+        from conrod.orbit import initial_state, integrate_cycle
+
+        self.sim = Simulation(case_with(changes), film="reynolds", integrator="auto",
+                              n_theta=grid[0], n_z=grid[1])
+        self.problem = self.sim.problem()
+        self.cycle = integrate_cycle(self.problem, initial_state(), self.sim.solver)
+        self.best = float("inf")
+
+    def time_cycle(self) -> None:
+        """One more cycle from the last one's end; keep the fastest [s]."""
+        from conrod.orbit import integrate_cycle
+
         start = time.perf_counter()
-        cycle = integrate_cycle(problem, cycle.end_state, sim.solver)
-        best = min(best, time.perf_counter() - start)
-    tilt = "" if cycle.tilt is None else (
-        f", tilt up to {1e3 * float(abs(cycle.tilt[:, :2]).max()):.3g} mrad")
-    ratio = float((cycle.x**2 + cycle.y**2).max() ** 0.5) / problem.clearance
-    return best, f"e/c up to {ratio:.3f}{tilt}"
+        self.cycle = integrate_cycle(self.problem, self.cycle.end_state, self.sim.solver)
+        self.best = min(self.best, time.perf_counter() - start)
+
+    def result(self) -> str:
+        cycle = self.cycle
+        ratio = float((cycle.x**2 + cycle.y**2).max() ** 0.5) / self.problem.clearance
+        tilt = "" if cycle.tilt is None else (
+            f", tilt up to {1e3 * float(abs(cycle.tilt[:, :2]).max()):.3g} mrad")
+        return f"e/c up to {ratio:.3f}{tilt}, {cycle.steps} steps"
 
 
 def main() -> None:
     grid = tuple(int(n) for n in (sys.argv[1] if len(sys.argv) > 1 else "72x16").split("x"))
     lines = ["# Axial benchmarks: tilt and bore profile", "",
              f"Case `{CASE.relative_to(ROOT)}` on a rigid bore, Reynolds film {grid[0]}×{grid[1]}, "
-             f"integrator `auto`; fastest of {REPEATS} cycles after a warm-up cycle; machine: "
+             f"integrator `auto`; fastest of {REPEATS} interleaved cycles after a warm-up cycle; "
+             f"machine: "
              f"{platform.processor() or platform.machine()}, Python {sys.version.split()[0]} "
              "(shared 2-core machine, timings ±30 %).", "",
              "| configuration | time per cycle | ratio to reference | result | target |",
              "| --- | ---: | ---: | --- | --- |"]
-    reference = None
-    for label, changes, target in ROWS:
-        seconds, result = time_row(changes, grid)
-        reference = reference or seconds
-        lines.append(f"| {label} | {seconds:.2f} s | {seconds / reference:.2f}× | {result} | "
-                     f"{target} |")
+    rows = [Row(changes, grid) for _, changes, _ in ROWS]
+    for _ in range(REPEATS):  # interleaved rounds: the machine's load drifts alike for all
+        for row in rows:
+            row.time_cycle()
+    reference = rows[0].best
+    for (label, _, target), row in zip(ROWS, rows, strict=True):
+        lines.append(f"| {label} | {row.best:.2f} s | {row.best / reference:.2f}× | "
+                     f"{row.result()} | {target} |")
         print(lines[-1], flush=True)
     (ROOT / "benchmarks" / "axial_benchmarks.md").write_text("\n".join(lines) + "\n")
 

@@ -76,8 +76,8 @@ def test_mirror_symmetric_tilts_give_the_same_orbit():
         integrator="implicit"))
     minus = integrate_cycle(problem(prescribed(-2e-4, 1e-4)), OrbitState(), solver(
         integrator="implicit"))
-    assert np.abs(plus.x - minus.x).max() < 1e-9 * C
-    assert np.abs(plus.y - minus.y).max() < 1e-9 * C
+    assert np.abs(plus.x - minus.x).max() < 1e-6 * C
+    assert np.abs(plus.y - minus.y).max() < 1e-6 * C
 
 
 def test_free_tilt_without_moment_stays_aligned():
@@ -86,7 +86,7 @@ def test_free_tilt_without_moment_stays_aligned():
     aligned = integrate_cycle(problem(prescribed()), OrbitState(), solver(integrator="implicit"))
     loose = integrate_cycle(problem(free(inertia=(0.01, 0.01))), OrbitState(),
                             solver(integrator="implicit"))
-    assert np.abs(loose.tilt[:, :2]).max() < 1e-12
+    assert LEVER * np.abs(loose.tilt[:, :2]).max() < 1e-6 * C  # round-off of the solves
     assert np.abs(loose.x - aligned.x).max() < 1e-6 * C
 
 
@@ -124,3 +124,43 @@ def test_films_and_integrators_that_cannot_take_a_tilt_refuse_it():
     asperity = replace(problem(prescribed(1e-4)), asperity=(0.025, 0.025, 4e-7, 1e9))
     with pytest.raises(CaseError, match="greenwood_tripp"):
         integrate_cycle(asperity, OrbitState(), solver(integrator="implicit"))
+
+
+def test_compiled_flight_of_the_tilted_journal_equals_its_fixed_steps():
+    """The compiled TR-BDF2 orbit of a tilted journal (error-controlled) and the fixed BDF2
+    steps of the same problem give the same periodic orbit, position and tilt, within the
+    fixed step's error; the compiled kernel's forces and moments are the film's."""
+    from conrod.orbit.implicit_step import implicit_step_cycle
+    from conrod.orbit.tilt_flight import applies
+
+    loads = load_cycle(lambda p: 2000.0 + 1500.0 * np.cos(p), lambda p: 800.0 * np.sin(p),
+                       cycle=2 * math.pi)
+    film = ReynoldsFilm(geometry(width=WIDTH), n_theta=36, n_z=8)
+    orbit_problem = OrbitProblem(film, loads, 0.01, 1.0, 1.0,
+                                 tilt=free(offset=0.002, inertia=(2e-4, 2e-4)))
+    assert applies(orbit_problem)
+    compiled = periodic_orbit(orbit_problem, solver(max_cycles=4, integrator="implicit")).last
+    fixed = compiled
+    for _ in range(2):
+        fixed = implicit_step_cycle(orbit_problem, fixed.end_state, 0.25, 1.0, with_mass=True)
+    assert np.abs(fixed.x - compiled.x).max() < 2e-5 * C
+    assert np.abs(fixed.tilt[:, 1] - compiled.tilt[:, 1]).max() < 1e-4 * np.abs(
+        compiled.tilt[:, 1]).max()
+    kernel = film.tilt_flight_kernel(None, 1e-12)
+    state = replace(film_state_at(compiled, 40), viscosity=0.01)
+    q = kernel.force(state.eccentricity_x, state.eccentricity_y, state.tilt_x, state.tilt_y,
+                     state.velocity_x, state.velocity_y, state.tilt_rate_x, state.tilt_rate_y,
+                     SPEED, 0.01, kernel.params)
+    result = film.solve(state)
+    assert q == pytest.approx([result.force_x, result.force_y, result.moment_x,
+                               result.moment_y], rel=1e-9, abs=1e-9)
+
+
+def film_state_at(trajectory, i):
+    from conrod.film.base import FilmState
+
+    gx, gy, rx, ry = trajectory.tilt[i]
+    return FilmState(eccentricity_x=float(trajectory.x[i]), eccentricity_y=float(trajectory.y[i]),
+                     velocity_x=float(trajectory.vx[i]), velocity_y=float(trajectory.vy[i]),
+                     journal_speed=SPEED, tilt_x=float(gx), tilt_y=float(gy),
+                     tilt_rate_x=float(rx), tilt_rate_y=float(ry))

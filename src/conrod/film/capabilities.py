@@ -31,6 +31,7 @@ declares what its inner model declares by delegating the methods.
 * :class:`HasSensitivities` — force, stiffness and damping from the film's own solver;
 * :class:`HasFlightKernel` — a compiled force and Jacobian with a warm start that the
   implicit orbit integrator runs inside its compiled free flight;
+* :class:`HasTiltFlightKernel` — the same for the forces and moments of a tilted journal;
 * :class:`CarriesAsperityContact` — the film's force holds the asperity contact;
 * :class:`HasDeformedGap` — a deforming bore that says where its deformed film closes.
 
@@ -227,6 +228,18 @@ class HasFlightKernel(Protocol):
     def flight_kernel(self, memory: Any, newton_tolerance: float) -> Any:
         """The kernel warm-started from ``memory``, force evaluations solved to
         ``newton_tolerance`` [-]; None when this configuration has none."""
+        ...
+
+
+@runtime_checkable
+class HasTiltFlightKernel(Protocol):
+    """A film whose forces and tilting moments under a tilted journal, warm-started, run
+    inside the compiled free flight of a tilted journal (:mod:`conrod.orbit.tilt_flight`)."""
+
+    def tilt_flight_kernel(self, memory: Any, newton_tolerance: float,
+                           free: bool = True) -> Any:
+        """The kernel warm-started from ``memory`` (``free`` False: a prescribed tilt, the
+        Jacobian's tilt columns not needed); None when this configuration has none."""
         ...
 
 

@@ -133,7 +133,10 @@ class ImplicitIntegrator:
         elastic bore) runs the fixed BDF2 steps of :mod:`conrod.orbit.implicit_step` with
         mass at the largest step ≤ ``max_step_deg`` that divides ``output_step_deg``."""
         from conrod.orbit.implicit import implicit_cycle
+        from conrod.orbit.tilt_flight import applies, tilt_flight_cycle
 
+        if applies(problem):  # a tilted journal on the rigid Reynolds film: compiled
+            return tilt_flight_cycle(problem, state, settings)
         if steps_implicitly(problem):
             return _fixed_step_cycle(problem, state, settings)
         return implicit_cycle(problem, state, settings)

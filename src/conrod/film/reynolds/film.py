@@ -195,10 +195,8 @@ class ReynoldsFilm:
 
     def tilt_jacobian(self, state: FilmState, memory: ReynoldsMemory,
                       tolerance: float | None = None, tilt: bool = True):
-        """(Q = (F_x, F_y, M_x, M_y) [N, N m], ∂Q/∂(e, γ, ė, γ̇) (4 × 8), memory) from the
-        linearised solve with the tilt set, warm-started from ``memory``, adjoints solved to
-        ``tolerance`` (None: 1e-12) (:class:`~conrod.film.capabilities.HasTiltJacobian`);
-        ``tilt`` False: (F, ∂F/∂(e, ė) (2 × 4), memory) at the (tilted) state."""
+        """(Q = (F, M) [N, N m], ∂Q/∂(e, γ, ė, γ̇) (4 × 8), memory), adjoints to
+        ``tolerance`` (:func:`conrod.film.linearised.tilt_jacobian`, ``tilt`` False: F)."""
         from conrod.film.linearised import tilt_jacobian
 
         return tilt_jacobian(self, state, memory, tolerance, tilt)
@@ -210,6 +208,12 @@ class ReynoldsFilm:
         from conrod.film.reynolds.flight import flight_kernel
 
         return flight_kernel(self, memory, newton_tolerance)
+
+    def tilt_flight_kernel(self, memory: Any, newton_tolerance: float, free: bool = True):
+        """Compiled forces and moments of a tilted journal (or None, ``tilt_flight``)."""
+        from conrod.film.reynolds.tilt_flight import tilt_flight_kernel
+
+        return tilt_flight_kernel(self, memory, newton_tolerance, free)
 
     def with_deformation_rate(self) -> ReynoldsFilm:
         """This film with the bore's rate in its squeeze term

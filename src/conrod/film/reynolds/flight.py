@@ -116,7 +116,7 @@ def flight_kernel(film, memory, newton_tolerance: float) -> FlightKernel | None:
     tolerances = np.array([max(float(newton_tolerance), film.tolerance),
                            min(JACOBIAN_TOLERANCE, max(float(newton_tolerance),
                                                        film.tolerance))])
-    profile, profile_source = _profile_arrays(film, grid)
+    profile, profile_source = profile_arrays(film, grid)
     params = (np.ascontiguousarray(field), grid.fixed, grid.source_x, grid.source_y,
               grid.weight_x, grid.weight_y, grid.cos_t, grid.sin_t, radius, d_theta, d_z,
               clearance, grid.n_coarse, grid.symmetric, float(g.cavitation_pressure),
@@ -126,7 +126,7 @@ def flight_kernel(film, memory, newton_tolerance: float) -> FlightKernel | None:
     return FlightKernel(reynolds_force, reynolds_jacobian, params, film)
 
 
-def _profile_arrays(film, grid) -> tuple[np.ndarray, np.ndarray]:
+def profile_arrays(film, grid) -> tuple[np.ndarray, np.ndarray]:
     """The bore profile h₀ [m] on the kernel's grid and its wedge source per unit μ(ω_j + ω_b)
     [m⁴] (−3 R w_z (h₀,i+1 − h₀,i−1), the profile's part of the source of
     :func:`conrod.film.reynolds.kernel.assemble_coefficients`, 0 on Dirichlet nodes); empty
