@@ -113,3 +113,21 @@ def test_shipped_tilt_example_runs_coarsened(tmp_path):
     assert 1.0e-4 < np.abs(axial["tilt_y"]).max() < 2.0e-4  # the table: 0.15 mrad at firing
     assert np.hypot(axial["moment_x"], axial["moment_y"]).max() > 10.0  # [N m]
     assert "edge h_min" in headline(elastic) and elastic.summary.h_min > 0.0
+
+
+def test_tilt_tables_and_turning_shells_are_checked(tmp_path):
+    """A tilt table out of order names its file; a profile on a shell that turns in the
+    film frame is refused (the profile is fixed in that frame)."""
+    case = write_case(tmp_path, extra='[misalignment]\ntable = "tilt.csv"')
+    (tmp_path / "tilt.csv").write_text("crank_angle_deg,tilt_x_rad,tilt_y_rad\n0,0,0\n90,0,0\n"
+                                       "60,0,0\n120,0,0\n")
+    with pytest.raises(CaseError, match="tilt.csv.*strictly increasing"):
+        Simulation(case).run()
+    (tmp_path / "tilt.csv").write_text("crank_angle_deg,tilt_x_rad,tilt_y_rad\n0,0.5,0\n90,0,0\n"
+                                       "180,0,0\n270,0,0\n")
+    with pytest.raises(CaseError, match="0.01 rad"):
+        Simulation(case).run()
+    turning = write_case(tmp_path, "[bearing.profile]\ncrown = 2e-6").with_(
+        load__shell_speed=10.0)
+    with pytest.raises(CaseError, match="shell speed"):
+        Simulation(turning).run()
