@@ -120,6 +120,24 @@ class BoreProfile:
                 raise CaseError(f"BoreProfile out_of_round term {harmonic!r}: allowed a "
                                 "Harmonic with order >= 1 and |amplitude| <= 0.001 m")
 
+    @property
+    def active(self) -> bool:
+        """True when some shape or the table is not zero (else the film is a cylinder) [-]."""
+        shapes = (self.crush_relief_depth, self.end_relief_depth, self.preload,
+                  self.offset_halves, self.taper, self.crown,
+                  *(h.amplitude for h in self.out_of_round))
+        table = self.table is not None and bool(np.any(np.asarray(self.table.offsets)))
+        return table or any(value != 0.0 for value in shapes)
+
+    @property
+    def smooth_around(self) -> bool:
+        """True when h₀ is smooth in θ (no crush relief, lobes, offset halves or a table
+        varying in θ): the parabola through three nodes then locates h_min between them [-]."""
+        table = self.table
+        uniform = table is None or bool(np.all(np.ptp(np.asarray(table.offsets), axis=0) == 0))
+        return (self.crush_relief_depth == 0.0 and self.preload == 0.0
+                and self.offset_halves == 0.0 and uniform)
+
     def field(self, theta: np.ndarray, z: np.ndarray, clearance: float,
               width: float) -> np.ndarray:
         """h₀ at the nodes θ [rad] × z [m] of a bearing of radial clearance c and width L

@@ -223,7 +223,7 @@ def _implicit(chosen: Integrator, problem: OrbitProblem) -> bool:
     way); nor for a tilted journal or a profiled bore, whose massless orbit is not compiled."""
     return (declared(resolved(chosen, problem), "massless_start")
             and not needs_journal_step(problem.film) and problem.tilt is None
-            and getattr(problem.film.geometry, "profile", None) is None)
+            and not getattr(problem.film.geometry.profile, "active", False))
 
 
 def _massless_start(problem: OrbitProblem, settings) -> OrbitState | None:

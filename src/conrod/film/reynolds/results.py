@@ -41,7 +41,8 @@ def reynolds_characteristics(film: Any, problem: Any, reduced, pressure, state: 
     w_x, w_y = film.force_weights
     sum_x, sum_y, i_p, j_p, i_h, j_h = kernel.force_and_extremes(pressure, w_x, w_y, h)
     fx, fy = -sum_x, -sum_y
-    smooth = film.profile is None  # a profile may have kinks the parabola would overshoot
+    profile = film.geometry.profile  # one with kinks in θ: the parabola would overshoot
+    smooth = film.profile is None or profile.smooth_around
     h_min, h_angle = (chars.minimum_film_at(h, grid, i_h, j_h) if smooth
                       else (float(h[i_h, j_h]), float(grid.theta[i_h])))
     axial = axial_summary(h, i_h, grid, film.geometry.radial_clearance, pressure,
