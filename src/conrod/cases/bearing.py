@@ -23,6 +23,9 @@ Angles of supply features are in degrees, measured on the shell in the film fram
     width = 0.003                # circumferential width [m]
     length = 0.020               # axial length [m], default: the full shell width
 
+A bore/shell profile (crush and end reliefs, lemon bore, taper, crown, a measured table) is
+``[bearing.profile]`` and ``profile_file`` (:mod:`conrod.cases.profile`).
+
 An axial groove becomes a :class:`~conrod.film.base.Groove` of angular extent
 width/R centred on ``angle`` and axial width ``length`` centred at mid-width, so every
 grid film (and the steady calculator) holds it at the supply pressure; a groove
@@ -32,11 +35,14 @@ narrower than the grid spacing still marks its nearest column of nodes.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
-from pydantic import Field, model_validator
+from pydantic import Field, PrivateAttr, model_validator
 
 from conrod.cases.base import Section, range_error
+from conrod.cases.profile import ProfileSection
 from conrod.film.base import GEOMETRY_LIMITS, BearingGeometry, FeedHole, Groove
+from conrod.film.profile import BoreProfile, ProfileTable
 
 MIN_SIZE = 1.0e-3
 """Smallest journal diameter and bearing width [m] (1 mm)."""
@@ -114,6 +120,12 @@ class BearingSection(Section):
                                               description="Oil-feed holes in the shell [-]")
     axial_grooves: list[AxialGrooveSection] = Field(
         default_factory=list, description="Axial oil grooves in the shell [-]")
+    profile: ProfileSection | None = Field(
+        default=None, description="Parametric bore/shell profile [-]")
+    profile_file: str | None = Field(
+        default=None, min_length=1,
+        description="Measured profile CSV: angle_deg, axial_position_m, offset_m [-]")
+    _profile_table: ProfileTable | None = PrivateAttr(default=None)
 
     @model_validator(mode="after")
     def _consistent(self) -> BearingSection:
@@ -146,7 +158,23 @@ class BearingSection(Section):
             feed_holes=tuple(h.to_feed_hole() for h in self.feed_holes),
             supply_pressure=self.supply_pressure,
             cavitation_pressure=self.cavitation_pressure,
+            profile=self.bore_profile(),
 )
+
+    def read_profile_file(self, path: Path) -> None:
+        """Read ``profile_file`` (resolved to ``path`` by the case) once, when the case is
+        read; CaseError naming the file, the line and the value on any problem."""
+        self._profile_table = ProfileTable.from_csv(path, "bearing.profile_file")
+
+    def bore_profile(self) -> BoreProfile | None:
+        """The bore/shell profile of ``[bearing.profile]`` and ``profile_file`` (None: a
+        cylindrical bore)."""
+        table = self._profile_table
+        if self.profile_file is not None and table is None:
+            table = ProfileTable.from_csv(Path(self.profile_file), "bearing.profile_file")
+        if self.profile is None:
+            return None if table is None else BoreProfile(table=table)
+        return self.profile.to_profile(self.width, table)
 
     def check_features_inside_width(self) -> None:
         """Every groove and hole lies inside the width and leaves a land on both sides."""

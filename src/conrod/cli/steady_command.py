@@ -7,7 +7,11 @@ Two modes:
   K̄ = Kc/W, C̄ = Ccω/W in the load frame (see :mod:`conrod.film.steady`);
 * dimensional — ``--load 10000 --speed-rpm 3000 --viscosity 0.01 --diameter 0.05
   --width 0.05 --radial-clearance 5e-5`` finds ε and prints h_min, p_max, friction
-  power, flows and the eight coefficients K_xx … C_yy (SI units) with K̄, C̄.
+  power, flows and the eight coefficients K_xx … C_yy (SI units) with K̄, C̄;
+* load vector — the dimensional options with ``--load-angle``, ``--tilt-x/--tilt-y`` or a
+  bore profile (``--preload``, ``--crush-relief-depth`` …, ``--profile-file``) find the
+  journal position under the load on the Reynolds film and print the moments, the edge
+  h_min and the 4 × 4 coefficients (:mod:`conrod.film.steady_axial`).
 """
 
 from __future__ import annotations
@@ -66,10 +70,13 @@ def unit_of(key: str) -> str:
     """Unit shown after a linearised coefficient in the text output ('' for others)."""
     if "_bar_" in key:
         return " [-]"
-    if key.startswith("K_"):
-        return " [N/m]"
-    if key.startswith("C_"):
-        return " [N s/m]"
+    if key.startswith(("K_", "C_")):
+        suffix = "s" if key.startswith("C_") else ""
+        rows = ("N m" if key[2] == "g" else "N") + (f" {suffix}" if suffix else "")
+        columns = "/rad" if key[-2] == "g" else "/m"
+        return f" [{rows}{columns}]"
+    if key.startswith("moment_") or key.startswith("M_"):
+        return " [N m]"
     return ""
 
 
@@ -109,14 +116,43 @@ def register(app: typer.Typer) -> None:
         grid: str = typer.Option(None, help="NTHETAxNZ intervals, e.g. 144x32"),
         friction: Friction = FRICTION_OPTION,
         as_json: bool = typer.Option(False, "--json", help="Print JSON"),
+        load_angle: float = typer.Option(None, help="Direction of the load pressing the "
+                                         "journal, film frame [deg] (load-vector mode)"),
+        tilt_x: float = typer.Option(0.0, help="Journal tilt about the film's x axis [rad]"),
+        tilt_y: float = typer.Option(0.0, help="Journal tilt about the film's y axis [rad]"),
+        profile_file: str = typer.Option(None, help="Measured bore profile CSV (angle_deg, "
+                                         "axial_position_m, offset_m)"),
+        preload: float = typer.Option(0.0, help="Elliptical (lemon) bore preload m [-]"),
+        lobe_angle: float = typer.Option(0.0, help="Axis of the lobes / halves [deg]"),
+        offset_halves: float = typer.Option(0.0, help="Offset of the two halves [m]"),
+        crush_relief_depth: float = typer.Option(0.0, help="Crush relief depth [m]"),
+        crush_relief_extent: float = typer.Option(0.0, help="Crush relief extent [deg]"),
+        end_relief_depth: float = typer.Option(0.0, help="End relief depth [m]"),
+        end_relief_length: float = typer.Option(0.0, help="End relief axial length [m]"),
+        taper: float = typer.Option(0.0, help="Axial taper (edge +L/2 minus -L/2) [m]"),
+        crown: float = typer.Option(0.0, help="Crown (edges minus middle) [m]"),
 ) -> None:
-        """Steady bearing characteristics under Raimondi & Boyd's full-bearing conditions."""
+        """Steady bearing characteristics under Raimondi & Boyd's full-bearing conditions;
+        with a load angle, a tilt or a bore profile the journal position under a load vector
+        on the Reynolds film (moments, edge h_min, the 4 x 4 coefficients)."""
         with interrupts_stop_at_once():  # starting: nothing computed yet
             from conrod.cases.bearing import MAX_RELATIVE_CLEARANCE
             from conrod.film.base import BearingGeometry
             from conrod.film.steady import raimondi_boyd_point, solve_for_load
 
         cells = parse_grid(grid)
+        shape = {"preload": preload, "lobe_angle": math.radians(lobe_angle),
+                 "offset_halves": offset_halves, "crush_relief_depth": crush_relief_depth,
+                 "crush_relief_extent": math.radians(crush_relief_extent),
+                 "end_relief_depth": end_relief_depth, "end_relief_length": end_relief_length,
+                 "taper": taper, "crown": crown}
+        profile = steady_profile(shape, profile_file)
+        axial = load_angle is not None or tilt_x or tilt_y or profile is not None
+        if axial and eccentricity is not None:
+            raise CaseError("--eccentricity: Raimondi & Boyd's conditions are for an aligned "
+                            "cylindrical bore (with --load-angle, --tilt-x/-y or a profile "
+                            "give --load --speed-rpm --viscosity --diameter --width "
+                            "--radial-clearance)")
         if eccentricity is not None:
             if length_to_diameter is None:
                 raise CaseError("length_to_diameter: required with --eccentricity [-]")
@@ -139,7 +175,28 @@ def register(app: typer.Typer) -> None:
                             f"<= {MAX_RELATIVE_CLEARANCE:g} x diameter/2 = "
                             f"{MAX_RELATIVE_CLEARANCE * 0.5 * diameter:g} m)")
         geometry = BearingGeometry(diameter=diameter, width=width,
-                                   radial_clearance=radial_clearance)
-        answer = solve_for_load(load, speed_rpm * math.pi / 30.0, viscosity, geometry,
-                                model.value, cells, friction.value)
+                                   radial_clearance=radial_clearance, profile=profile)
+        if axial:
+            from conrod.film.steady_axial import solve_for_load_vector
+
+            if model.value != "reynolds":
+                raise CaseError(f"model = {model.value!r}: with a load angle, tilt or profile "
+                                "allowed: reynolds")
+            answer = solve_for_load_vector(
+                load, math.radians(load_angle or 0.0), speed_rpm * math.pi / 30.0, viscosity,
+                geometry, tilt=(tilt_x, tilt_y), grid=cells)
+        else:
+            answer = solve_for_load(load, speed_rpm * math.pi / 30.0, viscosity, geometry,
+                                    model.value, cells, friction.value)
         _print(answer.as_dict(), as_json)
+
+
+def steady_profile(shape: dict, profile_file: str | None):
+    """The bore profile of the steady command's options (SI, angles in rad), None when all
+    are zero and no file is given."""
+    from conrod.film.profile import BoreProfile, ProfileTable
+
+    table = ProfileTable.from_csv(profile_file, "--profile-file") if profile_file else None
+    if table is None and not any(value for key, value in shape.items() if key != "lobe_angle"):
+        return None
+    return BoreProfile(**shape, table=table)

@@ -41,6 +41,7 @@ import numpy as np
 from conrod.ehd.memory import content_bdf2, start_deformation
 from conrod.film.base import FilmState
 from conrod.film.step_system import FilmResponse, StepRequest
+from conrod.film.tilt import pressure_moments
 from conrod.numerics.newton import ChordJacobian, NewtonOutcome, StepBlocks, UpdateLimits
 
 STEP_SOLVES = 40
@@ -155,6 +156,25 @@ def journal_columns(response: FilmResponse, tau: float, trig: np.ndarray,
                         force_by_velocity)
 
 
+def tilt_columns(response: FilmResponse, columns: FilmResponse, tau: float, trig: np.ndarray,
+                 lever: float, rate_included: bool) -> FilmResponse:
+    """The step's response of a journal whose tilt is solved: the journal's columns of
+    :func:`journal_columns` and the edge velocities' own (computed by the film as
+    directions), and the rows of the moments over ℓ, so that the generalised force is
+    (F, M/ℓ) and the velocity (v, ℓγ̇) (:mod:`conrod.orbit.tilt_steps`)."""
+    moment_by_bore = response.moment_by_bore / lever
+    moment_by_velocity = response.moment_by_velocity / lever
+    moment_journal = -tau * moment_by_bore @ trig
+    if not rate_included:
+        moment_journal = moment_journal + moment_by_velocity[:, :2]
+    return FilmResponse(
+        response.nodal_by_bore,
+        np.hstack([columns.nodal_by_velocity, response.nodal_by_velocity[:, 2:]]),
+        np.vstack([response.force_by_bore, moment_by_bore]),
+        np.block([[columns.force_by_velocity, response.force_by_velocity[:, 2:]],
+                  [moment_journal, moment_by_velocity[:, 2:]]]))
+
+
 def carried_chord(film, key: str) -> ChordJacobian:
     """The film's carried Jacobian of the iterations of kind ``key``."""
     if key not in film.chords:
@@ -163,12 +183,16 @@ def carried_chord(film, key: str) -> ChordJacobian:
 
 
 def _state(request: StepRequest, velocity: np.ndarray, deformation=None) -> FilmState:
-    """The film state at the end of the step with the end velocity ``velocity``."""
-    x, y = request.position(velocity)
+    """The film state at the end of the step with the end velocity ``velocity`` (with the
+    journal's tilt when the step has one, :class:`~conrod.film.step_system.TiltRequest`)."""
+    x, y = request.position(velocity)[:2]
+    tilt = {} if request.tilt is None else dict(zip(
+        ("tilt_x", "tilt_y", "tilt_rate_x", "tilt_rate_y"),
+        request.tilt.at_end(request, velocity), strict=True))
     return FilmState(eccentricity_x=float(x), eccentricity_y=float(y),
                      velocity_x=float(velocity[0]), velocity_y=float(velocity[1]),
                      journal_speed=request.journal_speed, shell_speed=request.shell_speed,
-                     viscosity=request.viscosity, deformation=deformation)
+                     viscosity=request.viscosity, deformation=deformation, **tilt)
 
 
 def pressure_step_system(film, request: StepRequest) -> BoreSystem:
@@ -185,15 +209,24 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
     share = settings.share(at_end.elapsed)
     tau, trig = request.tau, directions(film.housing.node_angles)
     rate = tau if settings.deformation_rate else None
+    free = len(request.load) == 4  # the tilt solved as two more degrees of freedom
+    lever = request.tilt.lever if free else 1.0
 
     def evaluate(own: np.ndarray, velocity: np.ndarray):
         forces, h_min, payload = film.evaluator(_state(request, velocity), at_end)(own)
-        return forces, payload.force(), h_min, payload
+        if not free:
+            return forces, payload.force(), h_min, payload
+        moments = pressure_moments(payload.load_pressure, film.base.moment_weights)
+        return forces, np.concatenate([payload.force(), np.array(moments) / lever]), h_min, \
+            payload
 
     def respond(payload) -> FilmResponse:
         response = film.with_contact_response(  # asperity terms with the bore's
-            film.base.thickness_response(payload.state, payload, film.nodal, rate), payload)
-        return journal_columns(response, tau, trig, settings.deformation_rate)
+            film.base.thickness_response(payload.state, payload, film.nodal, rate,
+                                         (tau, lever) if free else None), payload)
+        columns = journal_columns(response, tau, trig, settings.deformation_rate)
+        return tilt_columns(response, columns, tau, trig, lever, settings.deformation_rate) \
+            if free else columns
 
     def finish(outcome: NewtonOutcome):
         after = dataclasses.replace(
@@ -208,12 +241,15 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
 
     start = (bore_start(memory, request.previous, request.earlier) if share > 0.0
              else np.zeros_like(memory.deformation))
+    travel = -tau * trig
+    if free:  # the edges move by τ(sin θ, −cos θ) per unit edge velocity
+        travel = np.hstack([travel, tau * np.column_stack([trig[:, 1], -trig[:, 0]])])
+    key = ("mass_elastic" if share > 0.0 else "mass_rigid") + ("_tilt" if free else "")
     return BoreSystem(
         evaluate, respond, share * film.housing.corrected_compliance,
         share * film.inertia_deformation(request.crank_angle), start,
-        UpdateLimits(settings.increment_share, -tau * trig), film.clearance,
-        film.coupling.tolerance, 5 * settings.max_iterations,
-        carried_chord(film, "mass_elastic" if share > 0.0 else "mass_rigid"), finish)
+        UpdateLimits(settings.increment_share, travel), film.clearance,
+        film.coupling.tolerance, 5 * settings.max_iterations, carried_chord(film, key), finish)
 
 
 def content_step_system(film, request: StepRequest) -> BoreSystem:

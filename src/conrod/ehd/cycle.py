@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from conrod.film.base import FilmState
+from conrod.loads.tilt import cycle_tilt
 
 
 @dataclass(frozen=True)
@@ -67,7 +68,7 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
                           velocity_y=float(cycle.velocity_y[i]),
                           journal_speed=float(cycle.journal_speed[i]),
                           shell_speed=float(cycle.shell_speed[i]),
-                          viscosity=problem.viscosity)
+                          viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i))
         result, after = film.solve_with_memory(state, memory, with_pressure=i == peak)
         if i == peak:
             peak_pressure = result.pressure

@@ -12,9 +12,14 @@ All quantities are given in one *film frame* with axes x, y in the bearing mid-p
   In a frame fixed to the shell (the connecting rod for a big end), ω_b = 0 and
   ω_j = ω_crank − dβ/dt.
 * θ [rad] is measured on the shell from +x towards +y; z [m] is axial, 0 at mid-width.
-* Film thickness of the rigid bearing plus an additive field δ(θ, z) [m]:
+* Film thickness of the rigid bearing, the journal's tilt γ_x, γ_y [rad] about the x and y
+  axes (right-handed, z along the bearing axis; the journal axis at z passes through
+  (e_x + z γ_y, e_y − z γ_x)), the bore/shell profile h₀(θ, z) of the geometry
+  (:mod:`conrod.film.profile`, fixed in the film frame) and an additive field δ(θ, z) [m]:
 
-  .. math:: h(θ, z) = c - e_x \\cos θ - e_y \\sin θ + δ(θ, z)
+  .. math:: h(θ, z) = c - (e_x + z γ_y) \\cos θ - (e_y - z γ_x) \\sin θ + h_0(θ, z) + δ(θ, z)
+
+  (docs/conventions.md, "Journal tilt"); the tilt rates γ̇_x, γ̇_y enter ∂h/∂t.
 
 * Reynolds equation solved by every model (incompressible, isoviscous):
 
@@ -24,6 +29,10 @@ All quantities are given in one *film frame* with axes x, y in the bearing mid-p
   so ω_j = −ω_b with a stationary centre gives no wedge action (Booker).
 * ``force_x, force_y`` [N]: force of the film **on the journal**. A journal carrying an
   external load W is in equilibrium when F + W = 0.
+* ``moment_x, moment_y`` [N m]: moment of the film pressure on the journal about the x and
+  y axes through the bearing centre (mid-width), M = ∫∫ r × (−p n) dA, i.e.
+  M_x = ∫∫ p z sin θ dA, M_y = −∫∫ p z cos θ dA: the generalised forces of the tilt angles
+  (virtual work M_x δγ_x + M_y δγ_y).
 * ``friction_torque_journal`` / ``friction_torque_shell`` [N m]: moments of the film
   shear on each surface about its centre, positive from +x towards +y.
 * Pressures are gauge [Pa] relative to the ambient pressure at the bearing edges.
@@ -45,6 +54,9 @@ GEOMETRY_LIMITS = {"diameter": (1.0e-3, 20.0), "length_to_diameter": (1.0e-3, 20
 multiple of it [-], radial clearance as a multiple of the journal radius [-]."""
 MAX_FILM_VISCOSITY = 1.0e6
 """Largest viscosity a :class:`FilmState` accepts [Pa s] (bitumen; oils are below 10)."""
+MAX_TILT = 0.1
+"""Largest tilt angle a :class:`FilmState` accepts [rad]: far beyond any bearing (a tilt
+of c/(L/2) ≈ 1e-3 rad closes the film at the edge); larger is an input error."""
 
 
 @dataclass(frozen=True)
@@ -117,6 +129,9 @@ class BearingGeometry:
     feed_holes : tuple  Feed holes held at ``supply_pressure``.
     supply_pressure : float  Gauge supply pressure [Pa].
     cavitation_pressure : float  Gauge cavitation pressure [Pa] (≤ 0 ≤ supply).
+    profile : BoreProfile or None  Bore/shell profile h₀(θ, z) added to the film thickness,
+        fixed in the film (bearing) frame (:class:`conrod.film.profile.BoreProfile`);
+        None: a cylindrical bore. Only the grid films honour it.
     """
 
     diameter: float
@@ -126,6 +141,7 @@ class BearingGeometry:
     feed_holes: tuple[FeedHole, ...] = ()
     supply_pressure: float = 0.0
     cavitation_pressure: float = 0.0
+    profile: Any = None
 
     def __new__(cls, *args: object, **kwargs: object) -> BearingGeometry:
         _refuse_positional(cls, args, "diameter, width and clearance are all in metres",
@@ -153,6 +169,9 @@ class BearingGeometry:
             if not isinstance(items, tuple) or not all(isinstance(i, kind) for i in items):
                 raise CaseError(f"{owner} {name} = {items!r}: a tuple of {kind.__name__} is "
                                 "required")
+        if self.profile is not None and not callable(getattr(self.profile, "field", None)):
+            raise CaseError(f"{owner} profile = {self.profile!r}: a BoreProfile "
+                            "(conrod.film.profile) or None is required")
 
     @property
     def radius(self) -> float:
@@ -181,6 +200,9 @@ class FilmState:
         model's grid (:meth:`FilmModel.grid`), None for a rigid bearing.
     history : ndarray or None  Internal film history carried by the integrator
         (e.g. film content of a mass-conserving model) [-]; None for memoryless models.
+    tilt_x, tilt_y : float  Journal tilt γ_x, γ_y about the film's x and y axes [rad]
+        (module docstring); 0: aligned.
+    tilt_rate_x, tilt_rate_y : float  Their rates γ̇_x, γ̇_y [rad/s] (squeeze term).
     """
 
     eccentricity_x: float
@@ -192,6 +214,10 @@ class FilmState:
     viscosity: float = 0.01
     deformation: np.ndarray | None = None
     history: np.ndarray | None = None
+    tilt_x: float = 0.0
+    tilt_y: float = 0.0
+    tilt_rate_x: float = 0.0
+    tilt_rate_y: float = 0.0
 
     def __new__(cls, *args: object, **kwargs: object) -> FilmState:
         _refuse_positional(cls, args, "eccentricities are in metres, not ratios to the "
@@ -200,11 +226,25 @@ class FilmState:
         return super().__new__(cls)
 
     def __post_init__(self) -> None:
-        """A viscosity every film can use: finite and > 0 [Pa s]."""
+        """A viscosity every film can use: finite and > 0 [Pa s]; finite tilt angles
+        (|γ| ≤ 0.1 rad) and rates."""
         viscosity = self.viscosity
         if not (type(viscosity) is float and 0.0 < viscosity < math.inf):  # the fast path
             check_range("FilmState", "viscosity", viscosity, 0.0, MAX_FILM_VISCOSITY, "Pa s",
                         low_open=True)
+        if self.tilt_x or self.tilt_y or self.tilt_rate_x or self.tilt_rate_y:
+            for name in ("tilt_x", "tilt_y"):
+                check_range("FilmState", name, getattr(self, name), -MAX_TILT, MAX_TILT, "rad")
+            for name in ("tilt_rate_x", "tilt_rate_y"):
+                rate = getattr(self, name)
+                if not (_is_number(rate) and math.isfinite(rate)):
+                    raise CaseError(f"FilmState {name} = {rate!r}: out of range (allowed: "
+                                    "a finite number of rad/s)")
+
+    @property
+    def tilted(self) -> bool:
+        """True when the journal is tilted or tilting (any tilt angle or rate ≠ 0) [-]."""
+        return bool(self.tilt_x or self.tilt_y or self.tilt_rate_x or self.tilt_rate_y)
 
 
 @dataclass
@@ -235,6 +275,17 @@ class FilmResult:
     """Share of the film area that is cavitated [-]."""
     friction_power: float = 0.0
     """Power dissipated in the film [W]."""
+    moment_x: float = 0.0
+    """Moment of the film pressure on the journal about the x axis through the bearing
+    centre [N m] (module docstring; 0 for a film uniform along the width)."""
+    moment_y: float = 0.0
+    """Moment of the film pressure on the journal about the y axis [N m]."""
+    min_film_axial_position: float = 0.0
+    """Axial position z of h_min [m]: the middle of the axial nodes within round-off of
+    the smallest value in its θ column (0 for a film uniform along the width)."""
+    edge_min_film_thickness: float | None = None
+    """Smallest film thickness on the two edges z = ±L/2 [m] (None: equal to
+    ``min_film_thickness``, a film uniform along the width)."""
     pressure: np.ndarray | None = None
     """Pressure field p(θ, z) on :meth:`FilmModel.grid` [Pa], when requested."""
     history_rate: np.ndarray | None = None

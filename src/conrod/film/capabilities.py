@@ -28,9 +28,12 @@ declares what its inner model declares by delegating the methods.
   converged answer, which the characteristics at the step's end report;
 * :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
   integrator's Newton matrix);
+* :class:`HasTiltJacobian` — the film's own ∂(F, M)/∂(e, γ, ė, γ̇) (the implicit step of a
+  tilted journal);
 * :class:`HasSensitivities` — force, stiffness and damping from the film's own solver;
 * :class:`HasFlightKernel` — a compiled force and Jacobian with a warm start that the
   implicit orbit integrator runs inside its compiled free flight;
+* :class:`HasTiltFlightKernel` — the same for the forces and moments of a tilted journal;
 * :class:`CarriesAsperityContact` — the film's force holds the asperity contact;
 * :class:`HasDeformedGap` — a deforming bore that says where its deformed film closes.
 
@@ -194,6 +197,19 @@ class HasForceJacobian(Protocol):
 
 
 @runtime_checkable
+class HasTiltJacobian(Protocol):
+    """A film that gives the derivatives of its force and tilting moments
+    Q = (F_x, F_y, M_x, M_y) with respect to the journal's position, tilt and their rates,
+    ∂Q/∂(e_x, e_y, γ_x, γ_y, ė_x, ė_y, γ̇_x, γ̇_y) (4 × 8), from its own solver: the
+    implicit step of a tilted journal uses it (:mod:`conrod.orbit.tilt_systems`)."""
+
+    def tilt_jacobian(self, state: FilmState, memory: Any) -> tuple[np.ndarray, np.ndarray,
+                                                                      Any]:
+        """(Q (4,) [N, N m], ∂Q/∂(q, q̇) (4 × 8), memory after the solve) at ``state``."""
+        ...
+
+
+@runtime_checkable
 class HasSensitivities(Protocol):
     """A film that linearises itself: force, stiffness K = −∂F/∂e [N/m] and damping
     C = −∂F/∂ė [N s/m] at a state from its own solver (the Reynolds film's solve on its
@@ -214,6 +230,18 @@ class HasFlightKernel(Protocol):
     def flight_kernel(self, memory: Any, newton_tolerance: float) -> Any:
         """The kernel warm-started from ``memory``, force evaluations solved to
         ``newton_tolerance`` [-]; None when this configuration has none."""
+        ...
+
+
+@runtime_checkable
+class HasTiltFlightKernel(Protocol):
+    """A film whose forces and tilting moments under a tilted journal, warm-started, run
+    inside the compiled free flight of a tilted journal (:mod:`conrod.orbit.tilt_flight`)."""
+
+    def tilt_flight_kernel(self, memory: Any, newton_tolerance: float,
+                           free: bool = True) -> Any:
+        """The kernel warm-started from ``memory`` (``free`` False: a prescribed tilt, the
+        Jacobian's tilt columns not needed); None when this configuration has none."""
         ...
 
 
@@ -319,12 +347,24 @@ class SupportsDeformationRate(Protocol):
 
 
 def refuse_deformation(state: FilmState, name: str) -> None:
-    """CaseError when ``state`` carries a deformation the film ``name`` cannot honour."""
+    """CaseError when ``state`` carries a deformation the film ``name`` cannot honour, or a
+    journal tilt (:func:`refuse_tilt`): a film uniform along the width honours neither."""
+    refuse_tilt(state, name)
     if state.deformation is not None:
         raise CaseError(
             f"film = {name!r} cannot take a deformation field δ(θ, z) (allowed: a film "
             "model that honours it: 'reynolds' or 'mass_conserving')"
 )
+
+
+def refuse_tilt(state: FilmState, name: str) -> None:
+    """CaseError when ``state`` tilts the journal and the film ``name`` cannot honour it
+    (the short-bearing closed form and the maps are for an aligned journal)."""
+    if state.tilted:
+        raise CaseError(
+            f"film = {name!r} cannot take a journal tilt (tilt_x = {state.tilt_x:g}, tilt_y = "
+            f"{state.tilt_y:g} rad; allowed: a grid film that resolves the width, "
+            "'reynolds' or 'mass_conserving')")
 
 
 def film_memory(film: Any) -> Any:

@@ -43,6 +43,8 @@ class StepRequest:
     bdf2 : bool  Second-order step (the previous memory holds the point before) [-].
     memories : tuple  Film memories at the last step points, newest first: the start of the
         step, then (BDF2) one and, when known, two steps earlier.
+    tilt : TiltRequest or None  The journal's tilt at the end of the step (prescribed, or
+        the journal's degrees of freedom 3 and 4); None: aligned.
     """
 
     position_reference: np.ndarray
@@ -57,6 +59,7 @@ class StepRequest:
     crank_angle: float
     bdf2: bool
     memories: tuple
+    tilt: TiltRequest | None = None
 
     @property
     def memory(self) -> Any:
@@ -76,6 +79,31 @@ class StepRequest:
     def position(self, velocity: np.ndarray) -> np.ndarray:
         """End position e_r + τ v [m] at the end velocity ``velocity`` [m/s]."""
         return self.position_reference + self.tau * velocity
+
+
+@dataclass(frozen=True)
+class TiltRequest:
+    """The journal's tilt in a step (:mod:`conrod.film.tilt`).
+
+    lever : float  ℓ = L/2 [m]: the journal's tilt degrees of freedom are ℓγ [m] and ℓγ̇
+        [m/s], their generalised forces M/ℓ [N] and inertias J/ℓ² [kg].
+    prescribed : tuple or None  (γ_x, γ_y [rad], γ̇_x, γ̇_y [rad/s]) at the end of the step;
+        None: free, the journal's degrees of freedom 3 and 4.
+    """
+
+    lever: float
+    prescribed: tuple[float, float, float, float] | None = None
+
+    def at_end(self, request: StepRequest, velocity: np.ndarray
+               ) -> tuple[float, float, float, float]:
+        """(γ_x, γ_y, γ̇_x, γ̇_y) at the end of ``request`` with the end velocity ``velocity``
+        [rad, rad/s]."""
+        if self.prescribed is not None:
+            return self.prescribed
+        position = request.position(velocity)
+        lever = self.lever
+        return (float(position[2]) / lever, float(position[3]) / lever,
+                float(velocity[2]) / lever, float(velocity[3]) / lever)
 
 
 class StepSystem(Protocol):
@@ -123,9 +151,14 @@ class FilmResponse:
     nodal_by_velocity : ndarray  ∂f/∂v (n × 2) of the journal's squeeze term [N s/m].
     force_by_bore : ndarray  ∂F/∂u (2 × n) of the film force on the journal [N/m].
     force_by_velocity : ndarray  ∂F/∂v (2 × 2) [N s/m].
+    moment_by_bore, moment_by_velocity : ndarray or None  ∂M/∂u (2 × n) [N m/m] and
+        ∂M/∂v [N m s/m] of the tilting moments, with the velocity columns of a solved
+        tilt after the journal's two (2 × 4); None when not asked for.
     """
 
     nodal_by_bore: np.ndarray
     nodal_by_velocity: np.ndarray
     force_by_bore: np.ndarray
     force_by_velocity: np.ndarray
+    moment_by_bore: np.ndarray | None = None
+    moment_by_velocity: np.ndarray | None = None

@@ -10,15 +10,16 @@ scaled unknowns z = (y/s_y, v/s_v) and residuals r = (G/s_y, (F + W)/W_s), W_s =
 .. math:: J = \\begin{pmatrix} ∂G/∂y & ∂G/∂v\\, s_v/s_y \\\\
                                ∂F/∂y\\, s_y/W_s & ∂F/∂v\\, s_v/W_s \\end{pmatrix}
 
-With k = 0 it solves G(y) = 0 alone. A Jacobian is reused while an update reduces the
-residual norm to at most :data:`CONTRACTION` of its value (chord steps, also across calls
-through :class:`ChordJacobian`) and rebuilt otherwise — with ``refresh_after_first`` also
-after the first update of a call; each update is cut back (halving, :data:`LINE_SEARCH_CUTS`
-trials) until the residual norm decreases — across a switch of a film's cavitation set,
-where no cut may decrease it, the best trial is taken (semismooth Newton) — and scaled by
-the system's :class:`UpdateLimits`: the change of the film thickness, max|Δy_gap + T Δv|,
-at most a share of the current h_min (Rodin 2004: the relaxation factor Δ of the
-deformation increment), and |Δv| ≤ :data:`VELOCITY_LIMIT` s_v.
+With k = 0 it solves G(y) = 0 alone; with n = 0 (a film without unknowns of its own, e.g. a
+rigid film under a tilted journal) the journal's balance alone. A Jacobian is reused while
+an update reduces the residual norm to at most :data:`CONTRACTION` of its value (chord
+steps, also across calls through :class:`ChordJacobian`) and rebuilt otherwise — with
+``refresh_after_first`` also after the first update of a call; each update is cut back
+(halving, :data:`LINE_SEARCH_CUTS` trials) until the residual norm decreases — across a
+switch of a film's cavitation set, where no cut may decrease it, the best trial is taken
+(semismooth Newton) — and scaled by the system's :class:`UpdateLimits`: the change of the
+film thickness, max|Δy_gap + T Δv|, at most a share of the current h_min (Rodin 2004: the
+relaxation factor Δ of the deformation increment), and |Δv| ≤ :data:`VELOCITY_LIMIT` s_v.
 
 [1] F. Rodin, "Elastohydrodynamic lubrication of connecting-rod big-end bearings",
     PhD thesis (2004), ch. 4 (the coupled algorithm and its increment safeguard).
@@ -126,6 +127,8 @@ class NewtonControls:
         typical step goes from 6e-5 to 2e-7 of c in one update) but contracts what is left,
         which lies where the film's active set moved, by only ~0.4 per update; a fresh
         Jacobian at that point converges quadratically (to 1e-14 in one update).
+    force_tolerance : float  |F + W|/W_s that ends the iteration [-] (default
+        :data:`FORCE_TOLERANCE`).
     """
 
     scale: float
@@ -134,6 +137,7 @@ class NewtonControls:
     max_solves: int
     chord: ChordJacobian | None = None
     refresh_after_first: bool = False
+    force_tolerance: float = FORCE_TOLERANCE
 
 
 @dataclass(frozen=True)
@@ -204,11 +208,11 @@ class _Iteration:
 
     def done(self, r: np.ndarray) -> bool:
         own, force = self.residuals(r)
-        return own <= self.controls.tolerance and force <= FORCE_TOLERANCE
+        return own <= self.controls.tolerance and force <= self.controls.force_tolerance
 
     def residuals(self, r: np.ndarray) -> tuple[float, float]:
         """(max|G| [unit of y], max|F + W|/W_s [-]) of the scaled residual."""
-        own = float(self.controls.scale * np.max(np.abs(r[:self.n])))
+        own = float(self.controls.scale * np.max(np.abs(r[:self.n]))) if self.n else 0.0
         force = float(np.max(np.abs(r[self.n:]))) if self.k else 0.0
         return own, force
 
@@ -235,7 +239,7 @@ class _Iteration:
             # the best trial is taken even when it does not descend: across a switch of the
             # film's cavitation set the residual is only piecewise smooth (semismooth Newton)
             z = z + best_lam * step
-            increment = float(c * np.max(np.abs(best_lam * step[:n])))
+            increment = float(c * np.max(np.abs(best_lam * step[:n]))) if n else 0.0
             r, h_min, payload = best
             updates += 1
             if (_norm(best) > CONTRACTION * norm or best_lam < 1.0
@@ -265,7 +269,7 @@ class _Iteration:
         return NewtonOutcome(
             controls.scale * z[:n], velocity, payload, self.solves, own, force, increment,
             own <= 1e3 * controls.tolerance and force <= ACCEPTABLE,
-            own <= controls.tolerance and force <= FORCE_TOLERANCE, updates)
+            own <= controls.tolerance and force <= controls.force_tolerance, updates)
 
     def inverse(self, blocks: StepBlocks) -> np.ndarray:
         """J⁻¹ of the scaled system from the exact blocks (module docstring)."""
@@ -321,7 +325,8 @@ def travel_limit(gap: np.ndarray, journal: np.ndarray, travel_scaled: np.ndarray
                  h_min_scaled: float, share: float) -> float:
     """Scale ≤ 1 keeping the change of the film thickness by y and the journal together,
     max|Δy_gap + T Δv|, ≤ share h_min (Rodin's Δ safeguard on the whole gap) [-]."""
-    change = float(np.max(np.abs(gap + travel_scaled @ journal)))
+    moved = travel_scaled @ journal
+    change = float(np.max(np.abs(gap + moved if gap.size else moved)))
     allowed = share * max(h_min_scaled, 0.0)
     return allowed / change if change > allowed and change > 0.0 else 1.0
 

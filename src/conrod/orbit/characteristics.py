@@ -20,6 +20,7 @@ import numpy as np
 
 from conrod.film.base import FilmResult, FilmState
 from conrod.orbit.problem import OrbitProblem
+from conrod.orbit.tilt_results import axial_of, tilt_items
 from conrod.orbit.trajectory import CycleTrajectory
 from conrod.results.cycle_results import CycleResults
 
@@ -42,11 +43,12 @@ def attitude_angle(
 
 
 def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[FilmState]:
-    """Film states at the output angles."""
+    """Film states at the output angles (with the journal's tilt when it has one)."""
     return [
         FilmState(eccentricity_x=float(traj.x[i]), eccentricity_y=float(traj.y[i]),
                   velocity_x=float(traj.vx[i]), velocity_y=float(traj.vy[i]),
-                  journal_speed=float(wj[i]), shell_speed=float(wb[i]), viscosity=problem.viscosity)
+                  journal_speed=float(wj[i]), shell_speed=float(wb[i]), viscosity=problem.viscosity,
+                  **tilt_items(traj.tilt, i))
         for i in range(traj.crank_angle.size)
     ]
 
@@ -96,8 +98,9 @@ def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory) -> Cycle
     rotation = journal_rotation(phi, relative, problem.crank_speed)
     contact_angle = np.arctan2(traj.y, traj.x) % TWO_PI
     tangential_speed = traj.vy * np.cos(contact_angle) - traj.vx * np.sin(contact_angle)
+    axial = axial_of(problem, traj, results)  # tilt or profile: moments, edge h_min
     return CycleResults(
-        crank_angle=phi, eccentricity_x=traj.x, eccentricity_y=traj.y,
+        axial=axial, crank_angle=phi, eccentricity_x=traj.x, eccentricity_y=traj.y,
         velocity_x=traj.vx, velocity_y=traj.vy,
         eccentricity_ratio=np.hypot(traj.x, traj.y) / problem.clearance,
         attitude_angle=attitude_angle(traj.x, traj.y, load_x, load_y),

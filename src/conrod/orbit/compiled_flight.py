@@ -76,9 +76,9 @@ def flight_segment(film_force, film_force_jacobian=None):
     ``(x, y, v_x, v_y, ω_j + ω_b, μ, params) -> (F_x, F_y)`` [N] and optionally its
     ``(F, ∂F/∂(e, ė))`` (None: forward differences of du/dφ); disk-cached when both
     are module-level numba functions."""
-    cache = _is_global(film_force) and (film_force_jacobian is None
-                                        or _is_global(film_force_jacobian))
-    name = _name(film_force) + ("" if film_force_jacobian is None else "_with_jacobian")
+    cache = is_global(film_force) and (film_force_jacobian is None
+                                       or is_global(film_force_jacobian))
+    name = stable_name(film_force) + ("" if film_force_jacobian is None else "_with_jacobian")
     jit = nb.njit(cache=True) if cache else nb.njit
     rhs = jit(bind_globals(_rhs, f"{name}_rhs", {"force": film_force}))
     jacobian = None
@@ -88,7 +88,7 @@ def flight_segment(film_force, film_force_jacobian=None):
     return specialise(name, rhs, jacobian, compiled=True, cache=cache)
 
 
-def _is_global(function) -> bool:
+def is_global(function) -> bool:
     """True for a numba function bound to its name in its module (not a closure)."""
     py_func = getattr(function, "py_func", None)
     module = sys.modules.get(getattr(py_func, "__module__", None) or "")
@@ -96,7 +96,7 @@ def _is_global(function) -> bool:
             and getattr(module, py_func.__name__, None) is function)
 
 
-def _name(function) -> str:
+def stable_name(function) -> str:
     """A stable identifier from the function's module and name."""
     py_func = getattr(function, "py_func", function)
     return f"{py_func.__module__}.{py_func.__name__}".replace(".", "_")

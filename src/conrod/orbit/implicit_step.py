@@ -40,7 +40,7 @@ from typing import Any
 import numpy as np
 
 from conrod.film.capabilities import HasContentStep, HasStepSystem
-from conrod.film.step_system import StepRequest
+from conrod.film.step_system import StepRequest, TiltRequest
 from conrod.orbit.problem import OrbitProblem, OrbitState, step_grid
 from conrod.orbit.progress import AngleReports
 from conrod.orbit.trajectory import CycleTrajectory
@@ -56,9 +56,10 @@ def needs_journal_step(film) -> bool:
 
 def steps_implicitly(problem: OrbitProblem) -> bool:
     """True when the orbit with mass of ``problem`` runs by the fixed implicit steps of this
-    module: a film content with its implicit step, or unknowns solved with the journal's."""
+    module: a film content with its implicit step, unknowns solved with the journal's, or a
+    tilted journal (:mod:`conrod.orbit.tilt_steps`)."""
     return ((problem.has_film_content and isinstance(problem.film, HasContentStep))
-            or needs_journal_step(problem.film))
+            or needs_journal_step(problem.film) or problem.tilt is not None)
 
 
 def implicit_step_deg(settings) -> float:
@@ -134,8 +135,10 @@ class StepPoint:
         return 2.0 * self.velocity - b.velocity
 
     def request(self, problem: OrbitProblem, phi1: float, dt: float, mass: np.ndarray,
-                load: np.ndarray, speeds: tuple[float, float]) -> StepRequest:
-        """The step to φ1 as a film with own unknowns sees it (τ, e_r, v_r of the formula)."""
+                load: np.ndarray, speeds: tuple[float, float],
+                tilt: TiltRequest | None = None) -> StepRequest:
+        """The step to φ1 as a film with own unknowns sees it (τ, e_r, v_r of the formula;
+        ``tilt`` the journal's tilt at the end of the step, None: aligned)."""
         b = self.before
         if b is None:
             tau, e_ref, v_ref, memories = dt, self.position, self.velocity, (self.memory,)
@@ -146,7 +149,7 @@ class StepPoint:
             memories = (self.memory, b.memory) + (
                 (b.before.memory,) if b.before is not None else ())
         return StepRequest(e_ref, v_ref, tau, dt, mass, load, speeds[0], speeds[1],
-                           problem.viscosity, phi1, b is not None, memories)
+                           problem.viscosity, phi1, b is not None, memories, tilt)
 
 
 def implicit_step_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
@@ -156,17 +159,20 @@ def implicit_step_cycle(problem: OrbitProblem, state: OrbitState, step_deg: floa
     phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)
     steps_of = _strategy(problem)(problem, with_mass)
     memory = state.film_memory if state.film_memory is not None else problem.film.initial_memory()
-    point = StepPoint((state.x, state.y), (state.vx, state.vy), memory)
+    point = StepPoint(*_start(steps_of, state), memory)
     contact = steps_of.starts_in_contact(state)
     force = steps_of.start_contact_force(state, memory) if contact else 0.0
     table, memories = np.zeros((n_out, 7)), [None] * n_out
+    tilts = np.zeros((n_out, 4)) if problem.tilt is not None else None
     taken, reports = 0, AngleReports()
     for k in range(len(phi) - 1):
         if k % record_every == 0:
             row = k // record_every
-            table[row] = (*point.position, *point.velocity, force,
+            table[row] = (*point.position[:2], *point.velocity[:2], force,
                           problem.dry_friction * force, float(contact))
             memories[row] = point.memory
+            if tilts is not None:
+                tilts[row] = steps_of.tilt_at(point, phi[k])
         done, count, whole = _advance(steps_of, phi[k], phi[k + 1], point, contact)
         taken += count
         steps_of.check_budget(taken, len(phi) - 1, phi[k + 1])
@@ -175,14 +181,30 @@ def implicit_step_cycle(problem: OrbitProblem, state: OrbitState, step_deg: floa
         contact, force = done.in_contact, done.contact_force
         reports.reached(phi[k + 1])
     end = OrbitState(float(point.position[0]), float(point.position[1]),
-                     float(point.velocity[0]), float(point.velocity[1]), contact, point.memory)
+                     float(point.velocity[0]), float(point.velocity[1]), contact, point.memory,
+                     None if tilts is None else steps_of.tilt_at(point, phi[-1]))
     trajectory = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end, taken)
     trajectory.film_memory = memories
+    trajectory.tilt = tilts
     return trajectory
 
 
+def _start(steps_of, state: OrbitState) -> tuple[tuple, tuple]:
+    """(position, velocity) of the journal's degrees of freedom at the start of a cycle:
+    (x, y), or with a solved tilt those of the strategy (:mod:`conrod.orbit.tilt_steps`)."""
+    start = getattr(steps_of, "start_point", None)
+    if start is None:
+        return (state.x, state.y), (state.vx, state.vy)
+    return start(state)
+
+
 def _strategy(problem: OrbitProblem):
-    """The steps of this film: its content step, else its step system."""
+    """The steps of this film: with a tilted journal the tilt's steps; its content step,
+    else its step system."""
+    if problem.tilt is not None:
+        from conrod.orbit.tilt_steps import TiltSteps
+
+        return TiltSteps
     if isinstance(problem.film, HasContentStep):
         from conrod.orbit.content_steps import ContentSteps
 

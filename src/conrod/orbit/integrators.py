@@ -82,7 +82,7 @@ class AdaptiveIntegrator:
         with a fixed step."""
         from conrod.orbit.adaptive import adaptive_cycle
 
-        if needs_journal_step(problem.film):
+        if needs_journal_step(problem.film) or problem.tilt is not None:
             return _fixed_step_cycle(problem, state, settings)
         if problem.has_film_content:
             raise CaseError(
@@ -133,7 +133,10 @@ class ImplicitIntegrator:
         elastic bore) runs the fixed BDF2 steps of :mod:`conrod.orbit.implicit_step` with
         mass at the largest step ≤ ``max_step_deg`` that divides ``output_step_deg``."""
         from conrod.orbit.implicit import implicit_cycle
+        from conrod.orbit.tilt_flight import applies, tilt_flight_cycle
 
+        if applies(problem):  # a tilted journal on the rigid Reynolds film: compiled
+            return tilt_flight_cycle(problem, state, settings)
         if steps_implicitly(problem):
             return _fixed_step_cycle(problem, state, settings)
         return implicit_cycle(problem, state, settings)
@@ -149,8 +152,13 @@ class HeunIntegrator:
     journal_step: bool = False
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
-        """One cycle of fixed-step Heun integration."""
+        """One cycle of fixed-step Heun integration (an aligned journal only)."""
         from conrod.orbit.rk2 import rk2_cycle
+
+        if problem.tilt is not None:
+            raise CaseError("solver.integrator = 'rk2' with [misalignment]: the explicit "
+                            "steps do not carry the journal's tilt (allowed: auto, implicit, "
+                            "adaptive, quasi_static)")
 
         return rk2_cycle(problem, state, settings.step_deg, settings.output_step_deg,
                          settings)
@@ -167,8 +175,13 @@ class QuasiStaticIntegrator:
     journal_step: bool = True
 
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
-        """One cycle of the massless orbit."""
+        """One cycle of the massless orbit; a tilted journal takes the implicit steps of
+        :mod:`conrod.orbit.tilt_steps` without mass or inertia."""
         from conrod.orbit.quasi_static import quasi_static_cycle
+
+        if problem.tilt is not None:
+            return implicit_step_cycle(problem, state, settings.quasi_static_step_deg,
+                                       settings.output_step_deg, with_mass=False)
 
         return quasi_static_cycle(problem, state, settings.quasi_static_step_deg,
                                   settings.output_step_deg)

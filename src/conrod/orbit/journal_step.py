@@ -24,7 +24,13 @@ import numpy as np
 
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.step_system import StepRequest, StepSystem
-from conrod.numerics.newton import NewtonControls, NewtonOutcome, StepBlocks, solve_step
+from conrod.numerics.newton import (
+    FORCE_TOLERANCE,
+    NewtonControls,
+    NewtonOutcome,
+    StepBlocks,
+    solve_step,
+)
 
 
 class JournalStep:
@@ -46,7 +52,8 @@ class JournalStep:
         g, force, h_min, payload = self.system.evaluate(own, velocity)
         force = force - self.mass * (velocity - request.velocity_reference) / request.tau
         if self.extra_force is not None:
-            force = force + np.asarray(self.extra_force(*request.position(velocity)))
+            extra = np.asarray(self.extra_force(*request.position(velocity)[:2]))
+            force = force + (extra if force.size == 2 else np.pad(extra, (0, force.size - 2)))
         return g, force, h_min, payload
 
     def respond(self, payload: Any) -> StepBlocks:
@@ -80,7 +87,10 @@ def solve_journal_step(film, request: StepRequest, guess: np.ndarray, velocity_s
         newton = solve_step(JournalStep(system, request, extra_force), guess, request.load,
                             NewtonControls(system.scale, velocity_scale, system.tolerance,
                                            system.max_solves, system.chord,
-                                           refresh_after_first=True))
+                                           refresh_after_first=getattr(
+                                               system, "refresh_after_first", True),
+                                           force_tolerance=getattr(
+                                               system, "force_tolerance", FORCE_TOLERANCE)))
     except (CaseError, ConvergenceError):
         return None
     return JournalOutcome(newton, system.finish(newton))

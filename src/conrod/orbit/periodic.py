@@ -220,9 +220,10 @@ def _implicit(chosen: Integrator, problem: OrbitProblem) -> bool:
     ``massless_start``, :mod:`conrod.orbit.integrators`): not for a film whose own unknowns
     are solved with the journal's step (the elastic bore), whose massless orbit costs as
     much as the one with mass (KamAZ-740, 36 × 8: periodic after 3 cycles from rest either
-    way)."""
+    way); nor for a tilted journal or a profiled bore, whose massless orbit is not compiled."""
     return (declared(resolved(chosen, problem), "massless_start")
-            and not needs_journal_step(problem.film))
+            and not needs_journal_step(problem.film) and problem.tilt is None
+            and not getattr(problem.film.geometry.profile, "active", False))
 
 
 def _massless_start(problem: OrbitProblem, settings) -> OrbitState | None:

@@ -41,6 +41,8 @@ class OrbitState:
     film_memory : object or None  Memory of a film with
         :class:`~conrod.film.capabilities.HasMemory` (warm start, film content); None: the
         film's initial memory.
+    tilt : tuple or None  Journal tilt (γ_x, γ_y [rad], γ̇_x, γ̇_y [rad/s]) of a run whose
+        tilt is solved (:class:`~conrod.loads.tilt.JournalTilt`); None: aligned.
     """
 
     x: float = 0.0
@@ -49,6 +51,7 @@ class OrbitState:
     vy: float = 0.0
     in_contact: bool = False
     film_memory: Any = None
+    tilt: tuple[float, float, float, float] | None = None
 
 
 @dataclass(frozen=True)
@@ -65,6 +68,9 @@ class OrbitProblem:
         :func:`conrod.contact.asperity.asperity_force`: mixed lubrication; the rigid asperity
         force is added to the film force unless the film carries it
         (:attr:`rigid_asperity`).
+    tilt : JournalTilt or None  The journal's tilt, prescribed or solved as two more degrees
+        of freedom (:mod:`conrod.loads.tilt`, :mod:`conrod.orbit.tilt_steps`); None:
+        aligned.
     """
 
     film: FilmModel
@@ -75,6 +81,7 @@ class OrbitProblem:
     dry_friction: float = 0.1
     contact_film_thickness: float = 0.0
     asperity: tuple[float, float, float, float] | None = None
+    tilt: Any = None
 
     @property
     def clearance(self) -> float:
@@ -119,7 +126,7 @@ class OrbitProblem:
         """Same problem with another viscosity [Pa s]."""
         return OrbitProblem(
             self.film, self.loads, viscosity, self.mass_x, self.mass_y,
-            self.dry_friction, self.contact_film_thickness, self.asperity,
+            self.dry_friction, self.contact_film_thickness, self.asperity, self.tilt,
 )
 
     @property

@@ -68,9 +68,9 @@ def stage(phi, base, guess, dh, inverse, params, data, atol, rtol, eta, evaluate
 
 
 def _fd_jacobian(phi, u, f0, params, data):
-    """Forward-difference J = ∂f/∂u (4 × 4) [-] of the bound ``rhs``."""
-    jac = np.empty((4, 4))
-    for j in range(4):
+    """Forward-difference J = ∂f/∂u (n × n) [-] of the bound ``rhs``."""
+    jac = np.empty((u.size, u.size))
+    for j in range(u.size):
         step = 1.0e-7 * max(1.0, abs(u[j]))
         shifted = u.copy()
         shifted[j] += step
@@ -182,7 +182,8 @@ def _segment(params, data, phi, end, u, h, max_step, rtol, atol, circle,
     """Integrate du/dφ = rhs(φ, u, params, data) from φ to ``end`` (free flight), with
     the ``rhs``, ``jacobian`` and ``stage`` bound by :func:`specialise`.
 
-    u : scaled state (x/c, y/c, v_x/(c ω), v_y/(c ω)) [-]; h, max_step [rad];
+    u : scaled state (x/c, y/c, v_x/(c ω), v_y/(c ω)) [-], or any other size (a tilted
+    journal's, :mod:`conrod.orbit.tilt_flight`); h, max_step [rad];
     circle : contact radius / c [-] (the segment stops where the centre reaches it);
     out_phi : output angles [rad]; rows of ``out_u`` from ``next_out`` on are filled as
     the steps reach them: a step that would pass the next output angle is shortened to
@@ -195,7 +196,7 @@ def _segment(params, data, phi, end, u, h, max_step, rtol, atol, circle,
     jac = jacobian(phi, u, f, params, data)
     fresh = True
     evaluations = 1
-    eye = np.eye(4)
+    eye = np.eye(u.size)
     dh_inverse = -1.0
     inverse = eye
     steps = 0

@@ -24,6 +24,8 @@ class CycleTrajectory:
     steps : int  Integrator steps taken [-].
     film_memory : list or None  Film memory (warm start, mass-conserving film fraction ϑ)
         at each output angle, for films with memory that a Python loop carried.
+    tilt : ndarray or None  Journal tilt (γ_x, γ_y [rad], γ̇_x, γ̇_y [rad/s]) at each output
+        angle, shape (n, 4), of a tilted run; None: aligned.
     """
 
     crank_angle: np.ndarray
@@ -37,6 +39,7 @@ class CycleTrajectory:
     end_state: OrbitState
     steps: int = 0
     film_memory: list[Any] | None = None
+    tilt: np.ndarray | None = None
 
     @classmethod
     def from_table(

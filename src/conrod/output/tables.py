@@ -14,7 +14,8 @@ from conrod.loads.engine_loads import EngineLoads
 from conrod.mechanism.regimes import SweepRun
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults, MechanismRun
 from conrod.output.registry import TableSpec, result_kind, tables
-from conrod.results.columns import CYCLE_COLUMNS
+from conrod.results.axial import axial_summary_items
+from conrod.results.columns import CYCLE_COLUMNS, axial_table
 from conrod.results.cycle_results import RunResults
 
 LOADS_COLUMNS = (
@@ -51,6 +52,7 @@ def cycle_table(results: RunResults) -> dict[str, np.ndarray]:
         table[column] = convert(values) if convert is not None else values
     if results.contact is not None:
         table.update(results.contact.cycle_columns())
+    table.update(axial_table(results.cycle.axial))  # tilt, moments, edge h_min (if any)
     return table
 
 
@@ -64,6 +66,8 @@ def summary_items(results: RunResults) -> dict:
              "case_hash_sha256": results.case_hash, "converged": results.summary.periodic,
              "solver_settings": results.settings}
     items.update(results.summary.as_json_items())
+    if results.cycle.axial is not None:  # edge h_min and moments of a tilt or a profile
+        items.update(axial_summary_items(results.cycle.crank_angle, results.cycle.axial))
     if results.contact is not None:
         items.update(results.contact.summary_items())
     return items

@@ -39,3 +39,31 @@ DATAFRAME_NAMES = {"eccentricity_x": "eccentricity_x_m", "eccentricity_y": "ecce
                    "eccentricity_ratio": "eccentricity_ratio_1"}
 """cycle.csv columns renamed in :meth:`CycleResults.to_dataframe` so that every name ends
 in its unit (``_1``: dimensionless)."""
+
+AXIAL_COLUMNS = {
+    "tilt_x_rad": ("tilt_x", None),
+    "tilt_y_rad": ("tilt_y", None),
+    "tilt_rate_x_rad_s": ("tilt_rate_x", None),
+    "tilt_rate_y_rad_s": ("tilt_rate_y", None),
+    "moment_x_N_m": ("moment_x", None),
+    "moment_y_N_m": ("moment_y", None),
+    "external_moment_x_N_m": ("external_moment_x", None),
+    "external_moment_y_N_m": ("external_moment_y", None),
+    "h_min_axial_position_m": ("h_min_axial_position", None),
+    "h_min_at_edge": ("h_min_at_edge", None),
+    "edge_h_min_m": ("edge_h_min", None),
+}
+"""cycle.csv columns of a tilted journal or a profiled bore → (key of ``CycleResults.axial``,
+conversion) (:mod:`conrod.results.axial`); absent for an aligned cylindrical bearing."""
+
+
+def axial_table(axial: dict | None) -> dict[str, np.ndarray]:
+    """The :data:`AXIAL_COLUMNS` of ``CycleResults.axial`` (bools as 0/1); {} when None."""
+    if axial is None:
+        return {}
+    table = {}
+    for column, (key, convert) in AXIAL_COLUMNS.items():
+        values = np.asarray(axial[key])
+        values = values.astype(int) if values.dtype == bool else values
+        table[column] = convert(values) if convert is not None else values
+    return table

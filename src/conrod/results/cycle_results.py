@@ -69,6 +69,9 @@ class CycleResults:
     """Surface sliding speed at the contact point V_k + (ω_j − ω_b) R [m/s]."""
     in_contact: np.ndarray
     """True where the journal touches the shell [-]."""
+    axial: dict[str, np.ndarray] | None = None
+    """Tilt [rad, rad/s], moments [N m], h_min axial position and edge h_min [m] per angle
+    of a tilted journal or a profiled bore (:mod:`conrod.results.axial`); None: aligned."""
 
     def __len__(self) -> int:
         return int(self.crank_angle.size)
@@ -84,13 +87,14 @@ class CycleResults:
         ``crank_angle_deg``, ...; angles in degrees)."""
         import pandas as pd
 
-        from conrod.results.columns import CYCLE_COLUMNS, DATAFRAME_NAMES
+        from conrod.results.columns import CYCLE_COLUMNS, DATAFRAME_NAMES, axial_table
 
         columns = {}
         for column, (name, convert) in CYCLE_COLUMNS.items():
             values = np.asarray(getattr(self, name))
             columns[DATAFRAME_NAMES.get(column, column)] = (
                 convert(values) if convert is not None else values)
+        columns.update(axial_table(self.axial))
         return pd.DataFrame(columns)
 
 

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 
+from conrod.results.axial import axial_headline
 from conrod.results.cycle_results import CycleResults, RunResults, RunSummary
 
 CONTACT_SHARE_WARNING = 0.25
@@ -100,6 +101,8 @@ def headline(results: RunResults) -> dict[str, str]:
         f"{s.film_model} film", f"{s.integrator} integrator", model.get("housing"),
         model.get("viscosity"))))}
     lines["film h_min"] = _film_h_min_text(cycle)
+    if cycle.axial is not None:  # a tilted journal or a profiled bore: edge h_min, moments
+        lines.update(axial_headline(cycle.crank_angle, cycle.axial))
     lines["contact"] = _contact_text(cycle, results.contact)
     lines["p_max"] = f"{s.p_max / 1e6:.2f} MPa at {math.degrees(s.p_max_crank_angle):.0f}°"
     lines["friction power"] = (f"{s.mean_total_friction_power:.1f} W = film "

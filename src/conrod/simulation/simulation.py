@@ -32,6 +32,7 @@ from conrod.film.capabilities import SupportsDeformation
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
+from conrod.loads.tilt import cycle_tilt, journal_tilt
 from conrod.orbit.characteristics import cycle_characteristics
 from conrod.orbit.heat_balance import effective_temperature, relaxed_update
 from conrod.orbit.integrators import Integrator
@@ -197,7 +198,7 @@ class Simulation:
         return OrbitProblem(
             film, self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
-            _asperity_parameters(self.case),
+            _asperity_parameters(self.case), journal_tilt(self.case, self.load_cycle()),
         )
 
     # -- run --------------------------------------------------------------------------
@@ -411,7 +412,7 @@ def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list 
         eccentricity_y=float(cycle.eccentricity_y[i]),
         velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
         journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
-        viscosity=problem.viscosity,
+        viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i),
     )
     session = problem.session(film_memory[i] if film_memory else None)
     field = session.accepted(state, with_pressure=True).pressure

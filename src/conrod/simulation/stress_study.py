@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from conrod.film.base import FilmState
+from conrod.loads.tilt import cycle_tilt
 from conrod.results.housing import StressResults
 from conrod.simulation.simulation import Simulation
 
@@ -31,7 +32,8 @@ def rigid_run_pressures(case, crank_angles_deg: list[float]):
                           velocity_x=float(cycle.velocity_x[k]),
                           velocity_y=float(cycle.velocity_y[k]),
                           journal_speed=float(cycle.journal_speed[k]),
-                          shell_speed=float(cycle.shell_speed[k]), viscosity=viscosity)
+                          shell_speed=float(cycle.shell_speed[k]), viscosity=viscosity,
+                          **cycle_tilt(cycle.axial, k))
         fields.append(film.solve(state, with_pressure=True).pressure)
     return np.asarray(theta), np.asarray(z), fields
 

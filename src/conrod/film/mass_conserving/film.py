@@ -48,8 +48,10 @@ from conrod.film.mass_conserving.kernel import (
 )
 from conrod.film.mass_conserving.memory import FULL, FilmFields, MassConservingMemory
 from conrod.film.piezoviscosity import PressureViscosity
+from conrod.film.profile import profile_field
 from conrod.film.rated_state import state_rate
 from conrod.film.supply import nearest_theta_index, supply_mask
+from conrod.film.tilt import axial_gap, tilt_fields
 
 __all__ = ["FULL", "FilmFields", "MassConservingFilm", "MassConservingMemory"]
 
@@ -103,6 +105,7 @@ class MassConservingFilm:
         self._edge = np.zeros((self.n_theta, self.n_z + 1), dtype=bool)
         self._edge[:, [0, -1]] = True
         self._supply = supply_mask(g, self.film_grid)
+        self._profile = profile_field(g, theta, self.film_grid.z)
         self._fixed = np.where(self._supply, g.supply_pressure, 0.0) - g.cavitation_pressure
         if self.method not in ("multigrid", "sor"):
             raise CaseError(f"method = {self.method!r}: allowed 'multigrid' or 'sor'")
@@ -231,13 +234,21 @@ class MassConservingFilm:
         if state.deformation is not None and np.shape(state.deformation) != self._edge.shape:
             raise CaseError(f"deformation shape = {np.shape(state.deformation)}: allowed "
                             f"{self._edge.shape} = (n_theta, n_z + 1) [m]")
-        deformation = (np.empty((0, 0)) if state.deformation is None
-                       else np.ascontiguousarray(state.deformation, dtype=float))
+        added = state.deformation
+        tilt, tilt_rate = (tilt_fields(state, self._cos_theta, self._sin_theta,
+                                       self.film_grid.z) if state.tilted else (None, None))
+        axial = axial_gap(self._profile, tilt)  # the profile h₀ and the tilt (conrod.film.tilt)
+        if axial is not None:
+            added = axial if added is None else added + axial
+        deformation = (np.empty((0, 0)) if added is None
+                       else np.ascontiguousarray(added, dtype=float))
         h, a_east, a_north, couette, squeeze = assemble(
             self._cos_theta, self._sin_theta, self.n_z + 1, g.radial_clearance,
             state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
             deformation, dx, dz, mu, g.radius * (state.journal_speed + state.shell_speed),
 )
+        if tilt_rate is not None:  # the tilt rate in the squeeze term 12μΔxΔz ∂h/∂t
+            squeeze = squeeze + 12.0 * state.viscosity * dx * dz * tilt_rate
         rate = state_rate(state) if self.deformation_rate else None
         if rate is not None:  # the bore's own rate in the squeeze term 12μΔxΔz ∂h/∂t
             squeeze = squeeze + 12.0 * state.viscosity * dx * dz * rate
@@ -249,7 +260,7 @@ class MassConservingFilm:
         return FilmFields(
             h=h, a_east=a_east, a_north=a_north, couette_east=couette, squeeze=squeeze,
             edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed_values(state),
-            has_deformation=state.deformation is not None,
+            has_deformation=added is not None,
 )
 
     # ------------------------------------------------------------------ transient

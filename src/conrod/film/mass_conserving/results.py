@@ -16,6 +16,7 @@ import numpy as np
 
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.mass_conserving.memory import FilmFields
+from conrod.film.tilt import axial_summary, moment_weights
 
 
 def axial_weights(n_z: int, dz: float) -> np.ndarray:
@@ -51,6 +52,10 @@ def film_characteristics(
                * float(np.sum(shear / f.h * weights)))
     edge_in, supply_in = (flow / (12.0 * state.viscosity) for flow in inflows)
     k_h = int(np.argmin(f.h))
+    cos_theta, sin_theta = model.node_directions
+    axial = axial_summary(f.h, k_h // f.h.shape[1], model.film_grid, g.radial_clearance,
+                          gauge, moment_weights(cos_theta, sin_theta, model.film_grid.z,
+                                                model.film_grid.area_weights), False)
     k_p = int(np.argmax(gauge))
     free = f.free
     content = float(np.sum((fraction * f.h)[free])) * dx * dz
@@ -69,5 +74,5 @@ def film_characteristics(
         max_pressure_angle=float(theta[k_p // gauge.shape[1]]),
         cavitated_fraction=float(np.mean(pressure[free] <= 0.0)) if free.any() else 0.0,
         friction_power=abs((wedge_part - couette) * sliding),
-        extra=extra,
+        extra=extra, **axial,
     )

@@ -31,53 +31,22 @@ from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest
 from conrod.film.characteristics import FilmGrid
 from conrod.film.piezoviscosity import PressureViscosity
+from conrod.film.profile import profile_field
 from conrod.film.rated_state import state_rate
 from conrod.film.reynolds import kernel as kernel
 from conrod.film.reynolds import multigrid as multigrid
 from conrod.film.reynolds.memory import ReynoldsMemory, scaled_state
+from conrod.film.reynolds.problem import DiscreteProblem as _Problem
+from conrod.film.reynolds.problem import optimal_relaxation
 from conrod.film.reynolds.results import reynolds_characteristics
 from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
+from conrod.film.tilt import axial_gap, moment_weights, tilt_fields
 
 FrictionConvention = Literal["full_film", "film_fraction"]
 SolverMethod = Literal["multigrid", "sor"]
 NESTED_TOLERANCE = 1.0e-4
 """Tolerance of the coarser grids of a cold start [-]: their answer only seeds the next
 grid, whose own discretisation differs by ~1e-3, so converging them further is wasted."""
-
-
-def optimal_relaxation(grid: FilmGrid) -> float:
-    """SOR factor ω = 2/(1 + √(1 − ρ_J²)) of the constant-h model problem [-].
-
-    ρ_J = (a_θ + a_z cos(π/n_z))/(a_θ + a_z), a_θ = 1/(RΔθ)², a_z = 1/Δz² — the slowest
-    mode is uniform in θ (periodic) and a half sine in z (Young's theory of SOR).
-    """
-    a_theta = 1.0 / (grid.radius * grid.d_theta) ** 2
-    a_z = 1.0 / grid.d_z**2
-    rho = (a_theta + a_z * math.cos(math.pi / grid.n_z)) / (a_theta + a_z)
-    return 2.0 / (1.0 + math.sqrt(1.0 - rho * rho))
-
-
-@dataclass
-class _Problem:
-    """Discrete problem of one grid level (arrays in SI units)."""
-
-    grid: FilmGrid
-    h: np.ndarray
-    h_rate: np.ndarray
-    fixed: np.ndarray
-    fixed_values: np.ndarray
-    cavitation: float = 0.0
-    """Cavitation bound of the solved variable (reduced pressure when piezoviscous) [Pa]."""
-    coefficients: tuple | None = None
-    """(a_E, a_N, b) of the last solve on this level (reused by the characteristics)."""
-
-    def coarsened(self) -> _Problem:
-        """The same problem on every other node (coinciding nodes, exact subsampling)."""
-        g = self.grid
-        coarse = FilmGrid(g.radius, g.width, g.n_theta // 2, g.n_z // 2)
-        return _Problem(coarse, self.h[::2, ::2].copy(), self.h_rate[::2, ::2].copy(),
-                        self.fixed[::2, ::2].copy(), self.fixed_values[::2, ::2].copy(),
-                        self.cavitation)
 
 
 @dataclass
@@ -148,12 +117,16 @@ class ReynoldsFilm:
         self._supply = supply_mask(g, self.film_grid)
         self._edges = edge_mask(self.film_grid)
         self._fixed = self._edges | self._supply
+        self._moment_weights: tuple[np.ndarray, np.ndarray] | None = None
         self._fixed.setflags(write=False)  # shared by every problem: never modified
         self._supply_values = np.where(self._supply, g.supply_pressure, 0.0)
         self._supply_values.setflags(write=False)
         self._force_weights = chars.force_weights(self.film_grid)
+        self._profile = profile_field(g, self.film_grid.theta, self.film_grid.z)
         self._symmetric = (self.use_symmetry and self.method == "multigrid"
-                           and np.array_equal(self._supply, self._supply[:, ::-1]))
+                           and np.array_equal(self._supply, self._supply[:, ::-1])
+                           and (self._profile is None
+                                or np.array_equal(self._profile, self._profile[:, ::-1])))
 
     @classmethod
     def from_settings(cls, geometry: BearingGeometry, settings: Any) -> ReynoldsFilm:
@@ -199,16 +172,17 @@ class ReynoldsFilm:
         return -sum_x, -sum_y, self._memory_after(memory, reduced, state)
 
     def sensitivities(self, state: FilmState):
-        """Force, stiffness K = −∂F/∂e [N/m] and damping C = −∂F/∂ė [N s/m] from one
-        solve and two adjoint solves on the converged active set
-        (:func:`conrod.film.linearised.linearise_reynolds`); central differences of the
-        force when the viscosity depends on pressure (a pressure-dependent viscosity maps
-        the solved field nonlinearly to the pressure)."""
+        """Force and moments, stiffness K = −∂Q/∂q and damping C = −∂Q/∂q̇ of
+        Q = (F_x, F_y, M_x, M_y) by q = (e_x, e_y, γ_x, γ_y) (the 4 × 4 set; its 2 × 2 block
+        in ``stiffness``, ``damping`` [N/m, N s/m]) from one solve and four adjoint solves
+        on the converged active set (:func:`conrod.film.linearised.linearise_reynolds`);
+        central differences when the viscosity depends on pressure (a pressure-dependent
+        viscosity maps the solved field nonlinearly to the pressure)."""
         from conrod.film.linearised import linearise_by_differences, linearise_reynolds
 
         if self.pressure_viscosity is None:
-            return linearise_reynolds(self, state)
-        return linearise_by_differences(self, state)
+            return linearise_reynolds(self, state, tilt=True)
+        return linearise_by_differences(self, state, tilt=True)
 
     def force_jacobian(self, state: FilmState, memory: ReynoldsMemory):
         """(F [N], ∂F/∂(e, ė) (2 × 4) [N/m, N s/m], memory) from the linearised solve on
@@ -219,6 +193,14 @@ class ReynoldsFilm:
         lin = linearise_reynolds(self, state, memory=memory)
         return lin.force, np.hstack([-lin.stiffness, -lin.damping]), memory
 
+    def tilt_jacobian(self, state: FilmState, memory: ReynoldsMemory,
+                      tolerance: float | None = None, tilt: bool = True):
+        """(Q = (F, M) [N, N m], ∂Q/∂(e, γ, ė, γ̇) (4 × 8), memory), adjoints to
+        ``tolerance`` (:func:`conrod.film.linearised.tilt_jacobian`, ``tilt`` False: F)."""
+        from conrod.film.linearised import tilt_jacobian
+
+        return tilt_jacobian(self, state, memory, tolerance, tilt)
+
     def flight_kernel(self, memory: ReynoldsMemory | None, newton_tolerance: float):
         """Compiled force and Jacobian warm-started from ``memory`` for the implicit orbit
         with mass (:func:`conrod.film.reynolds.flight.flight_kernel`; None when not exact
@@ -226,6 +208,12 @@ class ReynoldsFilm:
         from conrod.film.reynolds.flight import flight_kernel
 
         return flight_kernel(self, memory, newton_tolerance)
+
+    def tilt_flight_kernel(self, memory: Any, newton_tolerance: float, free: bool = True):
+        """Compiled forces and moments of a tilted journal (or None, ``tilt_flight``)."""
+        from conrod.film.reynolds.tilt_flight import tilt_flight_kernel
+
+        return tilt_flight_kernel(self, memory, newton_tolerance, free)
 
     def with_deformation_rate(self) -> ReynoldsFilm:
         """This film with the bore's rate in its squeeze term
@@ -245,17 +233,32 @@ class ReynoldsFilm:
         return self.pressure_viscosity is None
 
     def thickness_response(self, state: FilmState, solved: Any, nodal: np.ndarray,
-                           rate_step: float | None):
-        """Response of the nodal loads and the force to the film thickness at the solve
-        ``solved`` (:func:`conrod.film.reynolds.response.thickness_response`)."""
+                           rate_step: float | None, tilt: tuple[float, float] | None = None):
+        """Response of the nodal loads and the force (with ``tilt`` = (τ, ℓ) also of the
+        moments, and by the edge velocities) to the film thickness at the solve ``solved``
+        (:func:`conrod.film.reynolds.response.thickness_response`)."""
         from conrod.film.reynolds.response import thickness_response
 
-        return thickness_response(self, state, solved.pressure, nodal, rate_step)
+        return thickness_response(self, state, solved.pressure, nodal, rate_step, tilt)
 
     @property
     def force_weights(self) -> tuple[np.ndarray, np.ndarray]:
         """(w_x, w_y) with the film force F = −Σ p (w_x, w_y) [m²]."""
         return self._force_weights
+
+    @property
+    def moment_weights(self) -> tuple[np.ndarray, np.ndarray]:
+        """(w_Mx, w_My) with the moments M = −Σ p (w_Mx, w_My) [m³]
+        (:func:`conrod.film.tilt.moment_weights`)."""
+        if self._moment_weights is None:
+            self._moment_weights = moment_weights(self._cos_nodes, self._sin_nodes,
+                                                  self.film_grid.z, self.film_grid.area_weights)
+        return self._moment_weights
+
+    @property
+    def profile(self) -> np.ndarray | None:
+        """The bore/shell profile h₀ on the grid [m] (None: a cylindrical bore)."""
+        return self._profile
 
     @property
     def node_directions(self) -> tuple[np.ndarray, np.ndarray]:
@@ -303,7 +306,8 @@ class ReynoldsFilm:
         g = self.geometry
         exact = (self.method == "multigrid" and not self.ambient_line_at_max_gap
                  and g.supply_pressure == 0.0 and g.cavitation_pressure == 0.0
-                 and self.pressure_viscosity is None)  # homogeneous in v_s only if isoviscous
+                 and self.pressure_viscosity is None  # homogeneous in v_s only if isoviscous
+                 and self._profile is None)  # and on a circular bore
         return CompiledKernel(None, (), self._squeeze_cycle) if exact else None
 
     def _squeeze_cycle(self, request: QuasiStaticRequest) -> Any:
@@ -329,6 +333,13 @@ class ReynoldsFilm:
         h, h_rate = kernel.film_gap(g.radial_clearance, state.eccentricity_x,
                                     state.eccentricity_y, state.velocity_x, state.velocity_y,
                                     self._cos_nodes, self._sin_nodes, self.n_z + 1)
+        tilt, tilt_rate = tilt_fields(state, self._cos_nodes, self._sin_nodes,
+                                      self.film_grid.z) if state.tilted else (None, None)
+        axial = axial_gap(self._profile, tilt)
+        if axial is not None:  # the profile h₀ and the journal's tilt (conrod.film.tilt)
+            h = h + axial
+        if tilt_rate is not None:
+            h_rate = h_rate + tilt_rate
         rate = state_rate(state) if self.deformation_rate else None
         if rate is not None:  # the bore's own rate in the squeeze term
             h_rate = h_rate + rate
@@ -373,7 +384,8 @@ class ReynoldsFilm:
                tolerance: float, fixed_set: bool = False) -> tuple[int, float]:
         """Solve ``level`` in place on ``pressure`` (its Dirichlet values already there
         when ``fixed_set``); (sweeps, last relative change [-])."""
-        symmetric = self._symmetric and state.deformation is None and level.grid.n_z % 4 == 0
+        symmetric = (self._symmetric and state.deformation is None and not state.tilted
+                     and level.grid.n_z % 4 == 0)
         g = level.grid
         a_east, a_north, source = kernel.assemble_coefficients(
             level.h, level.h_rate, g.radius, g.d_theta, g.d_z,

@@ -10,7 +10,9 @@ mean frame,
           \\mathbf v_s = \\dot{\\mathbf e} − κ\\bar ω(−e_y, e_x),\\; κ = \\sin Δθ/Δθ,
 
 exactly the central-difference wedge plus squeeze term of
-:func:`conrod.film.reynolds.kernel.assemble_coefficients` (Booker [1];
+:func:`conrod.film.reynolds.kernel.assemble_coefficients` (Booker [1]; a bore profile h₀
+adds its film thickness and its own wedge term, −6μ(ω_j + ω_b) R w_z (h₀,i+1 − h₀,i−1)/2,
+a source that does not depend on the state;
 :mod:`conrod.film.reynolds.squeeze`), so a force evaluation is one call of the compiled
 projected multigrid (:func:`conrod.film.reynolds.multigrid.multigrid_solve`) on the same
 grid, masks, supply pressure, cavitation pressure and mid-plane symmetry as the film,
@@ -62,8 +64,8 @@ class FlightKernel:
     jacobian : numba function ``(x, y, v_x, v_y, ω_j + ω_b, μ, params) -> (F (2,), J (2, 4))``
         with J = ∂F/∂(e_x, e_y, ė_x, ė_y) [N, N/m, N s/m].
     params : tuple  Grid arrays, the warm-start field (changed in place by every call),
-        the tangents ∂p/∂q of the last Jacobian and the state q of the last solve, and the
-        counters :data:`STATS`.
+        the tangents ∂p/∂q of the last Jacobian and the state q of the last solve, the bore
+        profile and its wedge source (empty without one), and the counters :data:`STATS`.
     """
 
     force: Any
@@ -114,12 +116,35 @@ def flight_kernel(film, memory, newton_tolerance: float) -> FlightKernel | None:
     tolerances = np.array([max(float(newton_tolerance), film.tolerance),
                            min(JACOBIAN_TOLERANCE, max(float(newton_tolerance),
                                                        film.tolerance))])
+    profile, profile_source = profile_arrays(film, grid)
     params = (np.ascontiguousarray(field), grid.fixed, grid.source_x, grid.source_y,
               grid.weight_x, grid.weight_y, grid.cos_t, grid.sin_t, radius, d_theta, d_z,
               clearance, grid.n_coarse, grid.symmetric, float(g.cavitation_pressure),
               math.sin(d_theta) / d_theta, tolerances, int(film.max_iterations),
-              np.zeros((4,) + field.shape), np.zeros(5), np.zeros(3))
+              np.zeros((4,) + field.shape), np.zeros(5), profile, profile_source,
+              np.zeros(3))
     return FlightKernel(reynolds_force, reynolds_jacobian, params, film)
+
+
+def profile_arrays(film, grid) -> tuple[np.ndarray, np.ndarray]:
+    """The bore profile h₀ [m] on the kernel's grid and its wedge source per unit μ(ω_j + ω_b)
+    [m⁴] (−3 R w_z (h₀,i+1 − h₀,i−1), the profile's part of the source of
+    :func:`conrod.film.reynolds.kernel.assemble_coefficients`, 0 on Dirichlet nodes); empty
+    (0, 0) arrays without a profile."""
+    from conrod.film.reynolds.squeeze import half_rows
+
+    profile = film.profile
+    if profile is None:
+        return np.zeros((0, 0)), np.zeros((0, 0))
+    g = film.film_grid
+    width = np.full(g.n_z + 1, g.d_z)
+    width[[0, -1]] *= 0.5
+    source = -3.0 * g.radius * width[None, :] * (np.roll(profile, -1, axis=0)
+                                                 - np.roll(profile, 1, axis=0))
+    if grid.symmetric:
+        profile, source = half_rows(profile, None), half_rows(source, 0.0)
+    return (np.ascontiguousarray(profile, dtype=float),
+            np.ascontiguousarray(source * ~grid.fixed))
 
 
 def _supply_nodes(film, grid) -> np.ndarray:
@@ -169,15 +194,19 @@ def _predict(q, params):
 
 
 @nb.njit(cache=True, inline="always")
-def _solve(q, viscosity, params, tolerance):
-    """Film force [N] at q = (e, v_s), solved in place on the warm-start field."""
+def _solve(q, viscosity, params, tolerance, omega_sum):
+    """Film force [N] at q = (e, v_s), solved in place on the warm-start field (with the
+    bore profile's h₀ and wedge source at ω_j + ω_b = ``omega_sum`` when it has one)."""
     (pressure, fixed, src_x, src_y, w_x, w_y, cos_t, sin_t, radius, d_theta, d_z,
      clearance, n_coarse, symmetric, cavitation, _, _, max_cycles, _, anchor,
-     stats) = params
+     profile, profile_source, stats) = params
     h = clearance - q[0] * cos_t - q[1] * sin_t
+    source = viscosity * (q[2] * src_x + q[3] * src_y)
+    if profile.shape[0] > 0:
+        h = h + profile
+        source = source + (viscosity * omega_sum) * profile_source
     if not np.min(h) > 0.0:
         return np.nan, np.nan
-    source = viscosity * (q[2] * src_x + q[3] * src_y)
     cycles, change = multigrid_solve(pressure, h, source, fixed, radius, d_theta, d_z,
                                      cavitation, tolerance, max_cycles, n_coarse, symmetric)
     stats[0] += 1.0
@@ -196,7 +225,7 @@ def reynolds_force(x, y, vx, vy, omega_sum, viscosity, params):
     moved along the last Jacobian's tangents (module docstring)."""
     q = _squeeze_state(x, y, vx, vy, omega_sum, params)
     _predict(q, params)
-    return _solve(q, viscosity, params, params[16][0])
+    return _solve(q, viscosity, params, params[16][0], omega_sum)
 
 
 @nb.njit(cache=True, inline="always")
@@ -210,7 +239,7 @@ def reynolds_jacobian(x, y, vx, vy, omega_sum, viscosity, params):
     _predict(q, params)
     force = np.empty(2)
     by_q = np.full((2, 4), np.nan)
-    force[0], force[1] = _solve(q, viscosity, params, tolerance)
+    force[0], force[1] = _solve(q, viscosity, params, tolerance, omega_sum)
     if np.isnan(force[0]):
         return force, by_q
     base = pressure.copy()
@@ -221,7 +250,7 @@ def reynolds_jacobian(x, y, vx, vy, omega_sum, viscosity, params):
             step = -step          # the step stays inside it (the film opens, never closes)
         shifted = q.copy()
         shifted[k] += step
-        fx, fy = _solve(shifted, viscosity, params, tolerance)
+        fx, fy = _solve(shifted, viscosity, params, tolerance, omega_sum)
         by_q[0, k] = (fx - force[0]) / step
         by_q[1, k] = (fy - force[1]) / step
         tangent = tangents[k]

@@ -23,7 +23,7 @@ deforming bore converge in a few steps (semismooth Newton where it switches).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -36,15 +36,22 @@ from conrod.film.reynolds import kernel as kernel
 from conrod.film.reynolds.memory import ReynoldsMemory
 from conrod.film.reynolds.response_kernel import bore_node_imbalance, bore_row_imbalance
 from conrod.film.step_system import FilmResponse
+from conrod.film.tilt import thickness_directions
 
 
 def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray,
-                       rate_step: float | None) -> FilmResponse:
+                       rate_step: float | None,
+                       tilt: tuple[float, float] | None = None) -> FilmResponse:
     """∂f/∂u, ∂f/∂v, ∂F/∂u, ∂F/∂v of the isoviscous Reynolds ``film`` at the converged
     ``pressure`` [Pa] of the (deformed) ``state``; ``nodal`` W (n_θ, n_z + 1) [m²] for
     displacements of whole film rows, or w (n_θ (n_z + 1),) [m²] for displacements of single
     film nodes (row-major); ``rate_step`` τ_r [s] of the rate in the squeeze term (None: no
-    rate term)."""
+    rate term).
+
+    ``tilt`` = (τ [s], ℓ [m]) of a journal whose tilt is solved: two more velocity columns,
+    those of the edge velocities v = ℓγ̇ of an implicit step (γ = (γ_r + τ ℓγ̇)/ℓ, so h moves
+    by τ z(sin θ, −cos θ)/ℓ and its rate by z(sin θ, −cos θ)/ℓ per unit v), and the
+    moments' rows (``moment_by_bore``, ``moment_by_velocity``, :mod:`conrod.film.tilt`)."""
     problem = film.discrete_problem(state)
     grid = film.film_grid
     omega_sum = state.journal_speed + state.shell_speed
@@ -60,12 +67,11 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     bore_part = (_node_directions if nodal.ndim == 1 else _row_directions)(
         pressure, problem.h, rate, grid, omega_sum, state.viscosity, nodal.shape[0])
     n_bore = bore_part.shape[0]
-    imbalance = np.zeros((n_bore + 2,) + shape)
+    directions = _velocity_directions(film, shape, tilt)
+    imbalance = np.zeros((n_bore + len(directions),) + shape)
     imbalance[:n_bore] = bore_part
-    zero = np.zeros(shape)
-    for k, trig in enumerate(film.node_directions):
-        dh_rate = -np.ascontiguousarray(np.broadcast_to(trig[:, None], shape))
-        imbalance[n_bore + k] = _imbalance(pressure, problem.h, zero, dh_rate, grid,
+    for k, (dh, dh_rate) in enumerate(directions):
+        imbalance[n_bore + k] = _imbalance(pressure, problem.h, dh, dh_rate, grid,
                                            omega_sum, state.viscosity)
     d_pressure = np.zeros(imbalance.shape)
     matrix, nodes = active_matrix(a_east, a_north, active)
@@ -86,8 +92,29 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
         nodal_response = (d_pressure.reshape(len(d_pressure), -1) * nodal[None, :]).T
     else:
         nodal_response = np.einsum("qjk,jk->jq", d_pressure, nodal)
-    return FilmResponse(nodal_response[:, :n_bore], nodal_response[:, n_bore:],
-                        force[:, :n_bore], force[:, n_bore:])
+    response = FilmResponse(nodal_response[:, :n_bore], nodal_response[:, n_bore:],
+                            force[:, :n_bore], force[:, n_bore:])
+    if tilt is None:
+        return response
+    m_x, m_y = film.moment_weights
+    moment = -np.stack([np.einsum("qik,ik->q", d_pressure, m_x),
+                        np.einsum("qik,ik->q", d_pressure, m_y)])
+    return replace(response, moment_by_bore=moment[:, :n_bore],
+                   moment_by_velocity=moment[:, n_bore:])
+
+
+def _velocity_directions(film: Any, shape: tuple[int, int], tilt: tuple[float, float] | None
+                         ) -> list[tuple[np.ndarray, np.ndarray]]:
+    """(∂h/∂v, ∂ḣ/∂v) of the velocity columns (thickness_response)."""
+    zero = np.zeros(shape)
+    out = [(zero, -np.ascontiguousarray(np.broadcast_to(trig[:, None], shape)))
+           for trig in film.node_directions]
+    if tilt is not None:
+        tau, lever = tilt
+        cos_theta, sin_theta = film.node_directions
+        for field in thickness_directions(cos_theta, sin_theta, film.film_grid.z):
+            out.append((tau * field / lever, field / lever))
+    return out
 
 
 def _row_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> np.ndarray:

@@ -1,6 +1,7 @@
 """Characteristics of a solved Reynolds film (:class:`~conrod.film.reynolds.film.ReynoldsFilm`):
-forces and extremes of the pressure, friction torques of the shear with μ(p), flows and
-cavitation from the discrete flow balance of the solved field ([D2] ch. 3)."""
+forces, tilting moments and extremes of the pressure, friction torques of the shear with
+μ(p), flows and cavitation from the discrete flow balance of the solved field ([D2] ch. 3),
+the axial position of h_min and the edge h_min (:mod:`conrod.film.tilt`)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from typing import Any
 from conrod.film import characteristics as chars
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.reynolds import kernel as kernel
+from conrod.film.tilt import axial_summary
 
 
 def reynolds_characteristics(film: Any, problem: Any, reduced, pressure, state: FilmState,
@@ -39,7 +41,12 @@ def reynolds_characteristics(film: Any, problem: Any, reduced, pressure, state: 
     w_x, w_y = film.force_weights
     sum_x, sum_y, i_p, j_p, i_h, j_h = kernel.force_and_extremes(pressure, w_x, w_y, h)
     fx, fy = -sum_x, -sum_y
-    h_min, h_angle = chars.minimum_film_at(h, grid, i_h, j_h)
+    profile = film.geometry.profile  # one with kinks in θ: the parabola would overshoot
+    smooth = film.profile is None or profile.smooth_around
+    h_min, h_angle = (chars.minimum_film_at(h, grid, i_h, j_h) if smooth
+                      else (float(h[i_h, j_h]), float(grid.theta[i_h])))
+    axial = axial_summary(h, i_h, grid, film.geometry.radial_clearance, pressure,
+                          film.moment_weights, refine=smooth)
     p_max, p_angle = chars.peak_pressure_at(pressure, grid, i_p, j_p)
     info = dict(info)
     info["cavitation_flow_m3_per_s"] = lost * to_flow
@@ -54,5 +61,5 @@ def reynolds_characteristics(film: Any, problem: Any, reduced, pressure, state: 
         max_pressure=p_max, max_pressure_angle=p_angle,
         cavitated_fraction=cavitated_width * grid.d_theta / (2.0 * math.pi * grid.width),
         friction_power=-(torque_j * state.journal_speed + torque_b * state.shell_speed),
-        extra=info,
+        extra=info, **axial,
     )

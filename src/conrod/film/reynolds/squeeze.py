@@ -69,17 +69,18 @@ class SqueezeGrid:
         source_unit = 12.0 * viscosity * width[None, :] * grid.radius * grid.d_theta
         area = grid.area_weights
         weight_x, weight_y = cos_t * area, sin_t * area
-        self.symmetric = bool(film.use_symmetry and grid.n_z % 4 == 0
+        self.symmetric = bool(film.symmetric and grid.n_z % 4 == 0
                               and np.array_equal(fixed, fixed[:, ::-1]))
         n_z = grid.n_z
         if self.symmetric:
             mid = n_z // 2
             n_z = mid
-            fixed, cos_t, sin_t = (_half(a, pad) for a, pad in
+            fixed, cos_t, sin_t = (half_rows(a, pad) for a, pad in
                                    ((fixed, True), (cos_t, None), (sin_t, None)))
-            weight_x = _half(weight_x * _doubling(mid), 0.0)
-            weight_y = _half(weight_y * _doubling(mid), 0.0)
-            source_unit = _half(np.broadcast_to(source_unit, cos_t.shape[:1] + (grid.n_z + 1,)),
+            weight_x = half_rows(weight_x * _doubling(mid), 0.0)
+            weight_y = half_rows(weight_y * _doubling(mid), 0.0)
+            source_unit = half_rows(np.broadcast_to(source_unit,
+                                                    cos_t.shape[:1] + (grid.n_z + 1,)),
                                 0.0)
         self.fixed = read_only(fixed)  # one signature of multigrid_solve on every path
         self.cos_t, self.sin_t = cos_t, sin_t
@@ -92,7 +93,7 @@ class SqueezeGrid:
         self.stats = np.zeros(2)
 
 
-def _half(field: np.ndarray, padding) -> np.ndarray:
+def half_rows(field: np.ndarray, padding) -> np.ndarray:
     """Rows z ≤ 0 (mid-plane included) plus a padding row (None: the mirror row)."""
     mid = (field.shape[1] - 1) // 2
     half = np.empty((field.shape[0], mid + 2), dtype=field.dtype)

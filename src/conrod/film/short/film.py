@@ -20,6 +20,7 @@ import numpy as np
 from conrod.film.base import BearingGeometry, FilmResult, FilmState, film_thickness
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest, refuse_deformation
 from conrod.film.piezoviscosity import PressureViscosity
+from conrod.film.profile import refuse_profile
 from conrod.film.short.kernel import (
     ECCENTRICITY_LIMIT,
     short_bearing_force,
@@ -75,6 +76,10 @@ class ShortBearingFilm:
     n_z: int = 17
     pressure_viscosity: PressureViscosity | None = None
     name: str = "short"
+
+    def __post_init__(self) -> None:
+        """The closed form is for a cylindrical bore: a profile is refused."""
+        refuse_profile(self.geometry, self.name)
 
     @classmethod
     def from_settings(cls, geometry: BearingGeometry, settings: Any) -> Any:

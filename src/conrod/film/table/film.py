@@ -45,6 +45,7 @@ from conrod.film.capabilities import (
     film_memory,
     refuse_deformation,
 )
+from conrod.film.table.checks import check_tabulable
 from conrod.film.table.kernel import (
     CLUSTERING,
     WEIGHT_POWER,
@@ -81,25 +82,6 @@ def kernel_force(x, y, vx, vy, omega_sum, viscosity, params):
     Δs [-], log-magnitude table, turning table)."""
     return table_force(x, y, vx, vy, omega_sum, viscosity, params[0], params[1], params[2],
                        params[3], params[4])
-
-
-def check_tabulable(geometry: BearingGeometry, film: str = "table") -> None:
-    """CaseError unless the film is rotation-invariant and homogeneous in speed; the
-    message names ``film``, the model that was asked for ('table' or 'mobility')."""
-    if geometry.feed_holes:
-        raise CaseError(f"film = {film!r}: feed holes break rotational symmetry "
-                        "(allowed: none; use 'reynolds' or 'mass_conserving')")
-    if any(g.extent < 2.0 * math.pi - 1e-9 for g in geometry.grooves):
-        raise CaseError(f"film = {film!r}: partial grooves are not allowed "
-                        "(allowed: full circumferential grooves only)")
-    if geometry.grooves and geometry.supply_pressure != 0.0:
-        raise CaseError(
-            f"supply_pressure = {geometry.supply_pressure} Pa with film {film!r}: allowed "
-            "0 Pa (the map is computed once and scaled with speed; a supply pressure adds "
-            "a part that does not scale); use film 'reynolds' or 'mass_conserving'")
-    if geometry.cavitation_pressure != 0.0:
-        raise CaseError(f"cavitation_pressure = {geometry.cavitation_pressure} Pa with film "
-                        f"{film!r}: allowed 0 Pa (ambient)")
 
 
 def base_description(base: FilmModel) -> dict:
@@ -163,7 +145,8 @@ class TabulatedFilm:
     def cache_key(self) -> str:
         """SHA-256 of geometry, base model and table grid."""
         payload = {
-            "format": TABLE_FORMAT, "geometry": dataclasses.asdict(self.geometry),
+            "format": TABLE_FORMAT, "geometry": {k: v for k, v in dataclasses.asdict(
+                self.geometry).items() if k != "profile"},  # refused, not in the key
             "base": base_description(self.base),
             "grid": [self.n_eps, self.n_direction, self.eccentricity_max, CLUSTERING],
         }
