@@ -5,7 +5,7 @@ own inertia and a run's film pressure. Their tables and figures are registered i
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -60,8 +60,11 @@ class StressResults:
     schemes : dict  Crank angle [deg] → :func:`conrod.housing.stresses.compare_schemes`
         (``pressure`` and ``cosine`` StressFields, resultant [N], ratios [-]).
     pressure_source : str  Which film pressure loads the rod, in words.
+    run : dict  The run that pressure comes from: film model, bore, grid, its h_min [m],
+        p_max [Pa] and warnings.
     """
 
     structure: Any
     schemes: dict[float, dict]
     pressure_source: str
+    run: dict = field(default_factory=dict)
