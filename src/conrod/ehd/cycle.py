@@ -51,11 +51,14 @@ class ElasticCycle:
     pressures: dict[int, np.ndarray] | None = None
     """Film pressure p(θ, z) [Pa] at the output rows asked for (row → field)."""
 
-    def film_thickness(self, cycle, clearance: float) -> tuple[np.ndarray, np.ndarray]:
-        """(bore-node angles θ with the closing 2π [rad], film thickness on the deformed bore
-        h(φ, θ) = c − e_x cos θ − e_y sin θ + u at each output angle (n_out, n_θ + 1) [m])."""
-        theta = np.append(self.angles, self.angles[0] + 2.0 * np.pi)
-        u = np.concatenate([self.deformation, self.deformation[:, :1]], axis=1)
+    def film_thickness(self, cycle, clearance: float, points: int = 361
+                       ) -> tuple[np.ndarray, np.ndarray]:
+        """(shell angles θ, 0 … 2π, ``points`` of them [rad]; film thickness on the deformed
+        bore h(φ, θ) = c − e_x cos θ − e_y sin θ + u(θ) at each output angle (n_out,
+        ``points``) [m]), u interpolated linearly (periodically) between the bore nodes."""
+        theta = np.linspace(0.0, 2.0 * np.pi, points)
+        u = np.array([np.interp(theta, self.angles, row, period=2.0 * np.pi)
+                      for row in self.deformation])
         h = (clearance - np.asarray(cycle.eccentricity_x)[:, None] * np.cos(theta)[None, :]
              - np.asarray(cycle.eccentricity_y)[:, None] * np.sin(theta)[None, :] + u)
         return theta, h

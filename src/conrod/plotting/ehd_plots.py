@@ -96,7 +96,7 @@ def plot_deformed_film_maps(results) -> Figure:
     i = int(np.argmax(cycle.p_max))
     pressure = elastic.pressure_at_p_max
     peak = np.degrees(theta[np.unravel_index(np.argmax(pressure), pressure.shape)[0]])
-    nodes = np.degrees(elastic.film_angles[:-1])  # without the closing 360° node
+    nodes = np.degrees(elastic.film_angles[:-1])  # without the closing 360° point
     thickness = elastic.film_thickness[i, :-1]
     for ax, (angles_deg, field, label, cmap) in zip(axes, (
             (nodes, np.repeat(thickness[:, None], len(z), axis=1) * UM,

@@ -41,7 +41,7 @@ def plot_film_thickness_map(results: RunResults) -> Figure:
     mesh = ax.pcolormesh(phi, theta, h.T * UM, shading="auto", cmap="viridis_r")
     fig.colorbar(mesh, ax=ax, label="film thickness h [µm]")
     h_c = _rigid_threshold(results)
-    if h_c is not None and h.min() <= h_c * 1.5:
+    if h_c and h.min() <= h_c * 1.5:
         ax.contour(phi, theta, h.T * UM, levels=[h_c * UM], colors="C3", linewidths=0.8)
         ax.plot([], [], color="C3", lw=0.8, label=f"h = h_c = {h_c * UM:.2g} µm (contact)")
     ax.plot(phi, np.degrees(np.mod(results.cycle.h_min_angle_shell, 2 * np.pi)), ".",
@@ -67,7 +67,7 @@ def plot_min_film_envelope(results: RunResults) -> Figure:
     theta, smallest, where = envelope
     top.plot(np.degrees(theta), smallest * UM, color="C0", label="min over the cycle")
     h_c = _rigid_threshold(results)
-    if h_c is not None:
+    if h_c:
         top.axhline(h_c * UM, color="C3", ls="--", lw=0.8, label=f"h_c = {h_c * UM:.2g} µm")
     top.set_ylabel("smallest film h [µm]")
     top.set_ylim(bottom=0.0)

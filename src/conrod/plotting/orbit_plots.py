@@ -60,16 +60,16 @@ def plot_orbit(results: RunResults) -> Figure:
 
 def _contact_circle(ax, results: RunResults, circle: np.ndarray) -> float:
     """Draw the orbit's contact circle; return its radius [m] (the clearance without one)."""
-    radius, h_c = results.contact_radius, results.contact_threshold
-    if radius is None and h_c is not None:
+    radius, h_c = results.contact_radius, results.contact_threshold or 0.0
+    if radius is None:
         radius = results.clearance - h_c
-    if radius is None or radius <= 0.0:
-        return results.clearance
+    if radius <= 0.0 or (h_c == 0.0 and not results.contact_circle_widened):
+        return results.clearance  # the clearance circle itself
     if results.contact_circle_widened:
         label = (f"contact circle of the deforming bore, 2c − h_c = {radius * UM:.3g} µm: the "
                  "bore gives way, the deformed film stops the journal")
     else:
-        label = f"contact circle c − h_c (h_c = {(h_c or 0.0) * UM:.2g} µm)"
+        label = f"contact circle c − h_c (h_c = {h_c * UM:.2g} µm)"
     ax.plot(radius * UM * np.cos(circle), radius * UM * np.sin(circle), ":", color="C3",
             lw=0.9, label=label)
     return radius

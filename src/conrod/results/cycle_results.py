@@ -288,7 +288,7 @@ class RunResults:
         [m] (None when not set); on a deforming bore the journal is stopped by the deformed
         film, the circle is widened (``contact_radius``)."""
         value = (self.settings or {}).get("contact_film_thickness")
-        return float(value) if value else None
+        return None if value is None else float(value)
 
     @property
     def contact_circle_widened(self) -> bool:
