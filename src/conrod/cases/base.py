@@ -163,7 +163,7 @@ def slip_hint(value: float, unit: str, slips: Any, plausible: Any) -> str:
     for factor, written in slips or ():
         candidate = value * factor
         if plausible(candidate):
-            return f"; did you mean {candidate:.4g} {unit} = {value:g} {written}?"
+            return f"; did you mean {candidate:.4g} {unit} = {value:.4g} {written}?"
     return ""
 
 

@@ -84,9 +84,11 @@ def _from_folder(folder: Path, angles: str | None):
         fields = {a: fields[nearest_angle(sorted(fields), a)] for a in wanted}
     source = (f"film pressure of the elastic run in {folder.name} ({FILM_PRESSURE}: the "
               "film on the deformed bore)")
+    from conrod.simulation.recording import record_case
+
     summary = _run_summary(folder)
     return stress_study_from_fields(Housing.from_case(case), theta, z, fields, source,
-                                    summary)
+                                    summary, record_case(case, case.solver))
 
 
 def _run_summary(folder: Path) -> dict:

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from conrod.output.registry import FigureSpec, TableSpec, figures, result_kind, tables
+from conrod.output.tables import case_tables
 from conrod.results.housing import HousingResults, StressResults
 
 SCHEMES = ("pressure", "cosine")
@@ -37,7 +38,7 @@ def _housing_tables(results: HousingResults) -> tuple[TableSpec, ...]:
                   "Compliance diagonal range [µm/kN], inertia fields [µm], finite-element "
                   "mass properties [kg, m] and the build information.",
                   lambda: results.summary),
-    )
+    ) + case_tables(results)
 
 
 @figures.register
@@ -106,7 +107,7 @@ def _stress_tables(results: StressResults) -> tuple[TableSpec, ...]:
                   "angle the load resultant [N], pressure-to-cosine ratios [-] and the stress "
                   "zones [Pa, m].",
                   lambda: stress_summary(results)),
-    )
+    ) + case_tables(results)
 
 
 @figures.register

@@ -125,7 +125,8 @@ def _table(table: Table) -> str:
         rows.append(f"<tr>{cells}</tr>")
     caption = f"<caption>{html.escape(table.caption)}</caption>" if table.caption else ""
     kind = f" class=\"{table.css_class}\"" if table.css_class else ""
-    return (f"<div class=\"wide\"><table{kind}>{caption}<thead><tr>{head}</tr></thead>"
+    thead = f"<thead><tr>{head}</tr></thead>" if any(table.columns) else ""
+    return (f"<div class=\"wide\"><table{kind}>{caption}{thead}"
             f"<tbody>{''.join(rows)}</tbody></table></div>")
 
 

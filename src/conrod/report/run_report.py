@@ -84,10 +84,11 @@ def figure_catalogue(folder: Path, manifest: dict[str, Any] | None) -> dict[str,
 
 
 def inputs_section(case_file: Path | None, case_data: dict | None,
-                   swept: tuple[str, ...] = (), set_values: dict[str, Any] | None = None
-                   ) -> Section:
+                   swept: tuple[str, ...] = (), set_values: dict[str, Any] | None = None,
+                   source_name: str = "") -> Section:
     """The case's inputs with units and the sources its comments cite; ``set_values``
-    (dotted key → value) are the values the run set on top of the file."""
+    (dotted key → value) are the values the run set on top of the file; ``source_name``:
+    the name of the file the result folder's copy ``case_file`` was taken from."""
     section = Section("Case inputs")
     if case_file is None and case_data is None:
         section.blocks.append("The case file is not known for this folder (a result folder "
@@ -95,7 +96,9 @@ def inputs_section(case_file: Path | None, case_data: dict | None,
                               "inputs.")
         return section
     if case_file is not None:
-        section.blocks.append(f"Case file: {case_file.name}")
+        section.blocks.append(f"Case file: {source_name} (its copy in the result folder: "
+                              f"{case_file.name})" if source_name else
+                              f"Case file: {case_file.name}")
         notes = header_notes(case_file.read_text(encoding="utf-8")) if case_file.is_file() \
             else []
         if notes:
@@ -142,7 +145,7 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
     if summary:
         sections.append(summary_section(summary))
     sections.append(inputs_section(case_file, case_data, tuple(record.get("axes", {})),
-                                   set_values))
+                                   set_values, (recorded or {}).get("source_name", "")))
     engine_figures = engine_load_images(case_file, case_data)
     if engine_figures:
         sections.append(Section("Engine load diagrams", engine_figures))

@@ -85,7 +85,8 @@ def _input_sections(folder: Path, manifest: dict[str, Any]) -> list[Section]:
     recorded = manifest.get("case")
     if not isinstance(recorded, dict) or not (folder / str(recorded.get("file", ""))).is_file():
         return []
-    return [inputs_section(folder / recorded["file"], None, (), recorded.get("set") or None)]
+    return [inputs_section(folder / recorded["file"], None, (), recorded.get("set") or None,
+                           recorded.get("source_name", ""))]
 
 
 def _flat(data: Any, prefix: str = "") -> dict[str, Any]:

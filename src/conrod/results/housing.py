@@ -38,6 +38,7 @@ class HousingResults:
     bore : tuple of BoreDeformation  Bore under the test load in four directions.
     inertia : tuple of BoreDeformation  Bore under the rod's own inertia at TDC and BDC
         (empty without ``[engine]``).
+    case_record : CaseRecord or None  The case (:mod:`conrod.results.case_record`).
     """
 
     housing: Any
@@ -45,6 +46,7 @@ class HousingResults:
     test_load: float
     bore: tuple[BoreDeformation, ...]
     inertia: tuple[BoreDeformation, ...] = ()
+    case_record: Any = None
 
     @property
     def has_mesh(self) -> bool:
@@ -62,9 +64,11 @@ class StressResults:
     pressure_source : str  Which film pressure loads the rod, in words.
     run : dict  The run that pressure comes from: film model, bore, grid, its h_min [m],
         p_max [Pa] and warnings.
+    case_record : CaseRecord or None  The case (:mod:`conrod.results.case_record`).
     """
 
     structure: Any
     schemes: dict[float, dict]
     pressure_source: str
     run: dict = field(default_factory=dict)
+    case_record: Any = None

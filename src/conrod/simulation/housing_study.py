@@ -25,8 +25,11 @@ TEST_DIRECTIONS_DEG = (0.0, 90.0, 180.0, 270.0)
 
 def housing_study(housing: Any, case: Case) -> HousingResults:
     """Summary, bore under the test loads and under the rod's inertia of ``housing``."""
+    from conrod.simulation.recording import record_case
+
     return HousingResults(housing, housing_summary(housing, case), TEST_LOAD,
-                          _test_loads(housing), _inertia_cases(housing))
+                          _test_loads(housing), _inertia_cases(housing),
+                          record_case(case, case.solver))
 
 
 def _test_loads(housing: Any) -> tuple[BoreDeformation, ...]:

@@ -50,17 +50,18 @@ def stress_study(case, housing, crank_angles_deg: list[float], film: str | None 
                   "the bore deformation, so the rod is loaded with the pressure of a rigid "
                   "bore (a film with a grid, --film reynolds, couples it)")
     return stress_study_from_fields(housing, theta, z, fields, source,
-                                    _run_items(results, simulation))
+                                    _run_items(results, simulation), simulation.case_record())
 
 
 def stress_study_from_fields(housing, theta: np.ndarray, z: np.ndarray,
                              fields: dict[float, np.ndarray], source: str,
-                             run: dict | None = None) -> StressResults:
+                             run: dict | None = None, record=None) -> StressResults:
     """Both load schemes at the crank angles [deg] of ``fields`` (angle → film pressure
-    p(θ, z) [Pa] on the grid θ [rad], z [m]); ``source`` says which run's pressure it is."""
+    p(θ, z) [Pa] on the grid θ [rad], z [m]); ``source`` says which run's pressure it is,
+    ``record`` the case (:class:`conrod.results.case_record.CaseRecord`)."""
     schemes = {angle: housing.stresses(p, z, np.radians(angle), theta)
                for angle, p in fields.items()}
-    return StressResults(housing.structure, schemes, source, run or {})
+    return StressResults(housing.structure, schemes, source, run or {}, record)
 
 
 def _rigid_pressures(simulation: Simulation, results, crank_angles_deg: list[float]):
