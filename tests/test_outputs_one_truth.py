@@ -269,3 +269,22 @@ def test_regime_criterion_is_finite_and_monotone_where_a_joint_does_not_knock():
                         np.array([[0.05], [0.2]]), np.ones((2, 1)), 0)
     assert loud.best()["driven_by"] == "small_end" and loud.best()[
         "impact_velocity_excess_m_s"] == pytest.approx(-0.15)
+
+
+def test_a_p_max_peak_over_one_output_step_is_not_printed_without_its_doubt():
+    """A p_max standing tens of percent above both neighbouring output angles (the trace
+    669 → 786 → 564 MPa) is printed with that doubt; a smooth peak is not."""
+    import dataclasses
+
+    from conrod.results.summary import headline, peak_step_jump
+
+    results = Simulation(Case.from_dict(_periodic(), base_dir=EXAMPLES)).run()
+    assert peak_step_jump(results.cycle) < 0.1
+    assert "neighbouring" not in headline(results)["p_max"]
+    p_max = results.cycle.p_max.copy()
+    i = int(np.argmax(p_max))
+    p_max[i] = 1.4 * max(p_max[i - 1], p_max[i + 1])
+    spiky = dataclasses.replace(results, cycle=dataclasses.replace(results.cycle,
+                                                                   p_max=p_max))
+    assert peak_step_jump(spiky.cycle) == pytest.approx(0.4)
+    assert "stands 40% above both neighbouring output angles" in headline(spiky)["p_max"]

@@ -121,6 +121,9 @@ def register(app: typer.Typer) -> None:
             help="Film grid NTHETAxNZ of that run, e.g. 36x8.")] = None,
     ) -> None:
         """Von Mises stresses of the rod under the film pressure of a run and a cosine load."""
+        from conrod.cli.run_command import single_threaded_blas
+
+        single_threaded_blas()
         from conrod.io.result_folder import check_output_folder
 
         inputs = (source,) if source.is_file() else ()

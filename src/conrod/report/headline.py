@@ -122,10 +122,11 @@ def _grid_table(grid: dict[str, Any]) -> Table:
                      "not observed" if order is None else f"{order:.2g}"])
     return Table(["quantity", f"on the grids {sizes}", "grid error", "grid error [%]",
                   "observed order"], rows,
-                 "Grid-error estimate: Richardson extrapolation from the run grid and two "
-                 "coarser grids at the critical crank angles, with the observed order of "
-                 "convergence (Celik et al. 2008); the error is extrapolated minus run-grid "
-                 "value.", numeric=(f"on the grids {sizes}", "grid error", "grid error [%]"))
+                 "Grid-error estimate: the cycle's extreme on the run grid and two coarser "
+                 "grids; Richardson extrapolation from the run grid and the next coarser one "
+                 "with the formal order 2 of the finite differences (the error: extrapolated "
+                 "minus run-grid value), the observed order from all three (Celik et al. "
+                 "2008).", numeric=(f"on the grids {sizes}", "grid error", "grid error [%]"))
 
 
 def _number(value: Any) -> str:

@@ -132,7 +132,7 @@ def headline(results: RunResults) -> dict[str, str]:
     lines["film h_min"] = _film_h_min_text(s)
     lines["contact"] = _contact_text(cycle, results.contact)
     lines["p_max"] = (f"{s.p_max / 1e6:.2f} MPa at {math.degrees(s.p_max_crank_angle):.0f}°"
-                      + _grid_error_text(s, "p_max"))
+                      + _grid_error_text(s, "p_max") + _peak_step_text(cycle))
     lines["friction power"] = (
         f"{s.mean_total_friction_power:.1f} W = film {s.mean_friction_power:.1f} W + hard "
         f"contact {s.mean_contact_friction_power:.1f} W + boundary (asperities) "
@@ -168,6 +168,28 @@ def _grid_error_text(s: RunSummary, quantity: str) -> str:
     if s.grid_error is None:
         return ""
     return "; " + s.grid_error.text(quantity)
+
+
+PEAK_STEP_SHARE = 0.10
+"""A p_max standing this share above both neighbouring output angles is a peak the output
+step does not resolve [-]."""
+
+
+def peak_step_jump(cycle: CycleResults) -> float:
+    """How far the largest p_max stands above the larger of its two neighbouring output
+    angles, p_max/max(neighbours) − 1 [-] (0 for a resolved, smooth peak)."""
+    p = np.asarray(cycle.p_max, dtype=float)
+    i = int(np.argmax(p))
+    neighbours = max(p[i - 1], p[(i + 1) % p.size])
+    return float(p[i] / neighbours - 1.0) if neighbours > 0.0 else 0.0
+
+
+def _peak_step_text(cycle: CycleResults) -> str:
+    jump = peak_step_jump(cycle)
+    if jump <= PEAK_STEP_SHARE:
+        return ""
+    return (f"; stands {jump:.0%} above both neighbouring output angles: the peak is not "
+            "resolved in crank angle (a smaller solver.output_step_deg)")
 
 
 def _flow_text(s: RunSummary) -> str:

@@ -1,6 +1,8 @@
 """The grid-error estimate of a run on a grid film (``conrod run``; :mod:`conrod.results.
-grid_error`): the same orbit on two coarser grids, h_min and p_max compared at the run's
-critical crank angles, Richardson extrapolation with the observed order."""
+grid_error`): the same orbit on two coarser grids, the cycle's smallest film h_min and
+largest p_max of each grid (each at its own critical crank angle: where the thinnest film
+sits can move between neighbouring angles from grid to grid), Richardson extrapolation
+with the observed order."""
 
 from __future__ import annotations
 
@@ -17,6 +19,9 @@ GRID_FILMS = ("reynolds", "mass_conserving")
 """Films solved on the ``[solver]`` grid, whose answer depends on it [-]."""
 RATIOS = (1.4, 2.0)
 """Coarsening of the two coarser grids: n_θ and n_z divided by about these [-]."""
+FEATURE_CELLS = 3.0
+"""A groove or hole spanning fewer axial cells than this on the run grid is not resolved:
+its edges snap to other nodes on every grid and the values need not converge [-]."""
 
 
 def coarser_grids(grid: tuple[int, int]) -> list[tuple[int, int]]:
@@ -47,13 +52,30 @@ def with_grid_error(results: Any, simulation: Any, progress: Any = None) -> Any:
         return results
     runs = [results] + [_coarse_run(simulation, g, progress) for g in coarse]
     grids = (grid, *coarse)
-    thinnest = film_minimum(results.cycle)
-    h_angle = thinnest[1] if thinnest is not None else results.summary.h_min_crank_angle
-    p_angle = results.summary.p_max_crank_angle
-    estimate = GridError(grids, _estimate("h_min", runs, grids, h_angle),
-                         _estimate("p_max", runs, grids, p_angle))
+    estimate = GridError(grids, _estimate("h_min", runs, grids),
+                         _estimate("p_max", runs, grids),
+                         feature_note(simulation.geometry(), solver.n_z))
     summary = dataclasses.replace(results.summary, grid_error=estimate)
     return _with_summary(results, summary)
+
+
+def feature_note(geometry: Any, n_z: int) -> str:
+    """Words on the oil-supply feature worst resolved axially on the run grid ('' when every
+    groove and hole spans at least :data:`FEATURE_CELLS` axial cells)."""
+    spacing = geometry.width / n_z
+    features = [("groove", groove.width) for groove in geometry.grooves
+                if groove.width < geometry.width]
+    features += [("hole", hole.diameter) for hole in geometry.feed_holes]
+    if not features:
+        return ""
+    name, size = min(features, key=lambda item: item[1])
+    cells = size / spacing
+    if cells >= FEATURE_CELLS:
+        return ""
+    return (f"the {size * 1e3:.3g} mm {name} spans {cells:.1f} axial cells of the run grid: "
+            "its edges fall on other nodes on every grid, so the values need not converge "
+            "monotonically and the error can be larger or of the other sign (a finer n_z "
+            "resolves it)")
 
 
 def _coarse_run(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
@@ -77,17 +99,24 @@ def _overrides(simulation: Any) -> dict[str, Any]:
             and key not in ("film", "integrator")}
 
 
-def _estimate(quantity: str, runs: list[Any], grids, crank_angle: float) -> GridEstimate:
-    values = tuple(_value_at(getattr(run, "elastic", run).cycle, quantity, crank_angle)
-                   for run in runs)
+def _estimate(quantity: str, runs: list[Any], grids) -> GridEstimate:
+    extremes = [_extreme(getattr(run, "elastic", run).cycle, quantity) for run in runs]
+    values = tuple(value for value, _ in extremes)
     order, error = richardson(values, tuple(cell_size(g) for g in grids))
-    return GridEstimate(quantity, float(np.degrees(crank_angle)), values, order, error)
+    return GridEstimate(quantity, float(np.degrees(extremes[0][1])), values, order, error,
+                        tuple(float(np.degrees(angle)) for _, angle in extremes))
 
 
-def _value_at(cycle: Any, quantity: str, crank_angle: float) -> float:
-    """The quantity at the output angle nearest ``crank_angle`` [rad]."""
-    row = int(np.argmin(np.abs(np.asarray(cycle.crank_angle) - crank_angle)))
-    return float(getattr(cycle, quantity)[row])
+def _extreme(cycle: Any, quantity: str) -> tuple[float, float]:
+    """(the cycle's smallest film h_min or largest p_max, its crank angle [rad])."""
+    if quantity == "h_min":
+        thinnest = film_minimum(cycle)
+        if thinnest is not None:
+            return thinnest
+        row = int(np.argmin(cycle.h_min))
+    else:
+        row = int(np.argmax(cycle.p_max))
+    return float(getattr(cycle, quantity)[row]), float(cycle.crank_angle[row])
 
 
 def _with_summary(results: Any, summary: Any) -> Any:
