@@ -206,8 +206,10 @@ class ElasticRunResults:
             fr, fe = firing["rigid"], firing["elastic"]
             lines["firing stroke"] = (
                 f"±{FIRING_HALF_WIDTH_DEG:.0f}° around firing TDC: film h_min "
-                f"{_text_change(fr['h_min_um'], fe['h_min_um'], 'µm', 3)}, p_max "
-                f"{_text_change(fr['p_max_MPa'], fe['p_max_MPa'], 'MPa', 1)}")
+                f"{_text_change(fr['h_min_um'], fe['h_min_um'], 'µm', 3)} (at "
+                f"{_angle(fr['h_min_crank_angle_deg'])} → {_angle(fe['h_min_crank_angle_deg'])}), "
+                f"p_max {_text_change(fr['p_max_MPa'], fe['p_max_MPa'], 'MPa', 1)} (at "
+                f"{_angle(fr['p_max_crank_angle_deg'])} → {_angle(fe['p_max_crank_angle_deg'])})")
         split = self.bore_displacement
         if split is not None:
             lines["bore at elastic h_min"] = (
@@ -223,6 +225,10 @@ class ElasticRunResults:
             lines["coupling"] = (f"{float(np.mean(iterations)):.1f} film solves{newton} per "
                                  "step (mean, all force balances of the step)")
         return lines
+
+
+def _angle(value: float | None) -> str:
+    return "–" if value is None else f"{value:.0f}°"
 
 
 def _text_change(rigid: float | None, elastic: float | None, unit: str, digits: int) -> str:
