@@ -34,8 +34,8 @@ def test_a_truncated_numba_cache_file_is_discarded_and_compiled_again(tmp_path):
     first = _run(case, tmp_path / "first", NUMBA_CACHE_DIR=str(cache))
     assert first.returncode == 0, first.stderr
     assert _warnings(first.stderr) == []
-    data = sorted(cache.rglob("short_bearing.kernel_force-*.nbc"))
-    index = sorted(cache.rglob("short_bearing_velocity.short_bearing_cycle-*.nbi"))
+    data = sorted(cache.rglob("film.kernel_force-*.nbc"))  # film/short/film.py
+    index = sorted(cache.rglob("velocity.short_bearing_cycle-*.nbi"))  # film/short/
     assert len(data) == 1 and len(index) == 1
     data[0].write_bytes(data[0].read_bytes()[:100])  # a data file cut short
     index[0].write_bytes(index[0].read_bytes()[:30])  # an index file cut short

@@ -1,11 +1,17 @@
 """``conrod plot-sweep DIR --x KEY --y COLUMN [--hue KEY] [--out FILE.png]``: one
-characteristic of a sweep against one axis, a line per value of another."""
+characteristic of a sweep against one axis, a line per value of another.
+
+``--x``/``--hue`` take an axis by its case key (``engine.speed``) or by its table column
+(``engine.speed_rpm``). Variants with warnings are hollow markers, a contact-set h_min is a
+"hard contact" marker, failed variants are not drawn
+(:mod:`conrod.plotting.sweep_plots`).
+"""
 
 from __future__ import annotations
 
 import difflib
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -24,6 +30,19 @@ def check_column(frame, option: str, name: str) -> None:
                     f"(columns: {', '.join(names)})")
 
 
+def resolve_column(frame, option: str, name: str, axis_columns: dict[str, Any]) -> str:
+    """The table column of ``name``: a column, or an axis given by its case key."""
+    from conrod.sweep.columns import axis_column
+
+    if name in frame.columns:
+        return name
+    column = str(axis_columns.get(name) or axis_column(name))
+    if column in frame.columns:
+        return column
+    check_column(frame, option, name)
+    return name
+
+
 def register(app: typer.Typer) -> None:
     """Add the ``plot-sweep`` command to ``app``."""
 
@@ -31,24 +50,27 @@ def register(app: typer.Typer) -> None:
     @exits_cleanly
     def plot_sweep(
         folder: Annotated[Path, typer.Argument(help="Sweep folder (with sweep.parquet).")],
-        x: Annotated[str, typer.Option("--x", help="Axis key on the x axis.")],
+        x: Annotated[str, typer.Option(
+            "--x", help="Axis on the x axis: case key or column, e.g. engine.speed.")],
         y: Annotated[str, typer.Option("--y", help="Column on the y axis, e.g. h_min_m.")],
         hue: Annotated[str | None, typer.Option(
-            "--hue", help="Axis key: one line per value.")] = None,
+            "--hue", help="Axis (case key or column): one line per value.")] = None,
         out: Annotated[Path | None, typer.Option(
-            "--out", help="Figure file (default: DIR/<y>_vs_<x>.png).")] = None,
+            "--out", help="Figure file (default: DIR/<y>_vs_<x column>.png).")] = None,
     ) -> None:
-        """Plot one column of a sweep table against one axis (finished variants)."""
+        """Plot one column of a sweep table against one axis (doubtful variants marked)."""
         from conrod.plotting.save import save_figure
         from conrod.plotting.sweep_plots import sweep_figure
-        from conrod.report.inputs import unit_of
         from conrod.sweep import read_table
+        from conrod.sweep.columns import axis_label
+        from conrod.sweep.runner import read_description
 
         frame = read_table(folder)
-        for option, name in (("--x", x), ("--y", y), ("--hue", hue)):
-            if name is not None:
-                check_column(frame, option, name)
-        units = {key: unit_of(key) for key in (x, hue) if key}
+        axis_columns = read_description(folder).get("axis_columns") or {}
+        x = resolve_column(frame, "--x", x, axis_columns)
+        y = resolve_column(frame, "--y", y, axis_columns)
+        hue = None if hue is None else resolve_column(frame, "--hue", hue, axis_columns)
+        labels = {str(column): axis_label(key) for key, column in axis_columns.items()}
         target = out or folder / f"{y}_vs_{x}.png"
-        save_figure(sweep_figure(frame, x, y, hue, units), target)
+        save_figure(sweep_figure(frame, x, y, hue, labels), target)
         typer.echo(str(target))

@@ -1,7 +1,10 @@
-"""Many-variant studies on Dask distributed: study files, the variant store, the table.
+"""Many-variant studies: study files, the variant store, the table.
 
 ``Sweep(study, out).run()`` returns a pandas DataFrame with one row per variant and writes
-``out/sweep.parquet``; see :mod:`conrod.sweep.runner` and :mod:`conrod.sweep.study`.
+``out/sweep.parquet``; the variants run in worker processes on this machine
+(:mod:`conrod.sweep.pool`) or on a Dask cluster (:mod:`conrod.sweep.cluster`). See
+:mod:`conrod.sweep.runner`, :mod:`conrod.sweep.study` and, for what a variant's status
+means, :mod:`conrod.sweep.status`.
 """
 
 from __future__ import annotations

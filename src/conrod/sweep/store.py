@@ -1,18 +1,17 @@
 """The variant store: ``DIR/variants/<hash>/``, one folder per finished variant.
 
-A variant is computed into a temporary sibling folder ``DIR/variants/.<hash>.<random>``;
-its record ``variant.json`` is written last, then the folder is renamed onto
-``<hash>`` with ``os.replace`` (atomic on one file system). A folder named by its hash
-therefore always holds a complete variant; a worker killed half-way leaves only a
-temporary folder, which the next run removes.
+A variant's files are written by the one writer of every command
+(:func:`conrod.output.registry.write_results`): into a hidden staging folder that is swapped
+in as ``DIR/variants/<hash>`` whole. Its record ``variant.json`` is written last (itself
+atomically, a temporary file renamed): a folder counts as a finished variant only once it
+holds that record. A worker killed half-way leaves a staging folder or a folder without
+a record; the next run removes both.
 """
 
 from __future__ import annotations
 
 import json
-import os
 import shutil
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -36,29 +35,21 @@ def read_record(out: Path, key: str) -> dict[str, Any] | None:
         return None
 
 
-def new_variant_folder(out: Path, key: str) -> Path:
-    """A fresh temporary folder next to the final one."""
-    root = variants_dir(out)
-    root.mkdir(parents=True, exist_ok=True)
-    return Path(tempfile.mkdtemp(prefix=f".{key}.", dir=root))
+def variant_folder(out: Path, key: str) -> Path:
+    """Folder of the variant ``key`` (written as a whole by the one writer, then committed)."""
+    return variants_dir(out) / key
 
 
-def commit_variant(tmp: Path, record: dict[str, Any]) -> Path:
-    """Write the record last and rename ``tmp`` onto its final name.
+def commit_variant(folder: Path, record: dict[str, Any]) -> Path:
+    """Write the record last: from now on ``folder`` counts as a finished variant."""
+    write_json(folder / RECORD, record)
+    return folder
 
-    If another worker finished the same variant first, its folder is kept and ``tmp``
-    is removed (both hold the same content: same case, same version).
-    """
-    final = tmp.parent / record["hash"]
-    write_json(tmp / RECORD, record)
-    os.chmod(tmp, 0o755)
-    try:
-        os.replace(tmp, final)
-    except OSError:
-        if not (final / RECORD).is_file():
-            raise
-        shutil.rmtree(tmp, ignore_errors=True)
-    return final
+
+def discard_unfinished(folder: Path) -> None:
+    """Remove a variant folder that holds no record (a write or commit that failed)."""
+    if folder.is_dir() and not (folder / RECORD).is_file():
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def remove_stale(out: Path) -> int:

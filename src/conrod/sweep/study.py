@@ -43,9 +43,8 @@ from pydantic import Field, model_validator
 
 from conrod.cases.base import Section, validate_section
 from conrod.errors import CaseError
+from conrod.io.interrupts import raise_if_interrupted
 from conrod.sweep.variant import CASE_AXIS, Variant, resolve_variant
-
-"""Axis key whose values are whole case files."""
 
 
 class AxisSection(Section):
@@ -122,6 +121,9 @@ class Study:
     @classmethod
     def from_toml(cls, path: str | os.PathLike[str]) -> Study:
         """Read and validate a study file (not yet its variants: see :meth:`variants`)."""
+        if not isinstance(path, str | os.PathLike) or not str(path):
+            raise CaseError(f"study file = {path!r}: not a file path (allowed: the path of a "
+                            "study file, e.g. 'examples/studies/passenger_car_3x3.toml')")
         path = Path(path)
         try:
             data = tomllib.loads(path.read_text(encoding="utf-8"))
@@ -137,6 +139,12 @@ class Study:
                   path: Path | None = None) -> Study:
         """Validate a study given as a dict; relative files resolve against ``folder``."""
         prefix = f"study {str(path)!r}" if path else "study"
+        if not isinstance(data, dict):
+            raise CaseError(f"{prefix} = {type(data).__name__}: not a table (allowed: a dict "
+                            "of the study file's keys)")
+        if folder is not None and not isinstance(folder, str | os.PathLike):
+            raise CaseError(f"folder = {folder!r}: not a folder path (allowed: None or a "
+                            "path)")
         try:
             spec = validate_section(StudySection, data)
         except CaseError as error:
@@ -162,7 +170,11 @@ class Study:
         return candidate if candidate.is_absolute() else self.folder / candidate
 
     def variants(self) -> list[Variant]:
-        """Every variant resolved and validated; the first bad one raises :class:`CaseError`."""
-        return [resolve_variant(self.base_file(point), point, self.spec.override, index,
-                                self.spec.command)
-                for index, point in enumerate(self.points())]
+        """Every variant resolved and validated; the first bad one raises :class:`CaseError`.
+        Under the CLI's Ctrl-C handling, Ctrl-C stops it between two variants."""
+        variants = []
+        for index, point in enumerate(self.points()):
+            raise_if_interrupted()
+            variants.append(resolve_variant(self.base_file(point), point, self.spec.override,
+                                            index, self.spec.command))
+        return variants

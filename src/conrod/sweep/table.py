@@ -1,4 +1,11 @@
-"""The sweep table: one row per variant (``sweep.parquet``) and the best/worst summary."""
+"""The sweep table: one row per variant (``sweep.parquet``) and the best/worst summary.
+
+Columns, in order: ``variant`` (1…n in study order), ``hash``, the axis values (one column
+per axis, named by :func:`conrod.sweep.columns.axis_column`: the case key with its unit),
+``status`` (:mod:`conrod.sweep.status`), ``error``, ``wall_time_s``, ``compute_time_s``,
+``cached``, then every scalar of the variant's ``summary.json`` (units in the names), with
+``h_min_set_by`` right after ``h_min_m`` and the warning texts in ``warnings``.
+"""
 
 from __future__ import annotations
 
@@ -9,9 +16,17 @@ from typing import Any
 import pandas as pd
 
 from conrod.io.atomic import atomic_path
+from conrod.sweep.columns import axis_column
+from conrod.sweep.status import (
+    STATUS_FAILED,
+    STATUS_OK,
+    WARNING_SEPARATOR,
+    h_min_set_by,
+    variant_status,
+)
 
 LEADING_COLUMNS = ("variant", "hash")
-STATUS_COLUMNS = ("status", "error", "wall_time_s", "cached")
+STATUS_COLUMNS = ("status", "error", "wall_time_s", "compute_time_s", "cached")
 SKIPPED_SUMMARY_ITEMS = ("wall_time_s",)
 """summary.json items not copied to the table (the row's ``wall_time_s`` is the variant's
 time on its worker, run and writing included) [-]."""
@@ -32,20 +47,26 @@ CHARACTERISTICS = {
 
 def record_row(index: int, axes: dict[str, Any], record: dict[str, Any],
                cached: bool) -> dict[str, Any]:
-    """One table row from a variant record."""
-    row: dict[str, Any] = {"variant": index + 1, "hash": record["hash"], **axes}
-    row.update(status=record["status"], error=record.get("error", ""),
-               wall_time_s=float(record.get("wall_time_s", float("nan"))), cached=cached)
-    for name, value in record.get("summary", {}).items():
-        if name in SKIPPED_SUMMARY_ITEMS or name in row:
-            continue
-        if isinstance(value, dict):  # the headline and the solver settings: text blocks
-            continue
+    """One table row from a variant record (``axes``: case key → value)."""
+    summary = record.get("summary") or {}
+    failed = record.get("status") == STATUS_FAILED
+    row: dict[str, Any] = {"variant": index + 1, "hash": record["hash"]}
+    row.update({axis_column(key): value for key, value in axes.items()})
+    row.update(status=STATUS_FAILED if failed else variant_status(summary),
+               error=record.get("error", ""),
+               wall_time_s=float(record.get("wall_time_s", float("nan"))),
+               compute_time_s=float(record.get("compute_time_s", float("nan"))),
+               cached=cached)
+    for name, value in summary.items():
+        if name in SKIPPED_SUMMARY_ITEMS or name in row or isinstance(value, dict):
+            continue  # dicts: the headline and the solver settings (text blocks)
         if isinstance(value, list):
             if name.endswith("warnings"):
-                row[name] = "; ".join(str(v) for v in value)
+                row[name] = WARNING_SEPARATOR.join(str(v) for v in value)
             continue
         row[name] = float("nan") if value is None else value
+        if name == "h_min_m":
+            row["h_min_set_by"] = h_min_set_by(summary)
     return row
 
 
@@ -72,8 +93,9 @@ def axis_columns(frame: pd.DataFrame) -> list[str]:
 
 
 def best_and_worst(frame: pd.DataFrame) -> list[dict[str, Any]]:
-    """Per characteristic present: the best and worst finished variant with its axis values."""
-    ok = frame[frame["status"] == "ok"] if "status" in frame else frame
+    """Per characteristic present: the best and worst variant among those with status
+    ``ok`` (a variant with warnings is a doubtful result, not a design point)."""
+    ok = frame[frame["status"] == STATUS_OK] if "status" in frame else frame
     rows = []
     for column, best in CHARACTERISTICS.items():
         if column not in ok or ok[column].isna().all():
@@ -86,6 +108,14 @@ def best_and_worst(frame: pd.DataFrame) -> list[dict[str, Any]]:
                      "worst": float(values[i_worst]),
                      "worst_variant": _axes_text(frame, i_worst)})
     return rows
+
+
+def status_counts(frame: pd.DataFrame) -> dict[str, int]:
+    """Number of variants per status, in the order of :data:`conrod.sweep.status.STATUSES`."""
+    from conrod.sweep.status import STATUSES
+
+    counts = frame["status"].value_counts() if "status" in frame else pd.Series(dtype=int)
+    return {status: int(counts.get(status, 0)) for status in STATUSES}
 
 
 def _axes_text(frame: pd.DataFrame, index: Any) -> str:

@@ -53,6 +53,13 @@ class Variant:
         return Case.from_dict(self.case_data, base_dir=self.case_file.resolve().parent,
                               path=self.case_file)
 
+    def payload(self, out: Path, figures: bool = False) -> dict[str, Any]:
+        """The keyword arguments of :func:`conrod.sweep.worker.run_variant` for this
+        variant, stored into the sweep folder ``out`` (plain data: any worker runs it)."""
+        return {"case_data": self.case_data, "case_file": str(self.case_file.resolve()),
+                "key": self.key, "axes": self.axes, "out": str(Path(out).resolve()),
+                "figures": figures, "command": self.command}
+
 
 def _read_case_file(path: Path) -> dict[str, Any]:
     """The parsed case file (cached while its size and modification time stay the same)."""
@@ -94,8 +101,31 @@ def _merge(target: dict[str, Any], extra: dict[str, Any]) -> None:
 
 def resolve_variant(case_file: Path, axes: dict[str, Any], override: dict[str, Any],
                     index: int, command: str = "run") -> Variant:
-    """Build and validate one variant; :class:`CaseError` names the axis, key and value."""
-    data = copy.deepcopy(_read_case_file(Path(case_file).resolve()))
+    """Build and validate one variant; :class:`CaseError` names the axis, key and value.
+
+    The merged case is validated once; only when that fails is it rebuilt step by step
+    (the override, then one axis after the other) to name the step that makes it invalid.
+    """
+    base = _read_case_file(Path(case_file).resolve())
+    data = copy.deepcopy(base)
+    _merge(data, override)
+    try:
+        for key, value in axes.items():
+            if key != CASE_AXIS:
+                set_dotted(data, key, value)
+        case = _validate(data, case_file, command)
+    except CaseError:
+        _raise_at_first_bad_step(base, case_file, axes, override, index, command)
+        raise  # the steps all validate: the merged case itself is the problem
+    shown = {k: (str(v) if k == CASE_AXIS else v) for k, v in axes.items()}
+    return Variant(index, shown, data, Path(case_file), variant_hash(case, command), command)
+
+
+def _raise_at_first_bad_step(base: dict[str, Any], case_file: Path, axes: dict[str, Any],
+                             override: dict[str, Any], index: int, command: str) -> None:
+    """Apply the override, then each axis, validating after each step; raise
+    :class:`CaseError` naming the first step after which the case is invalid."""
+    data = copy.deepcopy(base)
     try:
         _merge(data, override)
         _validate(data, case_file, command)
@@ -109,9 +139,6 @@ def resolve_variant(case_file: Path, axes: dict[str, Any], override: dict[str, A
             _validate(data, case_file, command)
         except CaseError as error:
             raise CaseError(f"axis {key!r} = {value!r} (variant {index + 1}): {error}") from None
-    case = _validate(data, case_file, command)
-    shown = {k: (str(v) if k == CASE_AXIS else v) for k, v in axes.items()}
-    return Variant(index, shown, data, Path(case_file), variant_hash(case, command), command)
 
 
 def _validate(data: dict[str, Any], case_file: Path, command: str):
