@@ -154,3 +154,18 @@ def test_stress_uses_the_pressure_of_the_run_it_is_given(elastic, folder, tmp_pa
                                 "--angles", "360"])
     assert rigid.exit_code == 0, rigid.output
     assert "rigid-bore run (short film)" in rigid.output
+
+
+def test_report_of_the_elastic_run_has_the_rigid_vs_elastic_table(elastic, folder):
+    """Rodin's Table 2 columns, rigid and elastic, over the cycle and the firing stroke,
+    in the units of the headline; the figures of the deformed gap are said to be so."""
+    from conrod.report import build_report
+
+    html = build_report(folder)
+    section = html.split("<h2>Rigid and elastic big end</h2>")[1].split("<h2>")[0]
+    e, r = elastic.summary, elastic.rigid.summary
+    for text in ("smallest film h_min over the cycle [µm]", "cycle mean side flow Q [l/min]",
+                 "smallest film h_min, firing stroke [µm]", f"{r.film_h_min * 1e6:.4g}",
+                 f"{e.film_h_min * 1e6:.4g}", "Bore displacement at the elastic h_min"):
+        assert text in section, text
+    assert "cm^3/s" not in html
