@@ -288,3 +288,26 @@ def test_a_p_max_peak_over_one_output_step_is_not_printed_without_its_doubt():
                                                                    p_max=p_max))
     assert peak_step_jump(spiky.cycle) == pytest.approx(0.4)
     assert "stands 40% above both neighbouring output angles" in headline(spiky)["p_max"]
+
+
+def test_housing_and_stress_folders_get_their_own_page(runner, tmp_path):
+    """Not an empty run page: the housing summary and figures; for the rod stresses which
+    pressure loads the rod (here the shipped file's short film: a rigid bore's, said so)
+    and the maxima in MPa; both with the case inputs and their sources."""
+    kamaz = EXAMPLES / "kamaz_740_truck_diesel.toml"
+    assert runner.invoke(app, ["housing", str(kamaz), "--out", str(tmp_path / "h")]
+                         ).exit_code == 0
+    assert runner.invoke(app, ["stress", str(kamaz), "--out", str(tmp_path / "s"),
+                               "--angles", "360"]).exit_code == 0
+    for folder, headings in (("h", ["Housing summary", "Case inputs", "Figures"]),
+                             ("s", ["Which pressure loads the rod", "Rod stress summary",
+                                    "Case inputs", "Figures"])):
+        result = runner.invoke(app, ["report", str(tmp_path / folder)])
+        assert result.exit_code == 0, result.output
+        html = (tmp_path / folder / "report.html").read_text(encoding="utf-8")
+        found = re.findall(r"<h2>(.*?)</h2>", html)
+        assert all(heading in found for heading in headings), found
+        assert "Headline" not in found and html.count("<img ") >= 2
+        assert "estimated dimensions" in html or "ESTIMATE" in html  # sources of the case
+    page = (tmp_path / "s" / "report.html").read_text(encoding="utf-8")
+    assert "rigid-bore run (short film)" in page and "max von Mises [MPa]" in page
