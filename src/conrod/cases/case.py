@@ -23,6 +23,7 @@ from conrod.cases.contact import ContactSection
 from conrod.cases.engine import EngineSection
 from conrod.cases.housing import HousingSection
 from conrod.cases.load import LoadTableSection
+from conrod.cases.limits import LimitsSection
 from conrod.cases.lubricant import LubricantSection
 from conrod.cases.mechanism import ClearanceSection
 from conrod.cases.misalignment import MisalignmentSection
@@ -31,7 +32,8 @@ from conrod.cases.solver import SolverSection
 from conrod.errors import CaseError
 from conrod.io.text import read_utf8
 
-ADDED_LATER = (("misalignment",), ("bearing", "profile"), ("bearing", "profile_file"))
+ADDED_LATER = (("misalignment",), ("bearing", "profile"), ("bearing", "profile_file"),
+               ("limits",))
 """Optional items added to the schema after cases were hashed: left out of
 :meth:`Case.content_hash` while unset, so an existing case keeps its hash."""
 
@@ -52,6 +54,7 @@ class Case(Section):
     clearance: ClearanceSection | None = None
     housing: HousingSection = HousingSection()
     misalignment: MisalignmentSection | None = None
+    limits: LimitsSection | None = None
 
     @model_validator(mode="after")
     def _check_housing_closes(self) -> Case:

@@ -310,6 +310,13 @@ class ElasticFilm(FilmWrapper):
         (alike at every z for a plane housing, u(θ_j, z_k) itself over the width) [m]."""
         return self.housing.film_field(deformation, self._axial_nodes)
 
+    def film_fields(self, state: FilmState, memory: ElasticMemory) -> dict:
+        """Bore deformation δ(θ, z) [m], the inner film's film fraction and fields
+        (:class:`~conrod.film.capabilities.HasFilmFields`, :mod:`conrod.ehd.fields`)."""
+        from conrod.ehd.fields import elastic_fields
+
+        return elastic_fields(self, state, memory)
+
     def inertia_deformation(self, crank_angle: float) -> np.ndarray:
         """Corrected inertia deformation P U c(φ) at φ [rad] [m]; zero without crank
         kinematics (table loads)."""

@@ -35,7 +35,10 @@ declares what its inner model declares by delegating the methods.
   implicit orbit integrator runs inside its compiled free flight;
 * :class:`HasTiltFlightKernel` — the same for the forces and moments of a tilted journal;
 * :class:`CarriesAsperityContact` — the film's force holds the asperity contact;
-* :class:`HasDeformedGap` — a deforming bore that says where its deformed film closes.
+* :class:`HasDeformedGap` — a deforming bore that says where its deformed film closes;
+* :class:`HasFilmFields` — fields of its own on the film grid at an answer (the bore
+  deformation, a film temperature, ...), which the fields over the cycle and the sign-off
+  indicators take up by their names.
 
 A memory (:class:`HasMemory`) is owned by the *integrator*: it initialises it, threads it
 through every solve, advances it over a step, snapshots it and restores it on a rejected
@@ -266,6 +269,34 @@ class HasDeformedGap(Protocol):
 
     def open_radius(self, x: float, y: float, memory: Any) -> float:
         """Largest |e| along (x, y) at which the deformed film stays open [m]."""
+        ...
+
+
+@dataclass(frozen=True)
+class FilmField:
+    """A field a film declares on its grid (:class:`HasFilmFields`).
+
+    values : ndarray  The field at the grid nodes (n_θ, n_z) of :meth:`FilmModel.grid`.
+    units : str  Its unit as UDUNITS writes it ('m', 'Pa', 'degC', '1').
+    long_name : str  What it is, in words.
+    """
+
+    values: np.ndarray
+    units: str
+    long_name: str
+
+
+@runtime_checkable
+class HasFilmFields(Protocol):
+    """A film that reports fields of its own on its grid at an answer: the elastic bore's
+    deformation δ(θ, z), a thermal film's temperature T(θ, z), ... The fields over the cycle
+    (``conrod run --fields``) and the per-cell sign-off indicators take every declared field
+    up by its name ('deformation' [m], 'temperature' [degC], ...): a new field plugs in by
+    being declared here, nothing else changes."""
+
+    def film_fields(self, state: FilmState, memory: Any) -> dict[str, FilmField]:
+        """name → :class:`FilmField` at the answer of ``state`` whose memory after the
+        solve is ``memory`` (None for a memoryless film)."""
         ...
 
 

@@ -275,6 +275,9 @@ class RunResults:
     case_record: Any = None
     """The case as run (:class:`conrod.results.case_record.CaseRecord`): the case file,
     the tables it reads, the values set on top of it; written into the result folder."""
+    signoff: Any = None
+    """Per-cell indicators, margins against ``[limits]`` and the fields over the cycle when
+    asked for (:class:`conrod.results.margins.SignOff`); None: not computed."""
 
     def film_envelope(self) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
         """(shell angles θ [rad], the smallest film thickness each of them sees over the

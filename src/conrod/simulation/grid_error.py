@@ -87,6 +87,7 @@ def _coarse_run(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
             progress(f"grid {grid[0]}x{grid[1]} {stage}", cycle, error)
     coarse = Simulation(simulation.case, film=simulation.solver.film,
                         integrator=simulation.solver.integrator, rigid_companion=False,
+                        signoff=False,
                         **{**_overrides(simulation), "n_theta": grid[0], "n_z": grid[1]})
     results = coarse.run(staged)
     return getattr(results, "elastic", results)

@@ -41,6 +41,7 @@ from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
 from conrod.results.plausibility import check_run
 from conrod.results.summary import contact_warnings, summarise
+from conrod.simulation.fields import check_fields_stride, signed_off
 from conrod.simulation.orbit_outputs import (
     film_asperity_force,
     heat_balance_temperature,
@@ -74,13 +75,18 @@ class Simulation:
         ``[housing]`` (rigid unless its model is builtin, mesh or compliance).
     rigid_companion : bool  With an elastic housing, also run the rigid bore and compare
         (:class:`conrod.results.ehd.ElasticRunResults`).
+    signoff : bool  Compute the per-cell sign-off indicators and the margins against
+        ``[limits]`` (:mod:`conrod.simulation.fields`; ``results.signoff``).
+    fields : float or None  Keep the fields over the last cycle every ``fields`` degrees of
+        crank angle (``conrod run --fields``) [deg]; None: not kept.
     overrides : keyword arguments replacing other ``[solver]`` fields (e.g. ``max_cycles=2``,
         ``n_theta=72``); validated like the case file.
     """
 
     def __init__(self, case: Case, film: FilmModel | str | None = None,
                  loads: LoadCycle | None = None, integrator: Integrator | str | None = None,
-                 housing: Any = None, rigid_companion: bool = True, **overrides: Any):
+                 housing: Any = None, rigid_companion: bool = True, signoff: bool = True,
+                 fields: float | None = None, **overrides: Any):
         if not isinstance(case, Case):  # the arguments, before anything is read from them
             shown = repr(case) if len(repr(case)) <= 60 else repr(case)[:57] + "..."
             raise CaseError(f"Simulation: case = {shown}: a conrod.Case is required "
@@ -105,6 +111,7 @@ class Simulation:
                             "None, 'rigid' or a conrod.housing.housing.Housing)")
         self._housing = housing
         self._rigid_companion = rigid_companion
+        self._signoff = (signoff, check_fields_stride(fields))
         self._overrides = dict(overrides)
         names = {"film": film if isinstance(film, str) else None,
                  "integrator": integrator if isinstance(integrator, str) else None}
@@ -245,7 +252,7 @@ class Simulation:
             integrator = (self._integrator if self._integrator is not None
                           else self._names["integrator"])
         return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
-                          housing="rigid", **self._overrides)
+                          housing="rigid", signoff=False, **self._overrides)
 
     def run_orbit(self, progress: ProgressCallback | None = None
                   ) -> tuple[RunResults, ThermalOrbit]:
@@ -280,9 +287,10 @@ class Simulation:
         wall_time = time.perf_counter() - start
         summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)
         resolved = self.case.model_copy(update={"solver": self.solver})  # with the overrides
-        return dataclasses.replace(results, summary=summary, model=self._model_description(),
-                                   case_hash=resolved.content_hash(),
-                                   settings=self.solver.model_dump(mode="json")), thermal
+        results = dataclasses.replace(results, summary=summary, model=self._model_description(),
+                                      case_hash=resolved.content_hash(),
+                                      settings=self.solver.model_dump(mode="json"))
+        return signed_off(results, thermal, self.case, *self._signoff), thermal
 
     def _model_description(self) -> dict[str, str]:
         """What is computed, in words, for the headline."""

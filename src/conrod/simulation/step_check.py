@@ -21,7 +21,8 @@ def with_step_check(results: Any, simulation: Simulation) -> Any:
              if step is not None else {"integrator": "implicit"})
     try:
         fine = Simulation(simulation.case, film=solver.film, max_cycles=solver.max_cycles,
-                          n_theta=solver.n_theta, n_z=solver.n_z, **finer).run()
+                          n_theta=solver.n_theta, n_z=solver.n_z, signoff=False,
+                          **finer).run()
     except (CaseError, ConvergenceError):  # no reference for this film: nothing to compare
         return results
     extra = tuple(step_study_warnings(results.summary, fine.summary, step))

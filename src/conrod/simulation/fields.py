@@ -1,0 +1,159 @@
+"""The fields on the film grid over the last cycle and the sign-off built on them (per-cell
+indicators, cavitation erosion, margins against ``[limits]``).
+
+At each output crank angle the film is solved once more as the characteristics solve it
+(:func:`conrod.orbit.characteristics.film_results`: the accepted step's own answer where
+the memory holds it, the warm start threaded from angle to angle otherwise), now with its
+pressure field. Besides the pressure:
+
+* film thickness h(θ, z) = c − (e_x + z γ_y) cos θ − (e_y − z γ_x) sin θ + h₀(θ, z) + δ(θ, z)
+  (docs/conventions.md), with the bore profile h₀ and a declared deformation δ;
+* film fraction ϑ of a film with a content (:class:`~conrod.film.capabilities.HasMixableContent`);
+* every field the film declares (:class:`~conrod.film.capabilities.HasFilmFields`: the
+  elastic bore's deformation, a thermal film's temperature, ...);
+* with Greenwood–Tripp contact, the asperity pressure p_a(h) on that film thickness
+  (:func:`conrod.contact.asperity.asperity_pressure`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from conrod.contact.asperity import asperity_pressure
+from conrod.errors import CaseError
+from conrod.film.base import FilmState
+from conrod.film.capabilities import HasFilmFields, HasMixableContent
+from conrod.film.profile import profile_field
+from conrod.loads.tilt import cycle_tilt
+from conrod.orbit.problem import OrbitProblem
+from conrod.results.cycle_results import CycleResults
+from conrod.results.erosion import erosion_map
+from conrod.results.fields import FIELD_SPECS, CycleFields, FieldSpec
+from conrod.results.indicators import cell_indicators
+from conrod.results.margins import SignOff, margins
+
+
+def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None
+                 ) -> CycleFields | None:
+    """The fields at every output angle of ``cycle`` (module docstring); None for a film
+    without a pressure field (table, mobility)."""
+    film = problem.film
+    theta, z = (np.asarray(a, dtype=float) for a in film.grid())
+    session = problem.session()
+    rows: dict[str, list[np.ndarray]] = {}
+    specs: dict[str, FieldSpec] = {}
+    for i in range(len(cycle.crank_angle)):
+        state = _state(problem, cycle, i)
+        if film_memory:
+            session.restore(film_memory[i])
+            result = session.accepted(state, with_pressure=True)
+        else:
+            result = session.solve(state, with_pressure=True)
+        if result.pressure is None:
+            return None
+        for name, (values, spec) in _row(problem, state, session.memory, result.pressure,
+                                         theta, z).items():
+            rows.setdefault(name, []).append(values)
+            specs.setdefault(name, spec)
+    g = film.geometry
+    return CycleFields(
+        np.asarray(cycle.crank_angle, dtype=float), theta, z,
+        np.asarray(cycle.journal_rotation, dtype=float),
+        {name: np.array(values) for name, values in rows.items()}, specs,
+        problem.loads.cycle, problem.crank_speed, g.cavitation_pressure, str(film.name))
+
+
+def _row(problem, state, memory, pressure, theta, z) -> dict:
+    """name → (field (n_θ, n_z), spec) at one output angle."""
+    film = problem.film
+    out = {"pressure": (np.asarray(pressure, dtype=float), FIELD_SPECS["pressure"])}
+    declared = film.film_fields(state, memory) if isinstance(film, HasFilmFields) else {}
+    deformation = declared["deformation"].values if "deformation" in declared else None
+    h = film_thickness_field(film.geometry, state, theta, z, deformation)
+    out["film_thickness"] = (h, FIELD_SPECS["film_thickness"])
+    if isinstance(film, HasMixableContent) and memory is not None:
+        fraction = film.content_vector(memory).reshape(h.shape)
+        out["film_fraction"] = (fraction, FIELD_SPECS["film_fraction"])
+    for name, item in declared.items():
+        out[name] = (np.asarray(item.values, dtype=float),
+                     FIELD_SPECS.get(name, FieldSpec(item.units, item.long_name)))
+    if problem.asperity is not None:
+        _, _, roughness, scale = problem.asperity
+        out["asperity_pressure"] = (np.asarray(asperity_pressure(h, roughness, scale),
+                                               dtype=float), FIELD_SPECS["asperity_pressure"])
+    return out
+
+
+def film_thickness_field(geometry, state: FilmState, theta: np.ndarray, z: np.ndarray,
+                         deformation: np.ndarray | None = None) -> np.ndarray:
+    """h(θ, z) [m] of ``state`` on the nodes θ × z (module docstring)."""
+    cos, sin = np.cos(theta)[:, None], np.sin(theta)[:, None]
+    zz = z[None, :]
+    h = (geometry.radial_clearance - (state.eccentricity_x + zz * state.tilt_y) * cos
+         - (state.eccentricity_y - zz * state.tilt_x) * sin)
+    profile = profile_field(geometry, theta, z) if geometry.profile is not None else None
+    if profile is not None:
+        h = h + profile
+    if deformation is not None:
+        h = h + deformation
+    return h
+
+
+def _state(problem: OrbitProblem, cycle: CycleResults, i: int) -> FilmState:
+    return FilmState(
+        eccentricity_x=float(cycle.eccentricity_x[i]),
+        eccentricity_y=float(cycle.eccentricity_y[i]),
+        velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
+        journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
+        viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i))
+
+
+def sign_off(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None, summary,
+             limits: dict[str, float], stride_deg: float | None = None) -> SignOff:
+    """Per-cell indicators, the erosion indicator and the margins against ``limits``; the
+    fields kept at ``stride_deg`` [deg] when asked for (None: not kept)."""
+    fields = cycle_fields(problem, cycle, film_memory)
+    notes: list[str] = []
+    if fields is None:
+        notes.append(f"film {problem.film.name!r} gives no pressure field: no per-cell maps")
+        return SignOff(None, margins(limits, summary, cycle, None), None, tuple(notes))
+    erosion, note = erosion_map(fields)
+    indicators = cell_indicators(fields, erosion, note)
+    kept = None if stride_deg is None else fields.every(stride_deg)
+    return SignOff(indicators, margins(limits, summary, cycle, indicators), kept, tuple(notes))
+
+
+def check_fields_stride(stride: float | None) -> float | None:
+    """The stride of the fields over the cycle [deg]: None or a number in (0, 720]."""
+    if stride is None:
+        return None
+    if isinstance(stride, bool) or not isinstance(stride, int | float) or not (
+            0.0 < stride <= 720.0):
+        raise CaseError(f"fields = {stride!r}: out of range (allowed: > 0 and <= 720 deg of "
+                        "crank angle between kept rows, or None)")
+    return float(stride)
+
+
+def signed_off(results, thermal, case, wanted: bool = True, stride_deg: float | None = None):
+    """``results`` of the converged orbit ``thermal`` (problem, orbit) with its sign-off
+    (:func:`with_sign_off`) against the case's ``[limits]``; unchanged when not ``wanted``."""
+    if not wanted:
+        return results
+    limits = case.limits.given() if case.limits is not None else {}
+    return with_sign_off(results, thermal.problem, thermal.orbit.last.film_memory, limits,
+                         stride_deg)
+
+
+def with_sign_off(results, problem, film_memory, limits, stride_deg=None):
+    """``results`` with its :class:`SignOff` and a warning per crossed limit."""
+    signoff = sign_off(problem, results.cycle, film_memory, results.summary, limits,
+                       stride_deg)
+    summary = dataclasses.replace(
+        results.summary, warnings=(*results.summary.warnings, *signoff.warnings()))
+    return dataclasses.replace(results, summary=summary, signoff=signoff)
+
+
+__all__ = ["check_fields_stride", "cycle_fields", "film_thickness_field", "sign_off",
+           "signed_off", "with_sign_off"]
