@@ -32,6 +32,7 @@ _PUBLIC = {
     "RunResults": "conrod.results.cycle_results",
     "RunSummary": "conrod.results.cycle_results",
     "Simulation": "conrod.simulation.simulation",
+    "open_fields": "conrod.output.fields_file",
     "write_results": "conrod.output.registry",
 }
 """Public name → the module that defines it."""
@@ -65,5 +66,5 @@ def run(case: Case | str | os.PathLike[str], **options) -> RunResults:
 
 
 __all__ = ["BearingGeometry", "Case", "CaseError", "ConrodError", "ConvergenceError",
-           "CycleResults", "FilmState", "RunResults", "RunSummary", "Simulation", "run",
-           "write_results", "__version__"]
+           "CycleResults", "FilmState", "RunResults", "RunSummary", "Simulation", "open_fields",
+           "run", "write_results", "__version__"]

@@ -22,8 +22,8 @@ from conrod.cases.bearing import BearingSection
 from conrod.cases.contact import ContactSection
 from conrod.cases.engine import EngineSection
 from conrod.cases.housing import HousingSection
-from conrod.cases.load import LoadTableSection
 from conrod.cases.limits import LimitsSection
+from conrod.cases.load import LoadTableSection
 from conrod.cases.lubricant import LubricantSection
 from conrod.cases.mechanism import ClearanceSection
 from conrod.cases.misalignment import MisalignmentSection

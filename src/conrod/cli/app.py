@@ -191,4 +191,7 @@ def main() -> None:
         encoding_safe_streams()
         warnings.formatwarning = _one_line_warning
         _register_commands()
+        from conrod.cli.run_command import optional_fields_stride
+
+        sys.argv[1:] = optional_fields_stride(sys.argv[1:])
         app()

@@ -26,6 +26,8 @@ HEADLINE_WIDTH = 16
 """Width of the label column of the plain headline [characters]."""
 PROGRESS_AFTER_S = 1.0
 """Without a terminal, the first log line comes once the run has taken this long [s]."""
+FIELDS_DEFAULT_DEG = 1.0
+"""Stride of ``--fields`` given without a value [deg of crank angle]."""
 
 
 class _Progress:
@@ -147,6 +149,13 @@ def register(app: typer.Typer) -> None:
         grid_error: Annotated[bool, typer.Option(
             help="Grid films: run the orbit again on coarser grids and give the grid error "
             "of h_min and p_max (Richardson, observed order) in the headline.")] = True,
+        fields: Annotated[float | None, typer.Option(
+            "--fields", metavar="[STRIDE_DEG]",
+            help="Write the film fields (pressure, film thickness, film fraction, "
+            "deformation, asperity pressure, temperature: what the run has) over the last "
+            "cycle every STRIDE_DEG of crank angle to fields.nc (netCDF; "
+            f"conrod.open_fields(folder)); --fields alone: every {FIELDS_DEFAULT_DEG:g} deg."
+        )] = None,
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
         single_threaded_blas()
@@ -165,7 +174,7 @@ def register(app: typer.Typer) -> None:
         simulation = Simulation(case, film=film and film.value,
                                 integrator=integrator and integrator.value, max_cycles=max_cycles,
                                 step_deg=step_deg, n_theta=n_theta, n_z=n_z,
-                                rigid_companion=rigid)
+                                rigid_companion=rigid, fields=fields)
         progress = _Progress(simulation.solver.max_cycles,
                              simulation.solver.periodicity_tolerance)
         try:
@@ -192,6 +201,17 @@ def register(app: typer.Typer) -> None:
             if note:
                 typer.echo(note)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
+
+
+def optional_fields_stride(argv: list[str]) -> list[str]:
+    """``argv`` with the default stride after a bare ``--fields`` of ``conrod run`` (last,
+    or followed by another option): ``--fields [STRIDE_DEG]`` takes an optional value."""
+    out = list(argv)
+    for i, token in enumerate(out):
+        if token == "--fields" and (i + 1 == len(out) or out[i + 1].startswith("--")):
+            out.insert(i + 1, f"{FIELDS_DEFAULT_DEG:g}")
+            break
+    return out
 
 
 def _renew_report(out: Path) -> str:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from conrod.output.registry import TableSpec, result_kind, tables
+from conrod.output.signoff_tables import signoff_tables
 from conrod.output.tables import case_tables, contact_tables, cycle_table, summary_items
 from conrod.results.ehd import ElasticRunResults, comparison
 
@@ -80,7 +81,8 @@ def _elastic_tables(results: ElasticRunResults) -> tuple[TableSpec, ...]:
                           "the crank angles [deg] of the largest load and of [housing] "
                           "stress_angles (read by conrod stress RUN_FOLDER).",
                           lambda: film_pressure_table(results)),)
-    return own + contact_tables(results.elastic) + case_tables(results.elastic)
+    return (own + contact_tables(results.elastic) + signoff_tables(results.elastic)
+            + case_tables(results.elastic))
 
 
 @result_kind.register

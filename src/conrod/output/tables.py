@@ -14,6 +14,7 @@ from conrod.loads.engine_loads import EngineLoads
 from conrod.mechanism.regimes import SweepRun
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults, MechanismRun
 from conrod.output.registry import TableSpec, result_kind, tables
+from conrod.output.signoff_tables import signoff_tables
 from conrod.results.axial import axial_summary_items
 from conrod.results.case_record import CASE_FILE
 from conrod.results.columns import CYCLE_COLUMNS, axial_table
@@ -71,6 +72,8 @@ def summary_items(results: RunResults) -> dict:
         items.update(axial_summary_items(results.cycle.crank_angle, results.cycle.axial))
     if results.contact is not None:
         items.update(results.contact.summary_items())
+    if results.signoff is not None:
+        items["signoff"] = results.signoff.as_json_items()
     return items
 
 
@@ -115,7 +118,7 @@ def _run_tables(results: RunResults) -> tuple[TableSpec, ...]:
                   "run diagnostics.",
                   lambda: summary_items(results)),
 )
-    return own + contact_tables(results) + case_tables(results)
+    return own + contact_tables(results) + signoff_tables(results) + case_tables(results)
 
 
 @result_kind.register

@@ -95,16 +95,17 @@ class Margin:
             return f"limit {self.display(self.limit)}: not checked ({self.source})"
         sign = "≥" if LIMITS[self.name][2] == "min" else "≤"
         state = "CROSSED" if self.crossed else "ok"
+        where = self.where() or self.source
         return (f"{self.display(self.value)} vs limit {sign} {self.display(self.limit)}: "
-                f"margin {self.margin:+.0%} {state} ({self.where()})")
+                f"margin {self.margin:+.0%} {state} ({where})")
 
     def as_json_items(self) -> dict:
         """summary.json items (SI units in the keys' suffixes)."""
-        unit = {"m": "m", "Pa": "Pa", "degC": "degC"}[self.units]
-        degrees = (lambda a: None if a is None else math.degrees(a))
+        unit = self.units
         return {"label": self.label, f"value_{unit}": self.value, f"limit_{unit}": self.limit,
                 "margin": self.margin, "crossed": self.crossed,
-                "crank_angle_deg": degrees(self.crank_angle),
+                "crank_angle_deg": (None if self.crank_angle is None
+                                    else math.degrees(self.crank_angle)),
                 "theta_deg": None if self.theta is None else math.degrees(self.theta) % 360.0,
                 "z_m": self.z, "source": self.source}
 

@@ -146,6 +146,8 @@ def headline(results: RunResults) -> dict[str, str]:
                             "with film, hard-contact and boundary friction)")
     lines["orbit"] = (f"{'periodic' if s.periodic else 'NOT periodic'} after {s.cycles} "
                       f"cycles (error {s.periodicity_error:.2g} c)")
+    if results.signoff is not None:  # margins against [limits], the erosion indicator
+        lines.update(results.signoff.headline())
     lines["warnings"] = str(len(s.warnings)) if s.warnings else "none"
     lines["status"] = f"exit code {s.exit_code} ({EXIT_MEANINGS[s.exit_code]})"
     lines.update(results.headline_extra or {})
