@@ -53,7 +53,31 @@ def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
                    lambda: _plots("film_maps").plot_min_film_envelope(results)),
 )
     contact = results.contact
-    return own + (figures(contact) if contact is not None and contact.has_contact else ())
+    return (own + signoff_figures(results)
+            + (figures(contact) if contact is not None and contact.has_contact else ()))
+
+
+def signoff_figures(results: RunResults) -> tuple[FigureSpec, ...]:
+    """The per-cell indicator maps (shell, journal) and the erosion map of a run."""
+    signoff = results.signoff
+    if signoff is None or signoff.indicators is None:
+        return ()
+    maps = "largest pressure, pressure range, smallest film thickness (and asperity " \
+        "pressure, temperature where computed)"
+    return (
+        FigureSpec("indicator_maps_shell.png", "Per-cell indicators on the shell",
+                   f"Over the cycle at each point of the unrolled shell: {maps} over θ "
+                   "[deg] and z [mm]; worst cell marked, limit contours dashed.",
+                   lambda: _plots("indicator_plots").plot_indicator_maps(results, "shell")),
+        FigureSpec("indicator_maps_journal.png", "Per-cell indicators on the journal",
+                   f"The same on the journal in its own frame (it turns): {maps} over the "
+                   "journal angle α [deg] and z [mm].",
+                   lambda: _plots("indicator_plots").plot_indicator_maps(results, "journal")),
+        FigureSpec("erosion_map.png", "Cavitation-erosion indicator",
+                   "Largest reformation intensity over the cycle at each shell cell "
+                   "[GPa/s] (mass-conserving film; a labelled proxy for the Reynolds film).",
+                   lambda: _plots("indicator_plots").plot_erosion_map(results)),
+    )
 
 
 def _bore(results: RunResults) -> str:

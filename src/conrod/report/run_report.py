@@ -18,6 +18,7 @@ import pandas as pd
 from conrod.report.headline import comparison_section, headline_section, summary_section
 from conrod.report.html import Image, Section, Table
 from conrod.report.inputs import header_notes, input_rows
+from conrod.report.signoff_report import signoff_section
 
 FILE_CAPTIONS = {
     "orbit.png": ("Journal-centre orbit", "Path of the journal centre relative to the shell "
@@ -136,6 +137,10 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
         case_data = _recorded_data(case_file, recorded)
     cycle = _csv(folder / "cycle.csv")
     sections = [headline_section(summary)] if summary else []
+    catalogue = figure_catalogue(folder, manifest)
+    signoff = signoff_section(summary, folder, catalogue) if summary else None
+    if signoff is not None:
+        sections.append(signoff)
     if record.get("axes"):
         sections[0].blocks.insert(0, "Sweep variant: " + ", ".join(
             f"{k} = {v}" for k, v in record["axes"].items()))
@@ -155,7 +160,7 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
             "polar diagram (left, labels give the crank angle in degrees) and magnitude "
             "against crank angle in degrees (right).", plots.png_bytes(
                 plots.load_diagram_figure(cycle)))]))
-    sections += _figure_sections(folder, manifest, cycle)
+    sections += _figure_sections(folder, catalogue, cycle)
     if manifest is not None and manifest.get("tables"):
         sections.append(Section("Result files", [Table(
             ["file", "title", "caption"],
@@ -165,11 +170,10 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
     return title, sections
 
 
-def _figure_sections(folder: Path, manifest: dict | None, cycle) -> list[Section]:
-    """The figure sections in their order, drawn from cycle.csv where the folder has none
-    (a sweep variant written without figures); contact and wear only where the journal
-    touched the shell."""
-    catalogue = figure_catalogue(folder, manifest)
+def _figure_sections(folder: Path, catalogue: dict[str, tuple], cycle) -> list[Section]:
+    """The figure sections in their order (``catalogue``: the folder's figures not shown
+    yet), drawn from cycle.csv where the folder has none (a sweep variant written without
+    figures); contact and wear only where the journal touched the shell."""
     sections = []
     for title, files, drawing in SECTIONS:
         images = [_file_image(folder, name, catalogue.pop(name)) for name in files
