@@ -30,7 +30,7 @@ import math
 import numpy as np
 
 from conrod.results.fields import CycleFields
-from conrod.results.indicators import CellMap
+from conrod.results.indicators import CellMap, middle_of_ties
 
 FULL_FILM = 1.0 - 1e-9
 """Film fraction below which a cell counts as cavitated [-]."""
@@ -86,6 +86,7 @@ def erosion_map(fields: CycleFields) -> tuple[CellMap | None, str]:
     when = per_interval.argmax(axis=0)
     after = (when + 1) % fields.crank_angle.size  # the interval ends at φ_(i+1)
     j, k = np.unravel_index(int(values.argmax()), values.shape)
+    k = middle_of_ties(values[j], int(k))
     item = CellMap("erosion", words, "Pa/s", "shell", values, fields.crank_angle[after],
                    "max", float(values[j, k]), float(fields.theta[j]), float(fields.z[k]),
                    float(fields.crank_angle[after[j, k]]))

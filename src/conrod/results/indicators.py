@@ -170,14 +170,14 @@ def _cell_map(name, long_name, units, frame, rows, how, fields, shell_rows) -> C
     else:
         flat = int(values.argmin() if worst == "min" else values.argmax())
         j, k = np.unravel_index(flat, values.shape)
-        k = _middle_of_ties(values[j], int(k))
+        k = middle_of_ties(values[j], int(k))
         i = int(when[j, k])
         value, theta, z = float(values[j, k]), float(fields.theta[j]), float(fields.z[k])
     return CellMap(name, long_name, units, frame, values, fields.crank_angle[when], worst,
                    value, theta, z, float(fields.crank_angle[i]))
 
 
-def _middle_of_ties(column: np.ndarray, k: int) -> int:
+def middle_of_ties(column: np.ndarray, k: int) -> int:
     """The middle of the axial nodes within round-off of ``column[k]`` (a film uniform
     along the width has its extreme at every z: the film's own h_min position rule) [-]."""
     ties = np.flatnonzero(np.abs(column - column[k]) <= 1e-12 * abs(column[k]))
@@ -197,7 +197,7 @@ def _refined(how: str, rows: np.ndarray, fields: CycleFields
     best = None
     for i, node in enumerate(nodes):
         j, k = divmod(int(node), rows.shape[2])
-        k = _middle_of_ties(rows[i, j], k)
+        k = middle_of_ties(rows[i, j], k)
         value, theta = refine(rows[i], grid, j, k)
         if best is None or (value > best[0] if how == "max" else value < best[0]):
             best = (value, theta, float(fields.z[k]), i)
