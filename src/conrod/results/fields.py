@@ -66,6 +66,10 @@ class CycleFields:
     film_model: str = ""
     notes: tuple[str, ...] = field(default=())
     """What the fields leave out or approximate, in words [-]."""
+    row_extremes: dict[str, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
+    """Field name → (the film's own extreme per row, its shell angle θ [rad]) as the film
+    reported it with these fields (p_max and h_min of ``cycle.csv``, refined between the
+    nodes where the film refines them); the maps' worst values take these (one truth)."""
 
     def __contains__(self, name: str) -> bool:
         return name in self.values
@@ -87,7 +91,7 @@ class CycleFields:
             self.crank_angle[rows], self.theta, self.z, self.journal_rotation[rows],
             {name: values[rows] for name, values in self.values.items()}, dict(self.specs),
             self.cycle_length, self.crank_speed, self.cavitation_pressure, self.film_model,
-            self.notes)
+            self.notes, {name: (v[rows], a[rows]) for name, (v, a) in self.row_extremes.items()})
 
 
 def stride_rows(crank_angle: np.ndarray, stride: float) -> np.ndarray:

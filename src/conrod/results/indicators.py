@@ -18,9 +18,10 @@ point at its own angle α lies at the shell angle α + ψ(φ), ψ the journal ro
 ``cycle.csv``; each row is turned by the nearest whole number of cells, so the journal map
 holds exactly the shell's values and its positions are within half a cell, Δθ/2). Each map
 has its worst value, where (θ, z) and when (crank angle). The worst film pressure and film
-thickness are refined between the nodes in θ by the parabola of the film's own p_max and
-h_min (:func:`conrod.film.characteristics.peak_pressure_at`), so they are the numbers of
-``cycle.csv`` where the film reports its own grid's extremes (the grid films).
+thickness are the film's own p_max and h_min of the output rows (``cycle.csv``, from the
+same solve as the fields; between the nodes where the film refines them), so the maps and
+the headline give one number; without them (fields from elsewhere) each row's extreme node
+is refined in θ by the film's parabola (:func:`conrod.film.characteristics.peak_pressure_at`).
 """
 
 from __future__ import annotations
@@ -134,7 +135,7 @@ def cell_indicators(fields: CycleFields, erosion: CellMap | None = None,
         for frame in ("shell", "journal"):
             rows = history if frame == "shell" else journal_frame(history, fields)
             maps.append(_cell_map(name, f"{words}, {frame}", units, frame, rows, how,
-                                  fields, history))
+                                  fields, history, source))
     return Indicators(fields.theta, fields.z, tuple(maps), erosion, erosion_note)
 
 
@@ -154,7 +155,8 @@ def journal_frame(history: np.ndarray, fields: CycleFields) -> np.ndarray:
     return np.take_along_axis(history, index[:, :, None], axis=1)
 
 
-def _cell_map(name, long_name, units, frame, rows, how, fields, shell_rows) -> CellMap:
+def _cell_map(name, long_name, units, frame, rows, how, fields, shell_rows,
+              source) -> CellMap:
     """The indicator of ``rows`` (n, n_θ, n_z) per cell and its worst value."""
     high, low = rows.argmax(axis=0), rows.argmin(axis=0)
     if how == "min":
@@ -164,7 +166,7 @@ def _cell_map(name, long_name, units, frame, rows, how, fields, shell_rows) -> C
     else:
         values, when, worst = rows.max(axis=0) - rows.min(axis=0), high, "max"
     if name in ("max_pressure", "min_film_thickness"):
-        value, theta, z, i = _refined(how, shell_rows, fields)
+        value, theta, z, i = _refined(how, shell_rows, fields, source)
         if frame == "journal":
             theta = (theta - float(fields.journal_rotation[i])) % TWO_PI
     else:
@@ -184,16 +186,23 @@ def middle_of_ties(column: np.ndarray, k: int) -> int:
     return int(ties[len(ties) // 2])
 
 
-def _refined(how: str, rows: np.ndarray, fields: CycleFields
+def _refined(how: str, rows: np.ndarray, fields: CycleFields, source: str
              ) -> tuple[float, float, float, int]:
     """(value, shell θ [rad], z [m], output row) of the worst film pressure or thickness:
-    each row's extreme node refined in θ by the film's own parabola, as the film reports
-    its p_max and h_min per row, and the worst of the rows (the first on a tie)."""
+    the film's own extreme of each row where the fields carry it (the p_max and h_min of
+    ``cycle.csv``, from the same solve), else each row's extreme node refined in θ by the
+    film's parabola; the worst of the rows (the first on a tie), z of its extreme node."""
+    flat = rows.reshape(rows.shape[0], -1)
+    nodes = flat.argmax(axis=1) if how == "max" else flat.argmin(axis=1)
+    if source in fields.row_extremes:
+        values, angles = fields.row_extremes[source]
+        i = int(np.argmax(values) if how == "max" else np.argmin(values))
+        j, k = divmod(int(nodes[i]), rows.shape[2])
+        k = middle_of_ties(rows[i, j], k)
+        return float(values[i]), float(angles[i]) % TWO_PI, float(fields.z[k]), i
     n_theta = fields.theta.size
     grid = SimpleNamespace(n_theta=n_theta, theta=fields.theta, d_theta=TWO_PI / n_theta)
     refine = peak_pressure_at if how == "max" else minimum_film_at
-    flat = rows.reshape(rows.shape[0], -1)
-    nodes = flat.argmax(axis=1) if how == "max" else flat.argmin(axis=1)
     best = None
     for i, node in enumerate(nodes):
         j, k = divmod(int(node), rows.shape[2])

@@ -44,6 +44,7 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
     session = problem.session()
     rows: dict[str, list[np.ndarray]] = {}
     specs: dict[str, FieldSpec] = {}
+    extremes: list[tuple[float, float, float, float]] = []
     for i in range(len(cycle.crank_angle)):
         state = _state(problem, cycle, i)
         if film_memory:
@@ -53,16 +54,20 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
             result = session.solve(state, with_pressure=True)
         if result.pressure is None:
             return None
+        extremes.append((result.max_pressure, result.max_pressure_angle,
+                         result.min_film_thickness, result.min_film_angle))
         for name, (values, spec) in _row(problem, state, session.memory, result.pressure,
                                          theta, z).items():
             rows.setdefault(name, []).append(values)
             specs.setdefault(name, spec)
-    g = film.geometry
+    g, reported = film.geometry, np.array(extremes)
     return CycleFields(
         np.asarray(cycle.crank_angle, dtype=float), theta, z,
         np.asarray(cycle.journal_rotation, dtype=float),
         {name: np.array(values) for name, values in rows.items()}, specs,
-        problem.loads.cycle, problem.crank_speed, g.cavitation_pressure, str(film.name))
+        problem.loads.cycle, problem.crank_speed, g.cavitation_pressure, str(film.name),
+        row_extremes={"pressure": (reported[:, 0], reported[:, 1]),
+                      "film_thickness": (reported[:, 2], reported[:, 3])})
 
 
 def _row(problem, state, memory, pressure, theta, z) -> dict:
