@@ -73,6 +73,7 @@ def summary_items(results: RunResults) -> dict:
     if results.contact is not None:
         items.update(results.contact.summary_items())
     if results.signoff is not None:
+        items.update(results.signoff.flat_items())  # scalars: the sweep table's columns
         items["signoff"] = results.signoff.as_json_items()
     return items
 

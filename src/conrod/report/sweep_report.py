@@ -11,6 +11,7 @@ import pandas as pd
 from conrod.report.html import Image, Section, Table
 from conrod.report.inputs import flatten, unit_of
 from conrod.report.run_report import inputs_section
+from conrod.report.sweep_maps import engine_map_section
 from conrod.sweep.runner import read_description, read_table
 from conrod.sweep.status import STATUS_OK
 from conrod.sweep.table import CHARACTERISTICS, axis_columns, best_and_worst, status_counts
@@ -52,6 +53,9 @@ def sweep_sections(folder: Path, case_file: Path | None = None) -> tuple[str, li
                 inputs_section(case_file, None, tuple(keys.values()))]
     sections.append(_best_worst_section(frame))
     sections.append(_problems_section(frame, axes))
+    engine_maps = engine_map_section(frame, axes, keys)
+    if engine_maps is not None:
+        sections.append(engine_maps)
     sections.append(_trend_section(frame, axes, keys))
     sections.append(_variant_section(frame, axes))
     title = study.get("title") or f"conrod sweep: {folder.name}"

@@ -138,6 +138,25 @@ class SignOff:
             lines["erosion"] = self.indicators.erosion_note
         return lines
 
+    def flat_items(self) -> dict[str, float | None]:
+        """Scalars for summary.json's top level (a sweep table's columns): the worst
+        pressure range [Pa], asperity pressure [Pa], film temperature [°C] and erosion
+        indicator [Pa/s] over the cycle where computed, and each given limit in SI units
+        (the engine-map report draws its contour)."""
+        items: dict[str, float | None] = {}
+        found = self.indicators
+        for key, name in (("max_pressure_range_Pa", "pressure_range"),
+                          ("max_asperity_pressure_Pa", "max_asperity_pressure"),
+                          ("max_film_temperature_C", "max_temperature"),
+                          ("max_erosion_indicator_Pa_s", "erosion")):
+            item = None if found is None else found.get(name)
+            if item is not None:
+                items[key] = item.worst_value
+        for m in self.margins:
+            items[f"limit_{m.name}_{m.units.replace('degC', 'C')}"] = m.limit
+        items["limits_crossed"] = float(sum(m.crossed for m in self.margins))
+        return items
+
     def as_json_items(self) -> dict:
         """summary.json["signoff"]: margins, the maps' worst values, notes."""
         return {"margins": {m.name: m.as_json_items() for m in self.margins},
