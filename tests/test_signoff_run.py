@@ -16,7 +16,7 @@ import conrod
 import conrod.output  # noqa: F401  (registers the tables and figures)
 from conrod import Case, Simulation
 from conrod.cli.app import _register_commands, app
-from conrod.cli.run_command import optional_fields_stride
+from conrod.cli.options import optional_fields_stride
 from conrod.film.characteristics import minimum_film_at, peak_pressure_at
 from conrod.output.fields_file import fields_dataset
 from conrod.output.registry import write_results

@@ -21,6 +21,7 @@ import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Annotated, Any, TypeVar
 
+from conrod.cli.options import optional_fields_stride
 from conrod.errors import CaseError, ConvergenceError
 from conrod.io.interrupts import (
     EXIT_INTERRUPTED,
@@ -191,7 +192,5 @@ def main() -> None:
         encoding_safe_streams()
         warnings.formatwarning = _one_line_warning
         _register_commands()
-        from conrod.cli.run_command import optional_fields_stride
-
         sys.argv[1:] = optional_fields_stride(sys.argv[1:])
         app()

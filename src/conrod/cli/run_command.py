@@ -12,6 +12,7 @@ from typing import Annotated, Any
 import typer
 
 from conrod.cli.app import ACCEPT_WARNINGS_HELP, exits_cleanly, finish, printing_after_results
+from conrod.cli.options import FIELDS_DEFAULT_DEG
 from conrod.io.interrupts import interrupts_stop_at_once, raise_if_interrupted
 from conrod.registry import FILM_NAMES, INTEGRATOR_NAMES
 
@@ -26,8 +27,6 @@ HEADLINE_WIDTH = 16
 """Width of the label column of the plain headline [characters]."""
 PROGRESS_AFTER_S = 1.0
 """Without a terminal, the first log line comes once the run has taken this long [s]."""
-FIELDS_DEFAULT_DEG = 1.0
-"""Stride of ``--fields`` given without a value [deg of crank angle]."""
 
 
 class _Progress:
@@ -201,17 +200,6 @@ def register(app: typer.Typer) -> None:
             if note:
                 typer.echo(note)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
-
-
-def optional_fields_stride(argv: list[str]) -> list[str]:
-    """``argv`` with the default stride after a bare ``--fields`` of ``conrod run`` (last,
-    or followed by another option): ``--fields [STRIDE_DEG]`` takes an optional value."""
-    out = list(argv)
-    for i, token in enumerate(out):
-        if token == "--fields" and (i + 1 == len(out) or out[i + 1].startswith("--")):
-            out.insert(i + 1, f"{FIELDS_DEFAULT_DEG:g}")
-            break
-    return out
 
 
 def _renew_report(out: Path) -> str:
