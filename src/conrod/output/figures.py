@@ -75,7 +75,8 @@ def signoff_figures(results: RunResults) -> tuple[FigureSpec, ...]:
                    lambda: _plots("indicator_plots").plot_indicator_maps(results, "journal")),
         FigureSpec("erosion_map.png", "Cavitation-erosion indicator",
                    "Largest reformation intensity over the cycle at each shell cell "
-                   "[GPa/s] (mass-conserving film; a labelled proxy for the Reynolds film).",
+                   "[GPa/s] over θ [deg] and z [mm] (mass-conserving film; a labelled "
+                   "proxy for the Reynolds film).",
                    lambda: _plots("indicator_plots").plot_erosion_map(results)),
     )
 
