@@ -39,7 +39,7 @@ CAVITATED_SHARE = 1e-9
 cavitated [-]."""
 MASS_CONSERVING = "reformation intensity (film-fraction recovery rate x pressure rise)"
 REYNOLDS_PROXY = ("proxy: pressure-rise rate where the reformation boundary passes "
-                  "(Reynolds film, no film content)")
+                  "(a film without a film content: Reynolds, short)")
 
 
 def interval_times(fields: CycleFields) -> np.ndarray:
