@@ -186,3 +186,39 @@ def test_bare_fields_option_takes_the_default_stride(tmp_path):
     read = conrod.open_fields(tmp_path / "out")
     np.testing.assert_allclose(np.diff(read["crank_angle"].values), 10.0)
     assert set(read.data_vars) == {"pressure", "film_thickness", "journal_rotation"}
+
+
+def test_elastic_film_declares_its_deformation_and_film_fraction():
+    """The elastic mass-conserving film declares the bore deformation δ(θ, z) and its inner
+    film's film fraction (HasFilmFields); the film thickness built with that δ is the gap
+    the film solved: its smallest node is the film's h_min of the step."""
+    from conrod.ehd.film import ElasticSettings
+    from conrod.ehd.mass_conserving_ehd import ElasticMassConservingFilm
+    from conrod.film.base import FilmState
+    from conrod.film.capabilities import HasFilmFields
+    from conrod.film.mass_conserving.film import MassConservingFilm
+    from conrod.simulation.fields import film_thickness_field
+    from elastic_helpers import winkler_housing
+
+    data = Case.from_toml(EXAMPLES / "passenger_car_diesel_2000rpm.toml").model_dump(
+        exclude_none=True)
+    data["bearing"].update(supply_pressure=0.3e6, grooves=[{"width": 0.002}])
+    geometry = Case.from_dict(data, base_dir=EXAMPLES).bearing.geometry()
+    base = MassConservingFilm(geometry, n_theta=36, n_z=8, tolerance=1e-10)
+    film = ElasticMassConservingFilm(base, winkler_housing(geometry, 36, 1e-13), 209.0,
+                                     ElasticSettings(rigid_start=0.0, ramp=0.0))
+    assert isinstance(film, HasFilmFields) and not isinstance(base, HasFilmFields)
+    c = geometry.radial_clearance
+    state = FilmState(eccentricity_x=0.8 * c, eccentricity_y=0.1 * c, velocity_x=2e-3,
+                      velocity_y=-1e-3, journal_speed=209.0, shell_speed=0.0, viscosity=0.01)
+    _, _, after = film.content_step(state, film.initial_memory(), 1e-4)
+    result = film.accepted_result(state, after)
+    fields = film.film_fields(state, after)
+    theta, z = film.grid()
+    deformation = fields["deformation"].values
+    assert deformation.shape == (36, 9) and deformation.max() > 0.0
+    assert fields["deformation"].units == "m"
+    fraction = fields["film_fraction"].values
+    assert fraction.shape == (36, 9) and 0.0 <= fraction.min() < 1.0 == fraction.max()
+    h = film_thickness_field(geometry, state, np.asarray(theta), np.asarray(z), deformation)
+    assert h.min() == pytest.approx(result.min_film_thickness, rel=1e-12)
