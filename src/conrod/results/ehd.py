@@ -152,6 +152,12 @@ class ElasticRunResults:
         return self.elastic.clearance
 
     @property
+    def signoff(self):
+        """Per-cell indicators and margins of the elastic answer
+        (:class:`conrod.results.margins.SignOff`)."""
+        return self.elastic.signoff
+
+    @property
     def contact(self):
         """Contact post-processing of the elastic answer."""
         return self.elastic.contact
