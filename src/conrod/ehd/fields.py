@@ -16,9 +16,9 @@ def elastic_fields(film: Any, state: FilmState, memory: Any) -> dict[str, FilmFi
     film fraction ϑ [-] when it has a content, and what the inner film declares."""
     deformation = film.film_field(memory.deformation)
     fields = {"deformation": FilmField(deformation, "m", "bore deformation (outward +)")}
-    base = film.base
+    base, shape = film.base, film.base.deformation_shape()
     if isinstance(base, HasMixableContent) and memory.inner is not None:
-        fraction = base.content_vector(memory.inner).reshape(base.deformation_shape())
+        fraction = base.content_vector(memory.inner).reshape(shape)
         fields["film_fraction"] = FilmField(fraction, "1", "film fraction")
     if isinstance(base, HasFilmFields):
         deformed = dataclasses.replace(state, deformation=deformation)

@@ -45,7 +45,7 @@ def fields_dataset(fields: CycleFields, title: str = "conrod fields over the cyc
         "z": ("z", np.asarray(fields.z, dtype=float),
               {"units": "m", "long_name": "axial position, 0 at mid-width"}),
     }
-    data = {name: (("crank_angle", "theta", "z"), np.asarray(values, dtype=float),
+    data: dict[str, Any] = {name: (("crank_angle", "theta", "z"), np.asarray(values, dtype=float),
                    {"units": fields.specs[name].units, "long_name": fields.specs[name].long_name})
             for name, values in fields.values.items()}
     data["journal_rotation"] = (

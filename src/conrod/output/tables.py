@@ -6,6 +6,8 @@ say what each table holds. The figures are registered in :mod:`conrod.plotting`.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from conrod.contact.analysis import ContactResults
@@ -64,7 +66,7 @@ def summary_items(results: RunResults) -> dict:
     from conrod._version import __version__
     from conrod.results.summary import headline
 
-    items = {"headline": headline(results), "conrod_version": __version__,
+    items: dict[str, Any] = {"headline": headline(results), "conrod_version": __version__,
              "case_hash_sha256": results.case_hash, "converged": results.summary.periodic,
              "solver_settings": results.settings}
     items.update(results.summary.as_json_items())

@@ -85,8 +85,8 @@ def erosion_map(fields: CycleFields) -> tuple[CellMap | None, str]:
     values = per_interval.max(axis=0)
     when = per_interval.argmax(axis=0)
     after = (when + 1) % fields.crank_angle.size  # the interval ends at φ_(i+1)
-    j, k = np.unravel_index(int(values.argmax()), values.shape)
-    k = middle_of_ties(values[j], int(k))
+    j, node = np.unravel_index(int(values.argmax()), values.shape)
+    k = middle_of_ties(values[j], int(node))
     item = CellMap("erosion", words, "Pa/s", "shell", values, fields.crank_angle[after],
                    "max", float(values[j, k]), float(fields.theta[j]), float(fields.z[k]),
                    float(fields.crank_angle[after[j, k]]))

@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from types import SimpleNamespace
+from typing import Any
 
 import numpy as np
 
@@ -171,8 +172,8 @@ def _cell_map(name, long_name, units, frame, rows, how, fields, shell_rows,
             theta = (theta - float(fields.journal_rotation[i])) % TWO_PI
     else:
         flat = int(values.argmin() if worst == "min" else values.argmax())
-        j, k = np.unravel_index(flat, values.shape)
-        k = middle_of_ties(values[j], int(k))
+        j, node = np.unravel_index(flat, values.shape)
+        k = middle_of_ties(values[j], int(node))
         i = int(when[j, k])
         value, theta, z = float(values[j, k]), float(fields.theta[j]), float(fields.z[k])
     return CellMap(name, long_name, units, frame, values, fields.crank_angle[when], worst,
@@ -201,7 +202,7 @@ def _refined(how: str, rows: np.ndarray, fields: CycleFields, source: str
         k = middle_of_ties(rows[i, j], k)
         return float(values[i]), float(angles[i]) % TWO_PI, float(fields.z[k]), i
     n_theta = fields.theta.size
-    grid = SimpleNamespace(n_theta=n_theta, theta=fields.theta, d_theta=TWO_PI / n_theta)
+    grid: Any = SimpleNamespace(n_theta=n_theta, theta=fields.theta, d_theta=TWO_PI / n_theta)
     refine = peak_pressure_at if how == "max" else minimum_film_at
     best = None
     for i, node in enumerate(nodes):
