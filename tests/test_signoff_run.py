@@ -222,3 +222,59 @@ def test_elastic_film_declares_its_deformation_and_film_fraction():
     assert fraction.shape == (36, 9) and 0.0 <= fraction.min() < 1.0 == fraction.max()
     h = film_thickness_field(geometry, state, np.asarray(theta), np.asarray(z), deformation)
     assert h.min() == pytest.approx(result.min_film_thickness, rel=1e-12)
+
+
+class _HotFilm:
+    """The Flores bearing's short film, declaring a film temperature field as a thermal
+    film would (HasFilmFields): T = 90 °C + 20 °C x e_x/c on the shell, a known history."""
+
+    def __init__(self, base):
+        self.base = base
+        self.name, self.geometry = base.name, base.geometry
+
+    def solve(self, state, *, with_pressure=False):
+        return self.base.solve(state, with_pressure=with_pressure)
+
+    def force(self, state):
+        return self.base.force(state)
+
+    def grid(self):
+        return self.base.grid()
+
+    def initial_history(self):
+        return None
+
+    def film_fields(self, state, memory):
+        from conrod.film.capabilities import FilmField
+
+        theta, z = self.grid()
+        ratio = state.eccentricity_x / self.geometry.radial_clearance
+        values = np.full((len(theta), len(z)), 90.0 + 20.0 * ratio)
+        return {"temperature": FilmField(values, "degC", "film temperature")}
+
+
+def test_a_declared_temperature_field_plugs_into_fields_maps_and_margins(tmp_path):
+    """A film that declares 'temperature' gets it in the fields file, a max_temperature map
+    (largest over the cycle = 90 + 20 max e_x/c) and the temperature margin read from that
+    map instead of the heat balance; crossing it is a warning."""
+    from conrod.film.short.film import ShortBearingFilm
+
+    data = cheap_table_run()
+    data["solver"]["max_cycles"] = 12
+    data["limits"] = {"max_temperature": 100.0}  # the journal reaches e_x = 0.71 c: 104 °C
+    case = Case.from_dict(data, base_dir=EXAMPLES)
+    film = _HotFilm(ShortBearingFilm(case.bearing.geometry()))
+    results = Simulation(case, film=film, fields=5.0).run()
+    signoff = results.signoff
+    expected = 90.0 + 20.0 * results.cycle.eccentricity_x.max() / results.clearance
+    item = signoff.indicators.get("max_temperature")
+    assert item.worst_value == pytest.approx(expected, rel=1e-12)
+    (margin,) = signoff.margins
+    assert margin.value == item.worst_value and "max_temperature map" in margin.source
+    assert expected > 100.0 and margin.crossed
+    assert any("film temperature" in w for w in results.summary.warnings)
+    write_results(results, tmp_path, figures=False)
+    read = conrod.open_fields(tmp_path)
+    assert read["temperature"].attrs["units"] == "degC"
+    np.testing.assert_array_equal(read["temperature"].values,
+                                  signoff.fields["temperature"])
