@@ -136,6 +136,8 @@ class SignOff:
         lines = {f"margin {m.name}": m.text() for m in self.margins}
         if self.indicators is not None and self.indicators.erosion_note:
             lines["erosion"] = self.indicators.erosion_note
+        elif self.indicators is None and self.notes:
+            lines["sign-off maps"] = "; ".join(self.notes)
         return lines
 
     def flat_items(self) -> dict[str, float | None]:
@@ -198,7 +200,7 @@ def _value(name, summary, cycle, indicators):
     source = {"pressure_range": "pressure_range", "asperity_pressure": "max_asperity_pressure",
               "max_temperature": "max_temperature"}[name]
     if indicators is None:
-        return "the film gives no fields (a table or mobility film)"
+        return "the film gives no fields: a table or mobility film"
     item = indicators.get(source)
     if item is None:
         return _missing(name)
