@@ -69,3 +69,25 @@ def test_sweep_report_draws_the_engine_maps_in_a_browser(map_folder, tmp_path):
     pixels, images, broken, _ = browse(html_file, tmp_path)
     assert broken == 0 and images == html.count("<img ")
     assert_not_blank(pixels)
+
+
+def test_engine_map_marks_failed_and_warned_variants_and_draws_the_limit():
+    """A 3 x 3 map with a failed variant (a hole) and warned ones: the figure draws the
+    filled contours, the limit contour and one legend entry per status with its count."""
+    from conrod.plotting.sweep_maps import engine_map_figure
+
+    speed, load = np.meshgrid([1000.0, 2000.0, 3000.0], [8e6, 12e6, 16e6])
+    frame = pd.DataFrame({"engine.speed_rpm": speed.ravel(),
+                          "engine.pressure_model.max_pressure_Pa": load.ravel()})
+    frame["p_max_Pa"] = 20.0 * frame["engine.pressure_model.max_pressure_Pa"] \
+        + 1e4 * frame["engine.speed_rpm"]
+    frame["status"] = np.where(frame["p_max_Pa"] > 250e6, "warning", "ok")
+    frame.loc[4, ["status", "p_max_Pa"]] = ["failed", np.nan]
+    fig = engine_map_figure(frame, "engine.speed_rpm", "engine.pressure_model.max_pressure_Pa",
+                            "p_max_Pa", 250e6, title="POFP")
+    ax = fig.axes[0]
+    legend = [text.get_text() for text in ax.get_legend().get_texts()]
+    assert "limit 250 MPa" in legend and "failed (1)" in legend
+    assert any(t.startswith("ok (") for t in legend)
+    assert any(t.startswith("warning (limit crossed or doubtful) (") for t in legend)
+    assert ax.get_ylabel().endswith("[MPa]")
