@@ -89,10 +89,12 @@ def test_margins_are_the_numbers_the_headline_prints(reynolds_run):
     lines = headline(reynolds_run)
     for m in signoff.margins:
         assert lines[f"margin {m.name}"] == m.text()
-    assert f"{summary.p_max / 1e6:.2f} MPa" in lines["p_max"]
-    assert f"{summary.p_max * 1e-6:.4g} MPa" in lines["margin max_pressure"]
-    assert f"{summary.film_h_min * 1e6:.3f} µm" in lines["film h_min"]
-    assert f"{summary.film_h_min * 1e6:.4g} µm" in lines["margin min_film_thickness"]
+    shown_p = lines["p_max"].split(" at ")[0]  # '507.43 MPa'
+    assert lines["margin max_pressure"].startswith(shown_p + " vs limit")
+    shown_h = lines["film h_min"].split(" at ")[0]  # '0.487 µm'
+    assert lines["margin min_film_thickness"].startswith(shown_h + " vs limit")
+    shown_t = lines["temperature"].split(" effective")[0]  # '108.1 °C'
+    assert lines["margin max_temperature"].startswith(shown_t + " vs limit")
     crossed = {m.name for m in signoff.margins if m.crossed}
     assert crossed == {"min_film_thickness", "pressure_range"}
     assert sum("limit crossed" in w for w in summary.warnings) == 2

@@ -1,7 +1,8 @@
 """The fields over the cycle as one netCDF file (``fields.nc``), and reading it back.
 
-Dimensions ``crank_angle`` [degree], ``theta`` [degree] (shell angle, film frame) and ``z``
-[m] (axial, 0 at mid-width); one variable per field (pressure, film_thickness,
+Dimensions ``crank_angle`` [degree] (CF ``axis = "T"``, with the auxiliary coordinate
+``time`` [s] from the first kept angle), ``theta`` [degree] (shell angle, film frame,
+``axis = "X"``) and ``z`` [m] (axial, 0 at mid-width, ``axis = "Y"``: the unrolled shell); one variable per field (pressure, film_thickness,
 film_fraction, deformation, asperity_pressure, temperature, ... — what the run has) with
 ``units`` (UDUNITS) and ``long_name`` attributes, ``journal_rotation`` [degree] over
 ``crank_angle``, global attributes after the CF conventions (``Conventions = "CF-1.10"``,
@@ -37,13 +38,18 @@ def fields_dataset(fields: CycleFields, title: str = "conrod fields over the cyc
 
     from conrod._version import __version__
 
+    elapsed = (fields.crank_angle - fields.crank_angle[0]) / fields.crank_speed
     coords = {
         "crank_angle": ("crank_angle", fields.crank_angle_deg,
-                        {"units": "degree", "long_name": "crank angle (0: firing TDC)"}),
+                        {"units": "degree", "long_name": "crank angle (0: firing TDC)",
+                         "axis": "T"}),
         "theta": ("theta", np.degrees(fields.theta),
-                  {"units": "degree", "long_name": "shell angle, film frame"}),
+                  {"units": "degree", "long_name": "shell angle, film frame", "axis": "X"}),
         "z": ("z", np.asarray(fields.z, dtype=float),
-              {"units": "m", "long_name": "axial position, 0 at mid-width"}),
+              {"units": "m", "long_name": "axial position, 0 at mid-width", "axis": "Y"}),
+        "time": ("crank_angle", elapsed,
+                 {"units": "s", "standard_name": "time",
+                  "long_name": "time from the first kept crank angle"}),
     }
     data: dict[str, Any] = {name: (("crank_angle", "theta", "z"), np.asarray(values, dtype=float),
                    {"units": fields.specs[name].units, "long_name": fields.specs[name].long_name})

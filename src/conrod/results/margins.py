@@ -28,8 +28,10 @@ LIMITS = {
     "max_temperature": ("film temperature", "degC", "max"),
 }
 """``[limits]`` key → label, SI unit, which side is allowed ('min': at least the limit)."""
-DISPLAY = {"m": (1e6, "µm"), "Pa": (1e-6, "MPa"), "degC": (1.0, "°C")}
-"""SI unit → (factor, engineering unit) of the tables and the headline."""
+DISPLAY = {"m": (1e6, "µm", "{:.3f}"), "Pa": (1e-6, "MPa", "{:.2f}"),
+           "degC": (1.0, "°C", "{:.1f}")}
+"""SI unit → (factor, engineering unit, format) of the headline: the formats of its film
+h_min, p_max and temperature lines, so that a margin prints the headline's number."""
 
 
 @dataclass(frozen=True)
@@ -75,8 +77,8 @@ class Margin:
         """A value of this row in engineering units, e.g. '0.541 µm'."""
         if value is None:
             return "–"
-        factor, unit = DISPLAY[self.units]
-        return f"{value * factor:.4g} {unit}"
+        factor, unit, style = DISPLAY[self.units]
+        return f"{style.format(value * factor)} {unit}"
 
     def where(self) -> str:
         """'at 37°, θ 205°, z −3.0 mm' (what is known of it)."""
