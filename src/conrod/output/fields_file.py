@@ -2,15 +2,16 @@
 
 Dimensions ``crank_angle`` [degree] (CF ``axis = "T"``, with the auxiliary coordinate
 ``time`` [s] from the first kept angle), ``theta`` [degree] (shell angle, film frame,
-``axis = "X"``) and ``z`` [m] (axial, 0 at mid-width, ``axis = "Y"``: the unrolled shell); one variable per field (pressure, film_thickness,
-film_fraction, deformation, asperity_pressure, temperature, ... — what the run has) with
-``units`` (UDUNITS) and ``long_name`` attributes, ``journal_rotation`` [degree] over
-``crank_angle``, global attributes after the CF conventions (``Conventions = "CF-1.10"``,
-``title``, ``source``, ``history``). Written with xarray through h5netcdf: netCDF-4
-(HDF5) with zlib compression level 4 on the fields, float64 as computed — read back, the
-values are the computed ones bit for bit (a netCDF-3 file, the one scipy writes, has no
-compression: a 72 × 16 run at 1° would take ~30 MB instead of a few; ParaView's NetCDF
-readers and xarray read netCDF-4 alike).
+``axis = "X"``) and ``z`` [m] (axial, 0 at mid-width, ``axis = "Y"``: the unrolled shell);
+one variable per field (pressure, film_thickness, film_fraction, deformation,
+asperity_pressure, temperature, ... — what the run has) with ``units`` (UDUNITS) and
+``long_name`` attributes, ``journal_rotation`` [degree] over ``crank_angle``, global
+attributes after the CF conventions (``Conventions = "CF-1.10"``, ``title``, ``source``,
+``history``). Written with xarray through h5netcdf: netCDF-4 (HDF5) with zlib compression
+level 4 on the fields, float64 as computed — read back, the values are the computed ones
+bit for bit (a netCDF-3 file, the one scipy writes, has no compression: the passenger car
+at 72 × 16 and 1° takes 21 MB instead of 5.7 MB, benchmarks/signoff_cost.md; ParaView's
+NetCDF readers and xarray read netCDF-4 alike).
 """
 
 from __future__ import annotations
