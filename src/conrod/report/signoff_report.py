@@ -12,6 +12,8 @@ from conrod.report.html import Image, Section, Table
 
 DISPLAY = {"m": (1e6, "µm"), "Pa": (1e-6, "MPa"), "degC": (1.0, "°C"), "Pa/s": (1e-9, "GPa/s")}
 """SI unit → (factor, engineering unit) of the report's tables."""
+HEADLINE_FORMATS = {"m": "{:.3f}", "Pa": "{:.2f}", "degC": "{:.1f}"}
+"""Formats of the margins table: the headline's (film h_min in µm, p_max in MPa, °C)."""
 FIGURES = ("indicator_maps_shell.png", "indicator_maps_journal.png", "erosion_map.png")
 """The sign-off figures of a run folder, in their order."""
 
@@ -54,8 +56,9 @@ def margins_table(margins: dict[str, dict]) -> Table:
         margin = item.get("margin")
         verdict = ("not checked" if value is None
                    else "CROSSED" if item.get("crossed") else "ok")
-        rows.append([str(item.get("label", name)), _number(value, factor, shown),
-                     _number(limit, factor, shown),
+        style = HEADLINE_FORMATS.get(unit, "{:.4g}")
+        rows.append([str(item.get("label", name)), _number(value, factor, shown, style),
+                     _number(limit, factor, shown, style),
                      "–" if margin is None else f"{margin:+.1%}",
                      _angle(item.get("crank_angle_deg")), _angle(item.get("theta_deg")),
                      "–" if item.get("z_m") is None else f"{item['z_m'] * 1e3:+.1f} mm",
@@ -85,8 +88,8 @@ def worst_cells_table(indicators: dict[str, Any]) -> Table:
                  numeric=("worst value", "angle (shell θ / journal α)", "z", "crank angle"))
 
 
-def _number(value: float | None, factor: float, unit: str) -> str:
-    return "–" if value is None else f"{value * factor:.4g} {unit}"
+def _number(value: float | None, factor: float, unit: str, style: str = "{:.4g}") -> str:
+    return "–" if value is None else f"{style.format(value * factor)} {unit}"
 
 
 def _angle(value: float | None) -> str:
