@@ -280,3 +280,13 @@ def test_a_declared_temperature_field_plugs_into_fields_maps_and_margins(tmp_pat
     assert read["temperature"].attrs["units"] == "degC"
     np.testing.assert_array_equal(read["temperature"].values,
                                   signoff.fields["temperature"])
+
+
+def test_a_bad_fields_stride_is_one_line_exit_2(tmp_path):
+    case = write_case(tmp_path, cheap_table_run())
+    _register_commands()
+    result = CliRunner().invoke(app, ["run", str(case), "--out", str(tmp_path / "out"),
+                                      "--fields", "0"])
+    assert result.exit_code == 2
+    assert "--fields (Simulation fields) = 0.0: out of range" in result.output
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())

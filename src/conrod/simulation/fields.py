@@ -136,8 +136,8 @@ def check_fields_stride(stride: float | None) -> float | None:
         return None
     if isinstance(stride, bool) or not isinstance(stride, int | float) or not (
             0.0 < stride <= 720.0):
-        raise CaseError(f"fields = {stride!r}: out of range (allowed: > 0 and <= 720 deg of "
-                        "crank angle between kept rows, or None)")
+        raise CaseError(f"--fields (Simulation fields) = {stride!r}: out of range (allowed: "
+                        "> 0 and <= 720 deg of crank angle between kept rows, or None)")
     return float(stride)
 
 
