@@ -277,7 +277,9 @@ class FilmField:
     """A field a film declares on its grid (:class:`HasFilmFields`).
 
     values : ndarray  The field at the grid nodes (n_θ, n_z) of :meth:`FilmModel.grid`.
-    units : str  Its unit as UDUNITS writes it ('m', 'Pa', 'degC', '1').
+    units : str  Its unit as UDUNITS writes it ('m', 'Pa', 'degC', '1'); a field conrod
+        knows by name comes in its unit (``deformation`` m, ``temperature`` degC: the
+        ``[limits]`` and the maps read it so).
     long_name : str  What it is, in words.
     """
 

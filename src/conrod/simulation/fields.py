@@ -81,9 +81,9 @@ def _row(problem, state, memory, pressure, theta, z) -> dict:
     if isinstance(film, HasMixableContent) and memory is not None:
         fraction = film.content_vector(memory).reshape(h.shape)
         out["film_fraction"] = (fraction, FIELD_SPECS["film_fraction"])
-    for name, item in declared.items():
+    for name, item in declared.items():  # the declaration's own unit and long name
         out[name] = (np.asarray(item.values, dtype=float),
-                     FIELD_SPECS.get(name, FieldSpec(item.units, item.long_name)))
+                     FieldSpec(item.units, item.long_name))
     if problem.asperity is not None:
         _, _, roughness, scale = problem.asperity
         out["asperity_pressure"] = (np.asarray(asperity_pressure(h, roughness, scale),
