@@ -71,6 +71,11 @@ def test_map_extremes_are_the_per_angle_numbers_of_cycle_csv(reynolds_run):
         assert h_map.worst_value == pytest.approx(cycle.h_min.min(), rel=1e-12)
         assert h_map.worst_crank_angle == cycle.crank_angle[cycle.h_min.argmin()]
         np.testing.assert_array_equal(p_map.values.max(), fields["pressure"].max())
+    # the journal map's MOFT sits where cycle.csv puts h_min on the journal
+    row = int(cycle.h_min.argmin())
+    journal = signoff.indicators.get("min_film_thickness", "journal")
+    assert journal.worst_theta == pytest.approx(cycle.h_min_angle_journal[row] % (2 * math.pi),
+                                                abs=1e-12)
     asperity = signoff.indicators.get("max_asperity_pressure")
     assert 0.0 < asperity.worst_value < 1e9  # mixed lubrication: h/σ ≈ 1.3 at h_min
     erosion = signoff.indicators.erosion
