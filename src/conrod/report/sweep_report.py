@@ -16,16 +16,18 @@ from conrod.sweep.runner import read_description, read_table
 from conrod.sweep.status import STATUS_OK
 from conrod.sweep.table import CHARACTERISTICS, axis_columns, best_and_worst, status_counts
 
-TREND_COLUMNS = ("h_min_m", "p_max_Pa", "mean_friction_power_W", "mean_side_flow_m3_s",
-                 "effective_temperature_C", "max_contact_force_N", "max_wear_shell_m",
-                 "max_impact_velocity_big_end_m_s", "max_impact_velocity_small_end_m_s",
-                 "impacts_per_cycle")
+TREND_COLUMNS = ("h_min_m", "p_max_Pa", "max_pressure_range_Pa", "mean_friction_power_W",
+                 "mean_side_flow_m3_s", "effective_temperature_C", "max_contact_force_N",
+                 "max_wear_shell_m", "max_impact_velocity_big_end_m_s",
+                 "max_impact_velocity_small_end_m_s", "impacts_per_cycle")
 TABLE_COLUMNS = ("h_min_m", "h_min_set_by", "p_max_Pa", "mean_friction_power_W",
                  "mean_side_flow_m3_s", "effective_temperature_C", "max_contact_force_N",
                  "max_impact_velocity_big_end_m_s", "max_impact_velocity_small_end_m_s",
                  "impacts_per_cycle", "wall_time_s")
 CAPTION_UNITS = {"h_min_m": "smallest film thickness over the cycle in m",
                  "p_max_Pa": "largest film pressure over the cycle in Pa",
+                 "max_pressure_range_Pa": "largest pressure range max − min at one point "
+                 "of the lining over the cycle in Pa",
                  "mean_friction_power_W": "cycle-mean friction power loss in W",
                  "mean_side_flow_m3_s": "cycle-mean side flow in m³/s",
                  "effective_temperature_C": "effective film temperature (heat balance) in °C",

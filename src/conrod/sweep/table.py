@@ -34,6 +34,7 @@ time on its worker, run and writing included) [-]."""
 CHARACTERISTICS = {
     "h_min_m": "max",
     "p_max_Pa": "min",
+    "max_pressure_range_Pa": "min",
     "mean_friction_power_W": "min",
     "effective_temperature_C": "min",
     "max_contact_force_N": "min",
