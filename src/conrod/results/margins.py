@@ -198,7 +198,7 @@ def _value(name, summary, cycle, indicators):
         if summary.effective_temperature is None:
             return "no temperature: no heat balance (no oil flow) and no film temperature field"
         return (summary.effective_temperature, None, None, None,
-                "effective temperature of the heat balance (the headline's)")
+                "effective temperature of the heat balance, the headline's")
     source = {"pressure_range": "pressure_range", "asperity_pressure": "max_asperity_pressure",
               "max_temperature": "max_temperature"}[name]
     if indicators is None:
