@@ -220,10 +220,12 @@ class Simulation:
 
         return elastic_run(self, progress)
 
-    def rigid_companion(self, integrator: str | None = None) -> Simulation | None:
+    def rigid_companion(self, integrator: str | None = None,
+                        **overrides: Any) -> Simulation | None:
         """The same simulation on a rigid bore (None when not asked for); ``integrator``:
         the one the elastic run used (so that ``auto`` cannot choose a journal with mass
-        for the rigid run and a massless one for the elastic run)."""
+        for the rigid run and a massless one for the elastic run); ``overrides``: other
+        ``[solver]`` fields replaced (as in :class:`Simulation`)."""
         if not self._rigid_companion:
             return None
         film = self._film if self._film is not None else self._names["film"]
@@ -231,7 +233,7 @@ class Simulation:
             integrator = (self._integrator if self._integrator is not None
                           else self._names["integrator"])
         return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
-                          housing="rigid", **self._overrides)
+                          housing="rigid", **{**self._overrides, **overrides})
 
     def run_orbit(self, progress: ProgressCallback | None = None
                   ) -> tuple[RunResults, ThermalOrbit]:
