@@ -13,11 +13,14 @@ Wall time (clock around the process) and CPU time (the process and its children,
 ``getrusage``) are measured: on the shared 2-core machine other jobs stretch the wall time,
 the CPU time much less. Variants differ only in the environment of the run:
 
-* ``default`` — as shipped;
-* ``opt1``, ``opt2`` — ``NUMBA_OPT`` 1 or 2 instead of numba's 3 (LLVM's optimisation level);
-* ``serial`` — ``CONROD_BACKGROUND_COMPILE=0``: no background compilation of the rigid
-  companion's kernels (the elastic run's companion compiled after the elastic orbit, as
-  before).
+* ``before`` — numba's LLVM optimisation level 3 and no background compilation (as
+  conrod compiled before);
+* ``level 2`` — conrod's default level 2 (:mod:`conrod.io.numba_cache`), no background
+  compilation (``CONROD_BACKGROUND_COMPILE=0``);
+* ``level 2 + background`` — as shipped: level 2, and the rigid companion's kernels
+  compiled in a forked process while the elastic orbit runs
+  (:mod:`conrod.simulation.background_compile`);
+* ``level 1 + background`` — ``NUMBA_OPT=1``.
 
 ``--kernels`` lists numba's compile events (``numba:compile``) of one cold run in this
 process: per kernel the time inclusive of the kernels it compiles first (what the first
@@ -44,10 +47,10 @@ REPO = Path(__file__).resolve().parents[1]
 OUT = REPO / "benchmarks" / "compile_benchmarks.md"
 CLI = "from conrod.cli.app import main; main()"
 VARIANTS = {
-    "default": {},
-    "opt1": {"NUMBA_OPT": "1"},
-    "opt2": {"NUMBA_OPT": "2"},
-    "serial": {"CONROD_BACKGROUND_COMPILE": "0"},
+    "before": {"NUMBA_OPT": "3", "CONROD_BACKGROUND_COMPILE": "0"},
+    "level 2": {"CONROD_BACKGROUND_COMPILE": "0"},
+    "level 2 + background": {},
+    "level 1 + background": {"NUMBA_OPT": "1"},
 }
 
 
@@ -147,7 +150,7 @@ def _numba_version() -> str:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--variants", default="default,serial")
+    parser.add_argument("--variants", default=",".join(VARIANTS))
     parser.add_argument("--grid", default=None)
     parser.add_argument("--kernels", action="store_true")
     parser.add_argument("--json", default=None, help="also write the rows here")
