@@ -44,6 +44,7 @@ def fresh(monkeypatch):
     monkeypatch.delenv(background_compile.SWITCH, raising=False)
     monkeypatch.setattr(background_compile.os, "sched_getaffinity", lambda pid: {0, 1},
                         raising=False)
+    monkeypatch.setattr(background_compile, "_load", lambda: 0.2)
 
 
 def test_the_forked_process_runs_one_coarse_cycle_silently_and_is_waited_for(
@@ -70,7 +71,7 @@ def test_a_coarse_grid_of_the_user_is_kept(tmp_path, fresh):
     assert json.loads(record.read_text())["n_z"] == 4
 
 
-def test_no_process_without_companion_when_switched_off_or_on_one_core(
+def test_no_process_without_companion_switched_off_on_one_core_or_busy_machine(
         tmp_path, fresh, monkeypatch):
     assert background_compile.start(_Simulation(tmp_path / "a", companion=False)) is None
     monkeypatch.setenv(background_compile.SWITCH, "0")
@@ -79,6 +80,10 @@ def test_no_process_without_companion_when_switched_off_or_on_one_core(
     monkeypatch.setattr(background_compile.os, "sched_getaffinity", lambda pid: {0},
                         raising=False)
     assert background_compile.start(_Simulation(tmp_path / "c")) is None
+    monkeypatch.setattr(background_compile.os, "sched_getaffinity", lambda pid: {0, 1},
+                        raising=False)
+    monkeypatch.setattr(background_compile, "_load", lambda: 1.3)  # the other core is busy
+    assert background_compile.start(_Simulation(tmp_path / "d")) is None
     assert not any(tmp_path.iterdir())
 
 

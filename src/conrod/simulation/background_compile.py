@@ -14,10 +14,13 @@ compiled code's, bit for bit.
 
 Once per process (the first elastic run; later ones find the kernels loaded or cached), not
 in a worker process (a sweep's workers have their cores), not where ``fork`` is missing or
-only one core is usable; ``CONROD_BACKGROUND_COMPILE=0`` turns it off. The forked process
-touches nothing of its parent's but the simulation it was given (its output goes to the null
-device, it writes no result folder), so a progress bar's thread in the parent is no hazard;
-a process that has not ended after :data:`WAIT_LIMIT` is ended.
+only one core is usable, and only while the load average leaves a core idle (on a busy
+machine the second process would only take the CPU time it saves, and it repeats the
+multigrid solver's compilation, which both processes need first);
+``CONROD_BACKGROUND_COMPILE=0`` turns it off. The forked process touches nothing of its
+parent's but the simulation it was given (its output goes to the null device, it writes no
+result folder), so a progress bar's thread in the parent is no hazard; a process that has
+not ended after :data:`WAIT_LIMIT` is ended.
 
 .. code-block:: python
 
@@ -57,7 +60,15 @@ def wanted() -> bool:
         return False
     usable = os.sched_getaffinity(0) if hasattr(os, "sched_getaffinity") else range(
         os.cpu_count() or 1)
-    return len(usable) > 1
+    return len(usable) > 1 and _load() < len(usable) - 1  # a core that nothing else uses
+
+
+def _load() -> float:
+    """1-minute load average [-] (0 where the system has none)."""
+    try:
+        return os.getloadavg()[0]
+    except (AttributeError, OSError):
+        return 0.0
 
 
 def start(simulation) -> Any:
