@@ -48,6 +48,7 @@ def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[Fi
         FilmState(eccentricity_x=float(traj.x[i]), eccentricity_y=float(traj.y[i]),
                   velocity_x=float(traj.vx[i]), velocity_y=float(traj.vy[i]),
                   journal_speed=float(wj[i]), shell_speed=float(wb[i]), viscosity=problem.viscosity,
+                  journal_feed=problem.journal_feed(float(traj.crank_angle[i])),
                   **tilt_items(traj.tilt, i))
         for i in range(traj.crank_angle.size)
     ]

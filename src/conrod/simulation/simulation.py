@@ -32,6 +32,7 @@ from conrod.film.capabilities import SupportsDeformation
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
+from conrod.loads.oil_feed import feed_schedule, wear_diagram_angle
 from conrod.loads.tilt import cycle_tilt, journal_tilt
 from conrod.orbit.characteristics import cycle_characteristics
 from conrod.orbit.heat_balance import effective_temperature, relaxed_update
@@ -107,14 +108,15 @@ class Simulation:
         self._film = None if film is None or isinstance(film, str) else film
         self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
         self._names = names
+        self._wear_angle = wear_diagram_angle(case)  # of a crank-pin hole at "wear_diagram"
         if self._film is None:
-            check_oil_feed(bearing.geometry(), self.solver.film)
+            check_oil_feed(bearing.geometry(self._wear_angle), self.solver.film)
         self._loads = loads if loads is not None else self._read_loads()  # bad tables fail here
 
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
         """Bearing geometry with supply features from ``[bearing]``."""
-        return self._bearing.geometry()
+        return self._bearing.geometry(self._wear_angle)
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (given, engine loads or the load table)."""
@@ -199,6 +201,8 @@ class Simulation:
             film, self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
             _asperity_parameters(self.case), journal_tilt(self.case, self.load_cycle()),
+            feed_schedule(self.case, self.load_cycle(),
+                          lubricant.density_at(lubricant.supply_temperature), self._wear_angle),
         )
 
     # -- run --------------------------------------------------------------------------
@@ -332,7 +336,7 @@ def check_oil_feed(geometry: BearingGeometry, film: str) -> None:
     through a groove or a hole: without it the lands starve over the cycle and the orbit
     cannot converge (a steady film solve does not need it)."""
     fed = (geometry.grooves or geometry.feed_holes) and (
-        geometry.supply_pressure > geometry.cavitation_pressure)
+        geometry.supply_pressure > geometry.cavitation_pressure) or geometry.journal_holes
     if film == "mass_conserving" and not fed:
         raise CaseError(
             "solver.film = 'mass_conserving': needs an oil feed above the cavitation pressure "
@@ -413,6 +417,7 @@ def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list 
         velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
         journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
         viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i),
+        journal_feed=problem.journal_feed(float(cycle.crank_angle[i])),
     )
     session = problem.session(film_memory[i] if film_memory else None)
     field = session.accepted(state, with_pressure=True).pressure
