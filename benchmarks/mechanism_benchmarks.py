@@ -96,7 +96,7 @@ def sweep_lines(base) -> list[str]:
         best = sweep.best()
         lines.append(f"| {cycles} | {speeds.size * loads.size} | {seconds:.1f} | "
                      f"{best['speed_rpm']:g} rpm, load {best['load_scale']:g}, "
-                     f"κ = {best['impact_velocity_ratio']:.2f} |")
+                     f"Δv = {best['impact_velocity_excess_m_s']:.3f} m/s |")
     return lines
 
 

@@ -36,6 +36,8 @@ class StandInCycle:
     load_y: np.ndarray
     h_min: np.ndarray
     p_max: np.ndarray
+    in_contact: np.ndarray
+    sliding_speed: np.ndarray
 
 
 def _case(**contact) -> Case:
@@ -54,7 +56,8 @@ def _combustion_cycle(gap_in_contact: float = 0.0) -> StandInCycle:
         crank_angle=PHI, contact_force=force, friction_force=0.1 * force, contact_angle=angle,
         journal_rotation=PHI - 0.3 * np.sin(PHI), eccentricity_x=e * np.cos(angle),
         eccentricity_y=e * np.sin(angle), load_x=np.zeros(PHI.size), load_y=force + 5.0e3,
-        h_min=CLEARANCE - e, p_max=np.full(PHI.size, 5.0e7),
+        h_min=CLEARANCE - e, p_max=np.full(PHI.size, 5.0e7), in_contact=force > 0.0,
+        sliding_speed=np.full(PHI.size, 2.0),
     )
 
 
@@ -78,12 +81,15 @@ def test_hard_contact_summary_matches_seed_definitions(tmp_path):
                 "max_wear_journal_m", "max_wear_shell_m"):
         assert key in items
     (start, end), = items["contact_intervals_deg"]
-    assert 370.0 < start < 372.0 and 450.0 < end < 452.0
+    # the first and the last output angle in contact: the rows of cycle.csv with in_contact
+    assert (start, end) == pytest.approx((371.0, 451.0))
     assert items["max_contact_force_N"] == pytest.approx(2.0e4, rel=1e-3)
-    assert items["nominal_specific_load_Pa"] == pytest.approx(
+    # nominal specific load of the bearing at its peak load (2e4 + 5e3 N) over B·D
+    assert items["nominal_specific_load_Pa"] == pytest.approx(2.5e4 / (0.06 * 0.025))
+    assert items["contact_specific_load_Pa"] == pytest.approx(
         items["max_contact_force_N"] / (0.06 * 0.025))
     assert items["hertz_to_nominal_ratio"] == pytest.approx(
-        items["max_hertz_stress_Pa"] / items["nominal_specific_load_Pa"])
+        items["max_hertz_stress_Pa"] / items["contact_specific_load_Pa"])
     assert np.sum(result.wear.journal_work) == pytest.approx(items["friction_work_J"])
     assert np.sum(result.wear.shell_work) == pytest.approx(items["friction_work_J"])
     # seed eq. 4.5.1 on the same cycle: Σ μ P_c R Δφ (rotation = crank angle)
@@ -91,7 +97,8 @@ def test_hard_contact_summary_matches_seed_definitions(tmp_path):
         0.1 * 0.03 * np.sum(_combustion_cycle().contact_force) * math.radians(1.0))
     write_json(tmp_path / "summary.json", items)  # JSON-clean: no NaN, plain types
     assert json.loads((tmp_path / "summary.json").read_text())["friction_work_J"] > 0.0
-    assert set(result.cycle_columns()) >= {"contact_force_N", "friction_force_N"}
+    # cycle.csv keeps the orbit's contact_force_N / friction_force_N (as to_dataframe())
+    assert set(result.cycle_columns()) == {"hertz_stress_Pa", "friction_work_cumulative_J"}
 
 
 def test_write_files_tables_and_figures(tmp_path):
@@ -115,7 +122,11 @@ def test_no_contact_gives_zeros_and_null_ratio():
     cycle = _combustion_cycle()
     cycle.contact_force[:] = 0.0
     cycle.friction_force[:] = 0.0
-    items = analyse_contact(_case(), cycle).summary_items()
+    cycle.in_contact[:] = False
+    result = analyse_contact(_case(), cycle)
+    items = result.summary_items()
+    assert not result.has_contact
+    assert items["nominal_specific_load_Pa"] > 0.0  # the bearing's, at its peak load
     assert items["contact_intervals_deg"] == []
     assert items["friction_work_J"] == 0.0 and items["max_wear_shell_m"] == 0.0
     assert items["hertz_to_nominal_ratio"] is None
@@ -138,6 +149,9 @@ def test_greenwood_tripp_mode_recomputes_the_asperity_force():
     assert expected > 0.0
     assert result.contact_force[index] == pytest.approx(expected)
     assert result.friction_force[index] == pytest.approx(0.1 * expected)
+    assert result.asperity_force[index] == pytest.approx(expected)
+    # boundary friction power μ F_a |V_slide| with the stand-in's 2 m/s sliding speed
+    assert result.boundary_friction_power[index] == pytest.approx(0.1 * expected * 2.0)
     assert result.contact_force[0] == 0.0  # ε = 0.5: no asperity contact
     cycle.contact_force[:], cycle.friction_force[:] = hard, hard_friction
     both = analyse_contact(case, cycle)

@@ -279,7 +279,7 @@ def test_orbit_with_mass_runs_into_mixed_lubrication_on_the_deformed_bore(tmp_pa
     np.testing.assert_allclose(cycle["contact_force_N"], cycle["asperity_force_N"])
     load = np.hypot(cycle["load_x_N"], cycle["load_y_N"])
     assert np.all(cycle["force_residual_N"] <= 1e-6 * (load + 1.0))
-    e = np.hypot(cycle["eccentricity_x"], cycle["eccentricity_y"])
+    e = np.hypot(cycle["eccentricity_x_m"], cycle["eccentricity_y_m"])
     assert e.max() > c  # beyond the rigid contact circle: the bore has given way
     assert cycle["h_min_m"].min() > 0.0
 

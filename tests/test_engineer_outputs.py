@@ -78,11 +78,11 @@ def test_contact_share_and_intervals_are_reported():
     assert contact_warnings(_contact_cycle(0.1)) == []
 
 
-def test_heat_balance_includes_contact_friction():
+def test_heat_balance_includes_contact_and_boundary_friction():
     """Independent answer: the heat balance N = ρ c_p Q ΔT with N = film power + the mean of
-    μ P_c |V| (here 0.1 P_c x 2 m/s where in contact)."""
+    μ P_c |V| (here 0.1 P_c x 2 m/s where in contact) + the boundary (asperity) friction."""
     from conrod import Case
-    from conrod.simulation.simulation import _heat_balance_temperature
+    from conrod.simulation.orbit_outputs import heat_balance_temperature
 
     cycle = _contact_cycle(0.5)
     lubricant = Case.from_dict(_periodic_case(), base_dir=EXAMPLES).lubricant
@@ -91,7 +91,11 @@ def test_heat_balance_includes_contact_friction():
     rho = lubricant.density_at(lubricant.supply_temperature)
     expected = lubricant.supply_temperature + (cycle.friction_power.mean() + contact_power) / (
         rho * lubricant.specific_heat * cycle.side_flow.mean())
-    assert _heat_balance_temperature(cycle, lubricant) == pytest.approx(expected, rel=1e-12)
+    assert heat_balance_temperature(cycle, lubricant) == pytest.approx(expected, rel=1e-12)
+    boundary = 12.5  # [W] cycle mean of μ F_a |V| of the asperities
+    assert heat_balance_temperature(cycle, lubricant, boundary) == pytest.approx(
+        expected + boundary / (rho * lubricant.specific_heat * cycle.side_flow.mean()),
+        rel=1e-12)
 
 
 def test_headline_on_terminal_and_at_the_top_of_summary_json(runner, tmp_path):
@@ -229,12 +233,11 @@ def test_run_registers_the_film_thickness_map_and_envelope():
     import conrod.output  # noqa: F401  (registers the tables and figures)
     from conrod import Case, Simulation
     from conrod.output.registry import figures
-    from conrod.plotting.film_maps import film_thickness_over_cycle
 
     results = Simulation(Case.from_dict(_periodic_case(), base_dir=EXAMPLES)).run()
     files = {spec.file for spec in figures(results)}
     assert {"film_thickness_map.png", "min_film_envelope.png"} <= files
-    _, h = film_thickness_over_cycle(results)
+    h = results.film_thickness
     e = np.hypot(results.cycle.eccentricity_x, results.cycle.eccentricity_y)
     assert h.min() == pytest.approx((results.clearance - e).min(), rel=1e-4)
 

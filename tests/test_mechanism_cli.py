@@ -110,11 +110,16 @@ def test_sweep_writes_table_map_and_names_the_regime(tmp_path):
     table = read_csv(tmp_path / "out" / "sweep.csv")
     assert table["speed_rpm"] == ["2000", "2000", "3000", "3000"]
     assert table["load_scale"] == ["0.5", "1", "0.5", "1"]
-    ratio = np.array(table["impact_velocity_ratio"], dtype=float)
+    excess = np.array(table["impact_velocity_excess_m_s"], dtype=float)
+    assert np.all(np.isfinite(excess))
+    big, small = (np.array(table[f"max_impact_velocity_{joint}_m_s"], dtype=float)
+                  for joint in ("big_end", "small_end"))
+    np.testing.assert_allclose(excess, big - small, rtol=1e-6, atol=1e-12)
     best = json.loads((tmp_path / "out" / "sweep.json").read_text())["most_informative_regime"]
-    index = int(np.argmax(ratio))
+    index = int(np.argmax(excess))
     assert best["speed_rpm"] == float(table["speed_rpm"][index])
-    assert best["impact_velocity_ratio"] == pytest.approx(ratio.max())
+    assert best["impact_velocity_excess_m_s"] == pytest.approx(excess.max())
+    assert best["driven_by"] in ("big_end", "small_end")
     assert (tmp_path / "out" / "sweep_map.png").stat().st_size > 10_000
     assert "most informative regime" in result.output
 

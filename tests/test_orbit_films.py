@@ -38,4 +38,8 @@ def test_two_land_short_bearing_agrees_with_grooved_finite_difference_film():
     assert math.hypot(short.force_x, short.force_y) == pytest.approx(
         math.hypot(fd.force_x, fd.force_y), rel=0.03)
     assert short.side_flow == pytest.approx(fd.side_flow, rel=0.01)
-    assert short.supply_flow == pytest.approx(short.side_flow)
+    # the groove at the (zero) supply pressure takes oil out of both lands: supply flow,
+    # positive into the film, is minus the side flow, as the finite-difference film's
+    # (measured 3.1 % apart)
+    assert short.supply_flow == pytest.approx(-short.side_flow)
+    assert short.supply_flow == pytest.approx(fd.supply_flow, rel=0.04)

@@ -6,6 +6,7 @@ In CI (``CI`` set) a missing browser is a failure, not a skip.
 
 from __future__ import annotations
 
+import html as html_module
 import json
 import os
 import re
@@ -14,6 +15,7 @@ import subprocess
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 from matplotlib.image import imread
 from typer.testing import CliRunner
@@ -57,6 +59,12 @@ def browser() -> str:
 
 def look_at(html_file: Path, tmp: Path) -> tuple[np.ndarray, int, int]:
     """(screenshot RGB array, number of images, number of images that did not load)."""
+    pixels, images, broken, _ = browse(html_file, tmp)
+    return pixels, images, broken
+
+
+def browse(html_file: Path, tmp: Path) -> tuple[np.ndarray, int, int, str]:
+    """:func:`look_at` and the page's DOM as the browser built it."""
     exe, profile = browser(), tmp / "profile"
     page = tmp / "page.html"
     page.write_text(html_file.read_text(encoding="utf-8").replace("</body>", MARK_IMAGES),
@@ -69,7 +77,7 @@ def look_at(html_file: Path, tmp: Path) -> tuple[np.ndarray, int, int]:
                    capture_output=True, timeout=120, check=True)
     images = int(re.search(r'data-images="(\d+)"', dom).group(1))
     broken = int(re.search(r'data-broken="(\d+)"', dom).group(1))
-    return imread(shot)[..., :3], images, broken
+    return imread(shot)[..., :3], images, broken, dom
 
 
 def assert_not_blank(pixels: np.ndarray) -> None:
@@ -109,11 +117,11 @@ def test_run_report_in_a_browser(run_folder, tmp_path):
     (html_file,) = write_report(run_folder, tmp_path / "run.html", case_file=CASE)
     html = html_file.read_text(encoding="utf-8")
     assert_self_contained(html)
-    for heading in ("Summary", "Case inputs", "Engine load diagrams", "Load on the bearing",
-                    "Journal-centre orbit",
-                    "Minimum film thickness and maximum pressure", "Friction and oil flow",
-                    "Contact and wear"):
+    for heading in ("Headline", "Cycle summary", "Case inputs", "Engine load diagrams",
+                    "Load on the bearing", "Journal-centre orbit",
+                    "Minimum film thickness and maximum pressure", "Friction and oil flow"):
         assert f"<h2>{heading}</h2>" in html
+    assert "<h2>Contact and wear</h2>" not in html  # the journal never touches the shell
     captions = re.findall(r"<figcaption>(.*?)</figcaption>", html)
     assert len(captions) == html.count("<img ") >= 8
     assert all(UNIT_IN_CAPTION.search(c) for c in captions), captions
@@ -122,6 +130,49 @@ def test_run_report_in_a_browser(run_folder, tmp_path):
                      r"cylinder bore: VW workshop manual", html)
     pixels, images, broken = look_at(html_file, tmp_path)
     assert images == len(captions) and broken == 0
+    assert_not_blank(pixels)
+
+
+@pytest.fixture(scope="module")
+def warning_folder(tmp_path_factory):
+    """A run that exits 4: 200 x the Flores load at 100 rpm, the film below the roughness and
+    its rigid pressure above the lining hardness (two warnings), written as conrod run does."""
+    from hardening_helpers import EXAMPLES, cheap_table_run, mutated
+
+    data = mutated(mutated(mutated(cheap_table_run(), ("solver", "max_cycles"), 12),
+                           ("load", "scale"), 200), ("load", "speed"), 100)
+    out = tmp_path_factory.mktemp("exit4")
+    results = Simulation(Case.from_dict(data, base_dir=EXAMPLES)).run()
+    assert results.summary.exit_code == 4 and len(results.summary.warnings) == 2
+    write_results(results, out, figures=True)
+    return out
+
+
+def test_report_of_an_exit_4_run_opens_with_its_headline_and_warnings(warning_folder,
+                                                                        tmp_path):
+    """The page opens with the warnings in a box and the headline the terminal printed,
+    before the inputs and the figures, in the real browser; no --case needed (the folder
+    records its case) and no path of this machine in the page."""
+    (html_file,) = write_report(warning_folder)
+    html = html_file.read_text(encoding="utf-8")
+    summary = json.loads((warning_folder / "summary.json").read_text(encoding="utf-8"))
+    headings = re.findall(r"<h2>(.*?)</h2>", html)
+    assert headings[0] == "Headline" and headings.index("Case inputs") > 0
+    assert str(warning_folder.parent) not in html
+    pixels, images, broken, dom = browse(html_file, tmp_path)
+    assert images == html.count("<img ") and broken == 0
+    text = " ".join(html_module.unescape(re.sub(r"<[^>]+>", " ", dom)).split())
+    first_figure = text.index("Figure 1.")
+    box = text.index("2 warning(s): conrod run exits 4")
+    assert box < first_figure and box < text.index("Case inputs")
+    for warning in summary["warnings"]:
+        assert text.index(" ".join(warning.split())) < first_figure
+    for label, line in summary["headline"].items():
+        assert f"{label} {' '.join(line.split())}" in text
+    assert "exit code 4 (finished with warnings)" in text
+    top = pixels[: pixels.shape[0] // 3]  # the warnings box's background near the top
+    box_colour = (np.abs(top - np.array([1.0, 0.953, 0.878])) < 0.02).all(axis=2)
+    assert box_colour.mean() > 0.01
     assert_not_blank(pixels)
 
 
@@ -167,8 +218,11 @@ def test_variant_folder_without_figures_gets_drawn_figures(sweep_folder, tmp_pat
     html = build_report(variant)
     assert "Sweep variant: bearing.radial_clearance" in html
     # engine loads (polar, over the cycle, wear diagram) from the variant's case; bearing
-    # load, orbit, h_min/p_max, friction/flow, contact/wear drawn from its tables
-    assert html.count("<img ") == 8
+    # load, orbit, h_min/p_max, friction/flow drawn from its tables, contact and wear only
+    # where the journal touched the shell
+    touched = float(pd.read_csv(variant / "cycle.csv")["contact_force_N"].max()) > 0.0
+    assert html.count("<img ") == 7 + touched
+    assert ("<h2>Contact and wear</h2>" in html) == touched
 
 
 def test_pdf(run_folder, tmp_path):

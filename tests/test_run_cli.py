@@ -12,7 +12,7 @@ from conrod.cli.app import _register_commands, app
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 CYCLE_COLUMNS = [
-    "crank_angle_deg", "eccentricity_ratio", "eccentricity_x", "eccentricity_y", "h_min_m",
+    "crank_angle_deg", "eccentricity_ratio_1", "eccentricity_x_m", "eccentricity_y_m", "h_min_m",
     "p_max_Pa", "friction_power_W", "side_flow_m3_s", "load_x_N", "load_y_N",
     "contact_force_N", "friction_force_N",
 ]

@@ -133,6 +133,49 @@ def _explained_by_a_misspelling(root: type[BaseModel], errors: list[Any]) -> set
             if error["type"] == "missing" and _location(error) in suggested}
 
 
+RANGE_ERRORS = ("greater_than", "greater_than_equal", "less_than", "less_than_equal")
+"""pydantic error types of a value outside a field's range."""
+_BOUNDS = (("gt", lambda v, b: v > b), ("ge", lambda v, b: v >= b),
+           ("lt", lambda v, b: v < b), ("le", lambda v, b: v <= b))
+
+
+def unit_slips(*slips: tuple[float, str]) -> dict[str, Any]:
+    """``json_schema_extra`` of a field whose value is often typed in another unit: (factor
+    to the field's unit, that unit) pairs, e.g. ``unit_slips((1e-3, "mm"))`` for a length in
+    metres typed in millimetres. A value out of the field's range whose conversion is in
+    range gets "did you mean ...?" in its message."""
+    return {"unit_slips": [list(slip) for slip in slips]}
+
+
+def in_field_range(model: type[BaseModel], name: str, value: float) -> bool:
+    """True when ``value`` satisfies the ``ge/gt/le/lt`` bounds of ``model.name``."""
+    info = model.model_fields.get(name)
+    if info is None:
+        return False
+    return all(check(value, getattr(item, attr)) for item in info.metadata
+               for attr, check in _BOUNDS if getattr(item, attr, None) is not None)
+
+
+def slip_hint(value: float, unit: str, slips: Any, plausible: Any) -> str:
+    """'; did you mean 4e-05 m = 40 µm?' for the first (factor, written unit) of ``slips``
+    that turns ``value`` (as written, in that unit) into a ``plausible`` value in ``unit``;
+    '' when none does."""
+    for factor, written in slips or ():
+        candidate = value * factor
+        if plausible(candidate):
+            return f"; did you mean {candidate:.4g} {unit} = {value:.4g} {written}?"
+    return ""
+
+
+def _field_slip(model: type[BaseModel], name: str, value: Any, unit: str) -> str:
+    info = model.model_fields.get(name)
+    extra = info.json_schema_extra if info is not None else None
+    if not isinstance(extra, dict) or not isinstance(value, int | float):
+        return ""
+    return slip_hint(float(value), unit, extra.get("unit_slips"),
+                     lambda v: in_field_range(model, name, v))
+
+
 def _describe(root: type[BaseModel], error: Any, prefix: str) -> str:
     loc = _location(error)
     dotted = _dotted(prefix, loc)
@@ -161,6 +204,8 @@ def _describe(root: type[BaseModel], error: Any, prefix: str) -> str:
         message += f" (allowed: {allowed}" + (f" {unit}" if unit else "") + ")"
     elif unit:
         message += f" [{unit}]"
+    if kind in RANGE_ERRORS:
+        message += _field_slip(model, name, value, unit)
     return message
 
 
@@ -183,7 +228,10 @@ def validate_section(model: type[BaseModel], data: Any, prefix: str = "") -> Any
         raise CaseError(format_validation_error(error, model, prefix)) from None
 
 
-def range_error(field: str, value: Any, allowed: str, unit: str = "") -> CaseError:
-    """A :class:`CaseError` for a cross-field check, in the same wording as field errors."""
+def range_error(field: str, value: Any, allowed: str, unit: str = "", hint: str = ""
+                ) -> CaseError:
+    """A :class:`CaseError` for a cross-field check, in the same wording as field errors;
+    ``hint`` (from :func:`slip_hint`) is appended."""
     unit_text = f" {unit}" if unit else ""
-    return CaseError(f"{field} = {value!r}: out of range (allowed: {allowed}{unit_text})")
+    return CaseError(f"{field} = {value!r}: out of range (allowed: {allowed}{unit_text})"
+                     f"{hint}")

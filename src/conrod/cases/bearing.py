@@ -39,7 +39,7 @@ from pathlib import Path
 
 from pydantic import Field, PrivateAttr, model_validator
 
-from conrod.cases.base import Section, range_error
+from conrod.cases.base import Section, range_error, slip_hint, unit_slips
 from conrod.cases.feed import JournalHoleSection, check_journal_holes
 from conrod.cases.profile import ProfileSection
 from conrod.film.base import GEOMETRY_LIMITS, BearingGeometry, FeedHole, Groove
@@ -49,6 +49,10 @@ MIN_SIZE = 1.0e-3
 """Smallest journal diameter and bearing width [m] (1 mm)."""
 MIN_CLEARANCE = 1.0e-6
 """Smallest radial clearance [m] (1 µm, as the joints of the mechanism)."""
+MM_SLIP = unit_slips((1e-3, "mm"))
+"""A length in metres typed in millimetres is refused with the value it likely means."""
+CLEARANCE_SLIPS = unit_slips((1e-3, "mm"), (1e-6, "µm"))
+"""A clearance in metres typed in millimetres or micrometres, likewise."""
 MAX_RELATIVE_CLEARANCE = 0.05
 """Largest radial clearance / journal radius c/R: thin-film (Reynolds) theory needs c ≪ R
 (engine bearings: 0.0005–0.003) [-]."""
@@ -105,12 +109,13 @@ class AxialGrooveSection(Section):
 class BearingSection(Section):
     """Geometry of the big-end (or any journal) bearing and its oil supply."""
 
-    diameter: float = Field(ge=MIN_SIZE, le=5.0,
+    diameter: float = Field(ge=MIN_SIZE, le=5.0, json_schema_extra=MM_SLIP,
                             description="Journal (crankpin) diameter d [m]")
-    width: float = Field(ge=MIN_SIZE, le=5.0,
+    width: float = Field(ge=MIN_SIZE, le=5.0, json_schema_extra=MM_SLIP,
                          description="Working shell width l' (axial length) [m]")
     radial_clearance: float | None = Field(
-        default=None, ge=MIN_CLEARANCE, le=1.0e-2, description="Radial clearance c [m]"
+        default=None, ge=MIN_CLEARANCE, le=1.0e-2, json_schema_extra=CLEARANCE_SLIPS,
+        description="Radial clearance c [m]"
 )
     supply_pressure: float = Field(
         default=0.0, ge=0.0, le=1.0e7, description="Gauge oil-supply pressure p_s [Pa]"
@@ -147,9 +152,12 @@ class BearingSection(Section):
             smallest = max(MIN_CLEARANCE, GEOMETRY_LIMITS["clearance_to_radius"][0] * radius)
             largest = MAX_RELATIVE_CLEARANCE * radius
             if not smallest <= self.radial_clearance <= largest:
+                hint = slip_hint(self.radial_clearance, "m",
+                                 CLEARANCE_SLIPS["unit_slips"],
+                                 lambda value: smallest <= value <= largest)
                 raise range_error("bearing.radial_clearance", self.radial_clearance,
                                   f">= {smallest:g} and <= {MAX_RELATIVE_CLEARANCE:g} x "
-                                  f"journal radius = {largest:g}", "m")
+                                  f"journal radius = {largest:g}", "m", hint)
         return self
 
     def geometry(self, wear_angle: float | None = None) -> BearingGeometry:

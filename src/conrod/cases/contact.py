@@ -76,6 +76,6 @@ class ContactSection(Section):
 )
     contact_threshold_ratio: float = Field(
         default=0.01, ge=0.0, lt=1.0,
-        description="Contact force, as a share of the peak bearing load, above which a crank "
-        "angle counts as in contact (contact intervals) [-]",
+        description="Asperity force, as a share of the peak bearing load, above which a crank "
+        "angle counts as in asperity contact (asperity contact intervals) [-]",
 )

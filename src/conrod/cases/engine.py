@@ -10,10 +10,18 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
-from conrod.cases.base import Section
+from conrod.cases.base import Section, slip_hint, unit_slips
 
 MIN_ENGINE_SPEED = 1.0
 """Slowest crank speed of an engine [rpm]."""
+MIN_MEAN_PISTON_SPEED = 1.5
+"""Slowest mean piston speed 2 S n of a running engine [m/s]: idling car and truck engines
+run at 2–3 m/s, slow marine two-strokes at 5–8 m/s (their strokes are metres long). A speed
+giving less was almost always typed in rad/s where rpm are asked for."""
+RPM_PER_RAD_S = 30.0 / 3.141592653589793
+"""rad/s → rpm [-]."""
+MM_SLIP = unit_slips((1e-3, "mm"))
+"""A length in metres typed in millimetres is refused with the value it likely means."""
 
 
 class PressureModelSection(Section):
@@ -36,10 +44,13 @@ class PressureModelSection(Section):
 class EngineSection(Section):
     """Crank train of one cylinder and its cylinder pressure."""
 
-    bore: float = Field(gt=0.0, le=2.0, description="Cylinder bore D_p [m]")
-    stroke: float = Field(gt=0.0, le=4.0, description="Piston stroke S_p = 2 r [m]")
+    bore: float = Field(gt=0.0, le=2.0, json_schema_extra=MM_SLIP,
+                        description="Cylinder bore D_p [m]")
+    stroke: float = Field(gt=0.0, le=4.0, json_schema_extra=MM_SLIP,
+                          description="Piston stroke S_p = 2 r [m]")
     rod_length: float = Field(
-        gt=0.0, le=10.0, description="Rod length L, big-end to small-end centre [m]"
+        gt=0.0, le=10.0, json_schema_extra=MM_SLIP,
+        description="Rod length L, big-end to small-end centre [m]"
 )
     speed: float = Field(ge=MIN_ENGINE_SPEED, le=30000.0, description="Crank speed n [rpm]")
     piston_mass: float = Field(gt=0.0, le=1.0e4, description="Piston, pin and rings m_p [kg]")
@@ -93,7 +104,27 @@ class EngineSection(Section):
                 "engine.ambient_pressure is for pressure_trace; with [engine.pressure_model] "
                 "set engine.pressure_model.ambient_pressure instead"
 )
+        self._check_mean_piston_speed()
         return self
+
+    def _check_mean_piston_speed(self) -> None:
+        """A speed whose mean piston speed 2 S n is below any running engine's, while the
+        same number read as rad/s gives one, is refused with the likely intended rpm."""
+        def piston_speed(rpm: float) -> float:
+            return 2.0 * self.stroke * rpm / 60.0
+
+        if piston_speed(self.speed) >= MIN_MEAN_PISTON_SPEED:
+            return
+        hint = slip_hint(self.speed, "rpm", [(RPM_PER_RAD_S, "rad/s")],
+                         lambda rpm: piston_speed(rpm) >= MIN_MEAN_PISTON_SPEED)
+        if not hint:
+            return
+        slowest = 60.0 * MIN_MEAN_PISTON_SPEED / (2.0 * self.stroke)
+        raise ValueError(
+            f"engine.speed = {self.speed!r}: out of range (allowed: >= {slowest:.4g} rpm with "
+            f"the stroke {self.stroke:g} m, a mean piston speed 2 S n >= "
+            f"{MIN_MEAN_PISTON_SPEED:g} m/s; this speed gives "
+            f"{piston_speed(self.speed):.2g} m/s, below any running engine's){hint}")
 
     @property
     def crank_radius(self) -> float:

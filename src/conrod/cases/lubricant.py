@@ -33,7 +33,7 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
-from conrod.cases.base import Section, range_error
+from conrod.cases.base import Section, range_error, slip_hint, unit_slips
 from conrod.film.piezoviscosity import (
     DEFAULT_LIMIT_PRESSURE,
     ROELANDS_REFERENCE_PRESSURE,
@@ -43,12 +43,29 @@ from conrod.oil import WaltherLaw, density_at, oil_grades
 
 MAX_VISCOSITY = 10.0
 """Largest dynamic viscosity accepted anywhere in the oil's temperature range [Pa s]."""
+OIL_RANGE_FACTOR = 10.0
+"""A constant viscosity may be at most this many times that of the thickest SAE J300
+grade at the supply temperature [-]: engine oils, and the gear and cylinder oils beside
+them, stay well inside; a value above it was typed in mPa s (cP) where Pa s are asked for."""
+VISCOSITY_SLIPS = unit_slips((1e-3, "mPa s"))
+"""A viscosity in Pa s typed in mPa s (= cP) is refused with the value it likely means."""
+KINEMATIC_SLIPS = unit_slips((1e6, "m^2/s"))
+"""A kinematic viscosity in mm²/s typed in m²/s, likewise."""
+
+
+def thickest_oil_viscosity(temperature: float) -> float:
+    """Dynamic viscosity [Pa s] of the thickest SAE J300 grade of
+    ``conrod/data/sae_j300_grades.csv`` at ``temperature`` [°C] (Walther law, data-sheet
+    density)."""
+    return max(1.0e-6 * WaltherLaw(g.viscosity_40, g.viscosity_100).kinematic_viscosity(
+        temperature) * density_at(g.density_15, temperature) for g in oil_grades().values())
 
 class LubricantSection(Section):
     """Oil properties: viscosity source, density, heat capacity, pressure–viscosity law."""
 
     viscosity: float | None = Field(
-        default=None, gt=0.0, le=10.0, description="Dynamic viscosity μ (constant) [Pa s]"
+        default=None, gt=0.0, le=10.0, json_schema_extra=VISCOSITY_SLIPS,
+        description="Dynamic viscosity μ (constant) [Pa s]"
     )
     vogel_a: float | None = Field(
         default=None, gt=0.0, le=10.0, description="Vogel law factor a in μ = a exp(b/(T+c)) [Pa s]"
@@ -60,11 +77,11 @@ class LubricantSection(Section):
         default=None, gt=-273.0, le=1.0e3, description="Vogel law constant c [°C]"
     )
     kinematic_viscosity_40C: float | None = Field(  # noqa: N815 (unit suffix °C)
-        default=None, ge=2.0, le=1.0e5,
+        default=None, ge=2.0, le=1.0e5, json_schema_extra=KINEMATIC_SLIPS,
         description="Data-sheet kinematic viscosity at 40 °C [mm^2/s]",
     )
     kinematic_viscosity_100C: float | None = Field(  # noqa: N815
-        default=None, ge=2.0, le=1.0e4,
+        default=None, ge=2.0, le=1.0e4, json_schema_extra=KINEMATIC_SLIPS,
         description="Data-sheet kinematic viscosity at 100 °C [mm^2/s]",
     )
     density_15C: float | None = Field(  # noqa: N815
@@ -120,6 +137,7 @@ class LubricantSection(Section):
                 "kinematic_viscosity_100C [mm^2/s], density_15C [kg/m^3]) or grade"
             )
         self._check_sheet()
+        self._check_constant_viscosity()
         self._check_vogel()
         self._check_pressure_viscosity()
         if self.max_temperature <= self.supply_temperature:
@@ -140,6 +158,21 @@ class LubricantSection(Section):
                     f"lubricant.kinematic_viscosity_100C = {self.kinematic_viscosity_100C}: "
                     f"out of range (allowed: < kinematic_viscosity_40C = "
                     f"{self.kinematic_viscosity_40C} mm^2/s)")
+
+    def _check_constant_viscosity(self) -> None:
+        """A constant viscosity far above any engine oil's at the supply temperature is a
+        unit slip (mPa s typed for Pa s): refused with the value it likely means."""
+        if self.viscosity is None:
+            return
+        largest = OIL_RANGE_FACTOR * thickest_oil_viscosity(self.supply_temperature)
+        if self.viscosity <= largest:
+            return
+        hint = slip_hint(self.viscosity, "Pa s", VISCOSITY_SLIPS["unit_slips"],
+                         lambda value: value <= largest)
+        raise range_error(
+            "lubricant.viscosity", self.viscosity,
+            f"<= {largest:.3g} Pa s at the supply temperature {self.supply_temperature:g} °C, "
+            f"{OIL_RANGE_FACTOR:g} x the thickest SAE J300 grade there", "", hint)
 
     def _check_vogel(self) -> None:
         if self.vogel_c is None:

@@ -96,7 +96,7 @@ def register(app: typer.Typer) -> None:
             best = result.best()
             with printing_after_results(out):
                 typer.echo(f"most informative regime: {best['speed_rpm']:g} rpm, load "
-                           f"{best['load_scale']:g} (κ = {best['impact_velocity_ratio']:.3g}) "
+                           f"{best['load_scale']:g} ({best['in_words']}) "
                            f"-> {out}")
             return
         results = simulate(base.mechanism, base.scaled_gas_table(), base.settings)

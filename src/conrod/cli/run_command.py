@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import enum
 import math
+import os
 import time
 from pathlib import Path
 from typing import Annotated, Any
@@ -19,6 +20,10 @@ FilmChoice = enum.Enum("FilmChoice", {name: name for name in FILM_NAMES}, type=s
 IntegratorChoice = enum.Enum("IntegratorChoice", {n: n for n in INTEGRATOR_NAMES}, type=str)
 """The registered integrator names, validated by the command line."""
 
+BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+"""Thread counts of the BLAS libraries NumPy may use."""
+HEADLINE_WIDTH = 16
+"""Width of the label column of the plain headline [characters]."""
 PROGRESS_AFTER_S = 1.0
 """Without a terminal, the first log line comes once the run has taken this long [s]."""
 
@@ -104,6 +109,16 @@ class _Progress:
             self.bar.stop()
 
 
+def single_threaded_blas() -> None:
+    """Run the dense linear algebra (the elastic bore's n_θ × n_θ Newton matrices) on one
+    thread unless the user set the thread count: at these sizes a BLAS thread pool gains
+    nothing, and on a machine whose cores are busy its spinning threads made one 108 × 108
+    inverse take 170 ms instead of 1 ms (KamAZ-740 elastic run at 108×8: 299 s → 39 s).
+    Must run before NumPy is imported (the commands import it only once they compute)."""
+    for name in BLAS_THREAD_VARIABLES:
+        os.environ.setdefault(name, "1")
+
+
 def register(app: typer.Typer) -> None:
     """Add the ``run`` command to ``app``."""
 
@@ -111,7 +126,8 @@ def register(app: typer.Typer) -> None:
     @exits_cleanly
     def run(
         case_file: Annotated[Path, typer.Argument(help="Case file (TOML).")],
-        out: Annotated[Path, typer.Option("--out", help="Results folder.")] = Path("results"),
+        out: Annotated[Path | None, typer.Option(
+            "--out", help="Results folder (default: results/<case file name>).")] = None,
         film: Annotated[FilmChoice | None, typer.Option(
             help="Film model (default: the case's).")] = None,
         integrator: Annotated[IntegratorChoice | None, typer.Option(
@@ -128,18 +144,24 @@ def register(app: typer.Typer) -> None:
         rigid: Annotated[bool, typer.Option(
             "--rigid/--no-rigid", help="With an elastic [housing], also run the rigid bore "
             "and compare (cycle_rigid.csv, summary.json comparison).")] = True,
+        grid_error: Annotated[bool, typer.Option(
+            help="Grid films: run the orbit again on coarser grids and give the grid error "
+            "of h_min and p_max (Richardson, observed order) in the headline.")] = True,
     ) -> None:
         """Periodic journal-centre orbit and bearing characteristics over the cycle."""
+        single_threaded_blas()
         from conrod.io.result_folder import check_output_folder
 
+        out = out if out is not None else Path("results") / case_file.stem
         check_output_folder(out, inputs=(case_file,))  # before any computation
+        had_report = (out / "report.html").is_file() and (out / "manifest.json").is_file()
         with interrupts_stop_at_once():  # starting: nothing computed or written yet
             from conrod.cases.case import Case
             from conrod.output.registry import write_results
             from conrod.simulation.simulation import Simulation
 
             case = Case.from_toml(case_file)
-        n_theta, n_z = _grid(grid)
+        n_theta, n_z = parse_grid(grid)
         simulation = Simulation(case, film=film and film.value,
                                 integrator=integrator and integrator.value, max_cycles=max_cycles,
                                 step_deg=step_deg, n_theta=n_theta, n_z=n_z,
@@ -154,10 +176,32 @@ def register(app: typer.Typer) -> None:
             from conrod.simulation.step_check import with_step_check
 
             results = with_step_check(results, simulation)
+        if grid_error:
+            from conrod.simulation.grid_error import with_grid_error
+
+            progress = _Progress(simulation.solver.max_cycles,
+                                 simulation.solver.periodicity_tolerance)
+            try:
+                results = with_grid_error(results, simulation, progress)
+            finally:
+                progress.close()
         write_results(results, out, figures=figures)
+        note = _renew_report(out) if had_report else None
         with printing_after_results(out):
             print_headline(results, out)
+            if note:
+                typer.echo(note)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
+
+
+def _renew_report(out: Path) -> str:
+    """The folder held a report of its previous result, which the new result replaced: write
+    the report of the new one in its place (a stale report would contradict the files)."""
+    from conrod.report import write_report
+
+    write_report(out)
+    return (f"{'report':<{HEADLINE_WIDTH}}  {out / 'report.html'} rewritten for this result "
+            "(the previous one described the replaced result)")
 
 
 def print_headline(results: Any, out: Path) -> None:
@@ -177,7 +221,7 @@ def print_headline(results: Any, out: Path) -> None:
             table.add_row(f"[bold]{label}[/bold]", escape(text))
         Console().print(table)
         return
-    width = max(len(label) for label in lines)
+    width = max(HEADLINE_WIDTH, *(len(label) for label in lines))
     for label, text in lines.items():
         typer.echo(f"{label:<{width}}  {text}")
     typer.echo(f"{'results':<{width}}  {out} ({results.summary.wall_time:.2f} s)")
@@ -196,7 +240,7 @@ def _deg(angle: float) -> str:
     return f"{math.degrees(angle):.0f}"
 
 
-def _grid(grid: str | None) -> tuple[int | None, int | None]:
+def parse_grid(grid: str | None) -> tuple[int | None, int | None]:
     from conrod.errors import CaseError
 
     if grid is None:

@@ -66,8 +66,21 @@ def parse_grid(text: str | None) -> tuple[int, int] | None:
     return n_theta, n_z
 
 
+UNITS = {
+    "eccentricity": "-", "attitude_angle_deg": "deg", "min_film_thickness": "m",
+    "max_pressure": "Pa", "friction_torque": "N m", "friction_power": "W",
+    "side_flow": "m^3/s", "inlet_flow": "m^3/s", "sommerfeld_number": "-",
+    "length_to_diameter": "-", "friction_variable": "-", "flow_variable": "-",
+    "side_flow_ratio": "-", "load_to_peak_pressure_ratio": "-",
+    "peak_pressure_angle_deg": "deg", "film_end_angle_deg": "deg",
+}
+"""Unit of every number ``conrod steady`` prints (the linearised coefficients: see
+:func:`unit_of`)."""
+
+
 def unit_of(key: str) -> str:
-    """Unit shown after a linearised coefficient in the text output ('' for others)."""
+    """Unit shown after a value in the text output, e.g. ' [m]' (SI; '' for a name such as
+    the model)."""
     if "_bar_" in key:
         return " [-]"
     if key.startswith(("K_", "C_")):
@@ -77,7 +90,14 @@ def unit_of(key: str) -> str:
         return f" [{rows}{columns}]"
     if key.startswith("moment_") or key.startswith("M_"):
         return " [N m]"
-    return ""
+    return f" [{UNITS[key]}]" if key in UNITS else ""
+
+
+def with_units(values: dict) -> dict:
+    """The JSON output: the values and, under ``units``, the unit of each number."""
+    units = {key: unit_of(key).strip(" []") for key, value in values.items()
+             if isinstance(value, int | float) and unit_of(key)}
+    return {**values, "units": units}
 
 
 def _print(values: dict, as_json: bool) -> None:
@@ -85,7 +105,7 @@ def _print(values: dict, as_json: bool) -> None:
     (a closed pipe, a full disk) is results not written (exit 5)."""
     try:
         if as_json:
-            typer.echo(json.dumps(values, indent=2))
+            typer.echo(json.dumps(with_units(values), indent=2))
         else:
             for key, value in values.items():
                 shown = f"{value:.6g}" if isinstance(value, float) else str(value)

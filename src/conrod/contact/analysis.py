@@ -36,6 +36,32 @@ HERTZ_WIDTH_WARNING = 0.1
 """Hertz half-width, as a share of the journal radius, above which a caveat is issued [-]."""
 
 
+def contact_runs(crank_angle: np.ndarray, touching: np.ndarray, cycle: float
+                 ) -> list[tuple[float, float]]:
+    """Crank-angle intervals [rad] of the runs of output angles where ``touching``: from the
+    first to the last output angle of each run, so that they are exactly the rows of
+    ``cycle.csv`` whose ``in_contact`` is 1. A run over the end of the cycle is joined to
+    the one at its start and reported with end > cycle; every angle touching: one interval
+    over the whole cycle.
+
+    The one definition of the hard-contact intervals: the headline, ``summary.json``
+    (``contact_intervals_deg``) and the figures all take them from here.
+    """
+    phi = np.asarray(crank_angle, dtype=float)
+    flags = np.asarray(touching, dtype=bool)
+    if not np.any(flags):
+        return []
+    if np.all(flags):
+        return [(float(phi[0]), float(phi[-1]))]
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], flags.astype(int), [0]])))
+    runs = [(int(a), int(b) - 1) for a, b in zip(edges[::2], edges[1::2], strict=True)]
+    if len(runs) > 1 and runs[0][0] == 0 and runs[-1][1] == phi.size - 1:  # over the end
+        first, last = runs.pop(0), runs.pop()
+        runs.append((last[0], first[1] + phi.size))
+    return [(float(phi[a]), float(phi[b] if b < phi.size else phi[b - phi.size] + cycle))
+            for a, b in runs]
+
+
 def contact_intervals(
     crank_angle: np.ndarray, contact_force: np.ndarray, threshold: float, cycle: float
 ) -> list[tuple[float, float]]:
@@ -76,13 +102,15 @@ class ContactResults:
     hertz_half_width: np.ndarray
     """Hertz contact half-width at each angle [m]."""
     intervals: list[tuple[float, float]]
-    """Contact intervals [rad] (end may exceed the cycle when wrapping)."""
+    """Hard-contact intervals [rad] (end may exceed the cycle when wrapping): the runs of
+    output angles where the journal touches the shell (:func:`contact_runs`)."""
     work: FrictionWork
     """Friction work per step and per element [J]."""
     wear: WearDistribution
     """Friction work and wear per element of journal and shell [J, m]."""
     nominal_specific_load: float
-    """P_c,max/(B·D) [Pa] ([D4] eq. 4.4.1)."""
+    """Nominal specific load of the bearing at its peak load, W_max/(B·D) [Pa] ([D4]
+    eq. 4.4.1 with the peak bearing load)."""
     h_min: np.ndarray
     """Minimum film thickness from the orbit [m]."""
     p_max: np.ndarray
@@ -95,6 +123,32 @@ class ContactResults:
     """Largest Hertz stress each shell element sees over the cycle [Pa] (Fig. 4.4.1)."""
     journal_radius: float = 0.0
     """Journal radius R [m] (validity check of the Hertz half-width)."""
+    asperity_intervals: list[tuple[float, float]] | None = None
+    """Under Greenwood–Tripp contact: intervals [rad] where the asperity force exceeds
+    ``[contact] contact_threshold_ratio`` × the peak load (edges interpolated,
+    :func:`contact_intervals`); None under hard contact."""
+    width_times_diameter: float = 0.0
+    """B·D, the projected bearing area [m²]."""
+    asperity_force: np.ndarray | None = None
+    """Under Greenwood–Tripp contact: the asperity force F_a at each angle [N] (also in
+    ``contact_force``); None under hard contact."""
+    boundary_friction_power: np.ndarray | None = None
+    """Boundary friction power of the asperities μ_dry F_a |V_slide| at each angle [W]
+    (:func:`asperity_friction_power`); None under hard contact."""
+
+    @property
+    def has_contact(self) -> bool:
+        """True when the journal touches the shell or the asperities carry load somewhere
+        in the cycle [-]: only then are the contact and wear tables and figures written."""
+        return bool(np.any(self.contact_force > 0.0))
+
+    @property
+    def contact_specific_load(self) -> float:
+        """P_c,max/(B·D), the largest contact force over the projected area [Pa] (0 without
+        contact)."""
+        if self.width_times_diameter <= 0.0:
+            return 0.0
+        return self.max_contact_force / self.width_times_diameter
 
     @property
     def warnings(self) -> list[str]:
@@ -120,11 +174,11 @@ class ContactResults:
 
     @property
     def hertz_to_nominal_ratio(self) -> float | None:
-        """Hertz stress / nominal specific load at the largest contact force [-] ([D4]: 2.37);
+        """Hertz stress / P_c,max/(B·D), both at the largest contact force [-] ([D4]: 2.37);
         None without contact."""
-        if self.nominal_specific_load <= 0.0:
+        if self.contact_specific_load <= 0.0:
             return None
-        return self.max_hertz_stress / self.nominal_specific_load
+        return self.max_hertz_stress / self.contact_specific_load
 
     @property
     def seed_friction_work(self) -> float:
@@ -144,22 +198,32 @@ class ContactResults:
             "max_hertz_stress_Pa": self.max_hertz_stress,
             "max_hertz_half_width_m": float(np.max(self.hertz_half_width, initial=0.0)),
             "nominal_specific_load_Pa": self.nominal_specific_load,
+            "contact_specific_load_Pa": self.contact_specific_load,
             "hertz_to_nominal_ratio": self.hertz_to_nominal_ratio,
             "friction_work_J": self.work.total,
             "friction_work_seed_formula_J": self.seed_friction_work,
             "max_wear_journal_m": float(np.max(self.wear.journal_wear)),
             "max_wear_shell_m": float(np.max(self.wear.shell_wear)),
             "contact_warnings": self.warnings,
+            **({"asperity_contact_intervals_deg": [
+                [math.degrees(start), math.degrees(end)]
+                for start, end in self.asperity_intervals]}
+               if self.asperity_intervals is not None else {}),
         }
 
     def cycle_columns(self) -> dict[str, np.ndarray]:
-        """Extra per-angle columns for cycle.csv [units in the names]."""
-        return {
-            "contact_force_N": self.contact_force,
-            "friction_force_N": self.friction_force,
+        """Extra per-angle columns for cycle.csv [units in the names]: the Hertz stress and
+        the cumulative friction work; under Greenwood–Tripp the asperity force and its
+        boundary friction power. (``contact_force_N`` and ``friction_force_N`` of cycle.csv
+        stay the orbit's hard contact, as in ``CycleResults.to_dataframe()``.)"""
+        columns = {
             "hertz_stress_Pa": self.hertz_stress,
             "friction_work_cumulative_J": self.work.cumulative,
         }
+        if self.asperity_force is not None:
+            columns["asperity_force_N"] = self.asperity_force
+            columns["boundary_friction_power_W"] = self.boundary_friction_power
+        return columns
 
 
 def _contact_from_asperity(case, cycle, asperity_force=None) -> tuple[np.ndarray, np.ndarray]:
@@ -179,17 +243,31 @@ def _contact_from_asperity(case, cycle, asperity_force=None) -> tuple[np.ndarray
     return np.hypot(fx, fy), np.arctan2(ey, ex)
 
 
+def asperity_friction_power(case, cycle, asperity_force=None) -> np.ndarray:
+    """Boundary friction power of the asperities μ_dry F_a |V_slide| at each output angle
+    [W]: zeros under hard contact; under Greenwood–Tripp the asperity force ``asperity_force``
+    [N] (as the film computed it on a deformed bore) or, when None, on the rigid shell from
+    the orbit. It belongs to the total friction and the heat balance with the film and
+    hard-contact friction."""
+    if case.contact.model != "greenwood_tripp":
+        return np.zeros(np.asarray(cycle.crank_angle).size)
+    force = _contact_from_asperity(case, cycle, asperity_force)[0]
+    return (case.contact.dry_friction_coefficient * force
+            * np.abs(np.asarray(cycle.sliding_speed, dtype=float)))
+
+
 def _contact_force_and_angle(case, cycle, asperity_force=None
-                             ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(P_c [N], friction force [N], contact angle [rad]) per output angle: the orbit's hard
-    contact, plus under Greenwood–Tripp the asperity force with μ_dry boundary friction."""
+                             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray | None]:
+    """(P_c [N], friction force [N], contact angle [rad], asperity force [N] or None) per
+    output angle: the orbit's hard contact, plus under Greenwood–Tripp the asperity force
+    with μ_dry boundary friction."""
     force = np.maximum(np.asarray(cycle.contact_force, dtype=float), 0.0)
     friction = np.abs(np.asarray(cycle.friction_force, dtype=float))  # magnitude, any sign
     if case.contact.model == "greenwood_tripp":
         asperity, angle = _contact_from_asperity(case, cycle, asperity_force)
         mu = case.contact.dry_friction_coefficient
-        return force + asperity, friction + mu * asperity, angle
-    return force, friction, np.asarray(cycle.contact_angle, dtype=float)
+        return force + asperity, friction + mu * asperity, angle, asperity
+    return force, friction, np.asarray(cycle.contact_angle, dtype=float), None
 
 
 def analyse_contact(case, cycle, asperity_force=None) -> ContactResults:
@@ -211,7 +289,7 @@ def analyse_contact(case, cycle, asperity_force=None) -> ContactResults:
     if crank_angle.size < 3:
         raise CaseError(f"contact analysis needs at least 3 output angles, got {crank_angle.size}")
     cycle_rad = cycle_length(crank_angle)
-    force, friction, angle = _contact_force_and_angle(case, cycle, asperity_force)
+    force, friction, angle, asperity = _contact_force_and_angle(case, cycle, asperity_force)
     modulus = contact_modulus(
         section.journal_elastic_modulus, section.journal_poisson_ratio,
         section.shell_elastic_modulus, section.shell_poisson_ratio,
@@ -223,6 +301,12 @@ def analyse_contact(case, cycle, asperity_force=None) -> ContactResults:
 )
     peak_load = float(np.max(np.hypot(cycle.load_x, cycle.load_y)))
     stress = hertz_line_contact_pressure(force, width, radius, shell_radius, modulus)
+    asperity_intervals = boundary = None
+    if asperity is not None:
+        asperity_intervals = contact_intervals(
+            crank_angle, asperity, section.contact_threshold_ratio * peak_load, cycle_rad)
+        boundary = (section.dry_friction_coefficient * asperity
+                    * np.abs(np.asarray(cycle.sliding_speed, dtype=float)))
     journal_stress, shell_stress = element_maximum(
         stress, angle, np.asarray(cycle.journal_rotation, dtype=float), crank_angle,
         section.surface_elements, cycle_rad,
@@ -233,20 +317,21 @@ def analyse_contact(case, cycle, asperity_force=None) -> ContactResults:
         friction_force=friction,
         hertz_stress=stress,
         hertz_half_width=hertz_half_width(force, width, radius, shell_radius, modulus),
-        intervals=contact_intervals(
-            crank_angle, force, section.contact_threshold_ratio * peak_load, cycle_rad
-),
+        intervals=contact_runs(crank_angle, np.asarray(cycle.in_contact, dtype=bool),
+                               cycle_rad),
         work=work,
         wear=wear_distribution(
             work, radius, width, section.wear_coefficient_journal, section.wear_coefficient_shell
 ),
-        nominal_specific_load=float(
-            nominal_specific_load(np.max(force), width, bearing.diameter)
-),
+        nominal_specific_load=float(nominal_specific_load(peak_load, width, bearing.diameter)),
         h_min=np.asarray(cycle.h_min, dtype=float),
         p_max=np.asarray(cycle.p_max, dtype=float),
         model=section.model,
         journal_stress=journal_stress,
         shell_stress=shell_stress,
         journal_radius=radius,
+        asperity_intervals=asperity_intervals,
+        width_times_diameter=width * bearing.diameter,
+        asperity_force=asperity,
+        boundary_friction_power=boundary,
 )

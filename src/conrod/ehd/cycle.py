@@ -17,6 +17,12 @@ there (the coupling is already converged, so this is one film solve) and gives:
 * ``coupling_residual_m`` — max|G(u)| of the coupling [m];
 * ``asperity_force_N`` — with mixed lubrication carried by the film, the Greenwood–Tripp
   asperity force on the deformed film [N] (:mod:`conrod.ehd.asperity`).
+
+Besides the columns: the film thickness on the deformed bore h = c − e_x cos θ − e_y sin θ
++ u at the bore nodes (every figure and table of the elastic run draws this gap), the
+film pressure at the angle of the largest load and at further requested angles (the rod
+stresses use them), and at a chosen angle the bore displacement split into its film-pressure
+and inertia parts.
 """
 
 from __future__ import annotations
@@ -47,10 +53,29 @@ class ElasticCycle:
     peak_load_index: int = 0
     peak_load_pressure: np.ndarray | None = None
     field: np.ndarray | None = None
+    """Bore displacement u(θ, z) per output row (n_out, n_θ, n_z + 1) [m] of a housing that
+    deforms along the width; None for a plane housing."""
+    pressures: dict[int, np.ndarray] | None = None
+    """Film pressure p(θ, z) [Pa] at the output rows asked for (row → field)."""
+
+    def film_thickness(self, cycle, clearance: float, points: int = 361
+                       ) -> tuple[np.ndarray, np.ndarray]:
+        """(shell angles θ, 0 … 2π, ``points`` of them [rad]; film thickness on the deformed
+        bore h(φ, θ) = c − e_x cos θ − e_y sin θ + u(θ) at each output angle (n_out,
+        ``points``) [m]; the width-mean u of a bore that deforms along the width),
+        u interpolated linearly (periodically) between the bore nodes."""
+        theta = np.linspace(0.0, 2.0 * np.pi, points)
+        u = np.array([np.interp(theta, self.angles, row, period=2.0 * np.pi)
+                      for row in self.deformation])
+        h = (clearance - np.asarray(cycle.eccentricity_x)[:, None] * np.cos(theta)[None, :]
+             - np.asarray(cycle.eccentricity_y)[:, None] * np.sin(theta)[None, :] + u)
+        return theta, h
 
 
-def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticCycle:
-    """Diagnostics of the last cycle of an orbit of the elastic film ``problem.film``."""
+def elastic_cycle(problem, cycle, film_memory: list, massless: bool,
+                  pressure_rows: tuple[int, ...] = ()) -> ElasticCycle:
+    """Diagnostics of the last cycle of an orbit of the elastic film ``problem.film``, with
+    the film pressure at the largest load and at the output rows ``pressure_rows``."""
     film = problem.film
     names = ("coupling_iterations", "coupling_residual_m", "deformation_increment_m",
              "bore_displacement_min_m", "bore_displacement_max_m")
@@ -60,18 +85,13 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
     deformation = np.zeros((len(cycle.crank_angle), len(film.housing.angles)))
     fields: list[np.ndarray] | None = [] if not film.housing.uniform_in_z else None
     peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
-    peak_pressure = None
+    wanted = {peak, *pressure_rows}
+    pressures = {}
     for i, memory in enumerate(film_memory):
-        state = FilmState(eccentricity_x=float(cycle.eccentricity_x[i]),
-                          eccentricity_y=float(cycle.eccentricity_y[i]),
-                          velocity_x=float(cycle.velocity_x[i]),
-                          velocity_y=float(cycle.velocity_y[i]),
-                          journal_speed=float(cycle.journal_speed[i]),
-                          shell_speed=float(cycle.shell_speed[i]),
-                          viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i))
-        result, after = film.solve_with_memory(state, memory, with_pressure=i == peak)
-        if i == peak:
-            peak_pressure = result.pressure
+        state = _state(problem, cycle, i)
+        result, after = film.solve_with_memory(state, memory, with_pressure=i in wanted)
+        if i in wanted:
+            pressures[i] = result.pressure
         force[i] = result.force_x, result.force_y
         deformation[i] = film.housing.row_mean(after.deformation)
         if fields is not None:
@@ -90,7 +110,46 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool) -> ElasticC
     columns["force_residual_N"] = _force_residual(problem, cycle, force, massless,
                                                   _step_accelerations(film_memory))
     return ElasticCycle(deformation, np.asarray(film.housing.angles), columns, peak,
-                        peak_pressure, None if fields is None else np.array(fields))
+                        pressures.get(peak), None if fields is None else np.array(fields),
+                        pressures)
+
+
+def _state(problem, cycle, i: int) -> FilmState:
+    return FilmState(eccentricity_x=float(cycle.eccentricity_x[i]),
+                     eccentricity_y=float(cycle.eccentricity_y[i]),
+                     velocity_x=float(cycle.velocity_x[i]),
+                     velocity_y=float(cycle.velocity_y[i]),
+                     journal_speed=float(cycle.journal_speed[i]),
+                     shell_speed=float(cycle.shell_speed[i]), viscosity=problem.viscosity,
+                     **cycle_tilt(cycle.axial, i))
+
+
+def asperity_forces(problem, cycle, film_memory: list) -> np.ndarray:
+    """The Greenwood–Tripp asperity force on the deformed film at each output angle [N]:
+    one film solve per angle from the memory sampled there (zero where the film reports
+    none)."""
+    film = problem.film
+    forces = np.zeros(len(cycle.crank_angle))
+    for i, memory in enumerate(film_memory):
+        result, _ = film.solve_with_memory(_state(problem, cycle, i), memory)
+        forces[i] = float(result.extra.get("asperity_force_N", 0.0))
+    return forces
+
+
+def displacement_split(film, cycle, deformation: np.ndarray, index: int) -> dict[str, float]:
+    """The bore displacement at the output row ``index`` where the film is thinnest, split
+    into the part the rod's inertia makes and the part the film pressure makes (the rest),
+    at the bore node nearest the angle of h_min (outward +; the width-mean of a bore that
+    deforms along the width) [m, deg]."""
+    angles = np.asarray(film.housing.angles)
+    theta = float(cycle.h_min_angle_shell[index])
+    node = int(np.argmin(np.abs((angles - theta + np.pi) % (2.0 * np.pi) - np.pi)))
+    inertia = film.housing.row_mean(film.inertia_deformation(float(cycle.crank_angle[index])))
+    total = float(deformation[index, node])
+    return {"crank_angle_deg": float(np.degrees(cycle.crank_angle[index])),
+            "shell_angle_deg": float(np.degrees(angles[node]) % 360.0),
+            "total_m": total, "inertia_m": float(inertia[node]),
+            "pressure_m": total - float(inertia[node])}
 
 
 def _step_accelerations(film_memory: list) -> np.ndarray | None:

@@ -145,7 +145,10 @@ def stage_prefix(target: Path) -> str:
 
 def _check_owned(path: Path, shown: str, marker: str, inputs: set[Path] = frozenset()
                  ) -> None:
-    """Refuse a non-empty folder that holds no conrod result (its files are not ours)."""
+    """Refuse a non-empty folder that holds no conrod result (its files are not ours), saying
+    why: a result folder is written and replaced as a whole, so conrod writes only into a
+    new or empty folder or one of its own results. A folder that holds other result folders
+    (``results`` after ``--out results/a``) is named as such, with the fix."""
     if not path.is_dir() or (path / marker).is_file():
         return
     entries = sorted(entry.name for entry in path.iterdir()
@@ -154,10 +157,24 @@ def _check_owned(path: Path, shown: str, marker: str, inputs: set[Path] = frozen
         return
     names = ", ".join(entries[:SHOWN_ENTRIES]) + (
         f", ... ({len(entries)} entries)" if len(entries) > SHOWN_ENTRIES else "")
+    results = [name for name in entries if _holds_result(path / name)]
+    if results:
+        raise CaseError(
+            f"{shown}: holds other result folders ({names}) and is not one itself (no "
+            f"{marker}); a result is written into a folder of its own, replacing it as a "
+            f"whole, so it cannot go here: give a folder of its own, e.g. a new subfolder "
+            f"{(Path(path.name) / 'run2').as_posix()!r}")
     raise CaseError(f"{shown}: folder holds files conrod did not write ({names}) and no "
-                    f"{marker} (allowed: a new or empty folder, one holding only the input "
-                    "file, or a conrod results folder, whose previous results are replaced); "
+                    f"{marker}; a result folder is replaced as a whole, which would delete "
+                    "them (allowed: a new or empty folder, one holding only the input file, "
+                    "or a conrod results folder, whose previous results are replaced); "
                     "choose another folder or empty this one")
+
+
+def _holds_result(entry: Path) -> bool:
+    """True for a subfolder holding a conrod result (its manifest or a sweep's study)."""
+    return entry.is_dir() and any((entry / name).is_file()
+                                  for name in (MANIFEST, "study.json"))
 
 
 @contextlib.contextmanager

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from conrod.output.registry import TableSpec, result_kind, tables
-from conrod.output.tables import cycle_table, summary_items
+from conrod.output.tables import case_tables, contact_tables, cycle_table, summary_items
 from conrod.results.ehd import ElasticRunResults, comparison
 
 
@@ -36,7 +36,23 @@ def elastic_summary_items(results: ElasticRunResults) -> dict:
     }
     if results.rigid is not None:
         items["comparison"] = comparison(results.elastic, results.rigid)
+        items["comparison"]["firing_stroke"] = results.firing_comparison()
+    if results.bore_displacement is not None:
+        items.setdefault("comparison", {})["bore_displacement_at_elastic_h_min"] = dict(
+            results.bore_displacement)
     return items
+
+
+def film_pressure_table(results: ElasticRunResults) -> dict[str, np.ndarray]:
+    """``film_pressure.npz``: the elastic film pressure p(θ, z) [Pa] at the crank angles
+    [deg] the rod stresses use (largest load, ``[housing] stress_angles``), on the film grid
+    θ [rad], z [m]."""
+    angles = sorted(results.pressure_fields or {})
+    theta, z = results.elastic.pressure_grid
+    return {"crank_angle_deg": np.asarray(angles, dtype=float),
+            "theta_rad": np.asarray(theta, dtype=float), "z_m": np.asarray(z, dtype=float),
+            "pressure_Pa": np.asarray([results.pressure_fields[a] for a in angles],
+                                      dtype=float)}
 
 
 @tables.register
@@ -50,14 +66,21 @@ def _elastic_tables(results: ElasticRunResults) -> tuple[TableSpec, ...]:
         TableSpec("summary.json", "Cycle summary (elastic big end)",
                   "Elastic answer: extremes, means and diagnostics; 'elastic': coupling "
                   "totals; 'comparison': rigid vs elastic h_min [µm], p_max [MPa], friction "
-                  "power [W], side flow [cm^3/s], cycle means, difference [%].",
+                  "power [W], side flow [l/min], cycle means, difference [%], the same over "
+                  "the firing stroke and the bore displacement at the elastic h_min [m].",
                   lambda: elastic_summary_items(results)),
     )
     if results.rigid is not None:
         own += (TableSpec("cycle_rigid.csv", "Bearing characteristics over the cycle (rigid)",
                           "The same case with a rigid bore (columns as cycle.csv).",
                           lambda: cycle_table(results.rigid)),)
-    return own + (tables(results.contact) if results.contact is not None else ())
+    if results.pressure_fields and results.elastic.pressure_grid is not None:
+        own += (TableSpec("film_pressure.npz", "Elastic film pressure for the rod stresses",
+                          "Film pressure [Pa] on the deformed bore over θ [rad] and z [m] at "
+                          "the crank angles [deg] of the largest load and of [housing] "
+                          "stress_angles (read by conrod stress RUN_FOLDER).",
+                          lambda: film_pressure_table(results)),)
+    return own + contact_tables(results.elastic) + case_tables(results.elastic)
 
 
 @result_kind.register

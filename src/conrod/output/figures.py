@@ -27,7 +27,9 @@ def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
     own = (
         FigureSpec("orbit.png", "Journal-centre orbit",
                    "Journal centre e_x, e_y [µm] in the clearance circle over the last cycle, "
-                   "labelled by crank angle [deg]; the cycle before it dashed.",
+                   "labelled by crank angle [deg]; the cycle before it dashed; the orbit's "
+                   "contact circle (on a deforming bore widened by one clearance: the bore "
+                   "gives way, the deformed film stops the journal).",
                    lambda: _plots("orbit_plots").plot_orbit(results)),
         FigureSpec("hmin_pmax.png", "Minimum film thickness and peak pressure",
                    "h_min [µm] and p_max [MPa] against crank angle [deg].",
@@ -42,14 +44,23 @@ def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
                    lambda: _plots("orbit_plots").plot_pressure_map(results)),
         FigureSpec("film_thickness_map.png", "Film thickness over shell and cycle",
                    "Film thickness h [µm] over crank angle φ [deg] and shell angle θ [deg] "
-                   "(rigid bore), with the contact threshold h_c and the angle of h_min.",
+                   f"({_bore(results)}), with the contact threshold h_c and the angle of "
+                   "h_min.",
                    lambda: _plots("film_maps").plot_film_thickness_map(results)),
         FigureSpec("min_film_envelope.png", "Shell envelope of minimum film thickness",
-                   "Smallest film thickness [µm] each shell angle θ [deg] sees over the cycle, "
-                   "and the crank angle [deg] where it occurs.",
+                   "Smallest film thickness [µm] each shell angle θ [deg] sees over the cycle "
+                   f"({_bore(results)}), and the crank angle [deg] where it occurs.",
                    lambda: _plots("film_maps").plot_min_film_envelope(results)),
 )
-    return own + (figures(results.contact) if results.contact is not None else ())
+    contact = results.contact
+    return own + (figures(contact) if contact is not None and contact.has_contact else ())
+
+
+def _bore(results: RunResults) -> str:
+    """Which gap a film figure draws, in words."""
+    if (results.model or {}).get("housing", "").startswith("elastic"):
+        return "gap on the deformed bore, h_rigid + u"
+    return "rigid bore"
 
 
 @figures.register
@@ -146,7 +157,7 @@ def _elastic_figures(results: ElasticRunResults) -> tuple[FigureSpec, ...]:
                    "crank angle of the largest p_max, centred on the pressure peak.",
                    lambda: _plots("ehd_plots").plot_deformed_film_maps(results)),
 )
-    if results.peak_load_pressure is not None and results.housing.structure_factory:
+    if results.stresses is not None:
         own += (
             FigureSpec("von_mises_film_pressure.png", "Rod stress under the film pressure",
                        "Von Mises stress [MPa] of the rod at the largest load under the "

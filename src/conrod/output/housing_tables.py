@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from conrod.output.registry import FigureSpec, TableSpec, figures, result_kind, tables
+from conrod.output.tables import case_tables
 from conrod.results.housing import HousingResults, StressResults
 
 SCHEMES = ("pressure", "cosine")
@@ -37,7 +38,7 @@ def _housing_tables(results: HousingResults) -> tuple[TableSpec, ...]:
                   "Compliance diagonal range [µm/kN], inertia fields [µm], finite-element "
                   "mass properties [kg, m] and the build information.",
                   lambda: results.summary),
-    )
+    ) + case_tables(results)
 
 
 @figures.register
@@ -82,7 +83,8 @@ def stress_maxima(results: StressResults) -> dict[str, np.ndarray]:
 
 def stress_summary(results: StressResults) -> dict[str, Any]:
     """``stress_summary.json``: resultant, ratios and zones per crank angle."""
-    summary: dict[str, Any] = {"pressure_source": results.pressure_source}
+    summary: dict[str, Any] = {"pressure_source": results.pressure_source,
+                               "pressure_run": results.run}
     for angle, comparison in results.schemes.items():
         summary[f"{angle:g}"] = {
             "resultant_N": comparison["resultant_N"].tolist(),
@@ -101,10 +103,11 @@ def _stress_tables(results: StressResults) -> tuple[TableSpec, ...]:
                   "largest displacement [m] per crank angle [deg] and load scheme.",
                   lambda: stress_maxima(results)),
         TableSpec("stress_summary.json", "Rod stress summary",
-                  "Which film pressure loads the rod; per crank angle the load resultant [N], "
-                  "pressure-to-cosine ratios [-] and the stress zones [Pa, m].",
+                  "Which film pressure loads the rod (and the run it comes from); per crank "
+                  "angle the load resultant [N], pressure-to-cosine ratios [-] and the stress "
+                  "zones [Pa, m].",
                   lambda: stress_summary(results)),
-    )
+    ) + case_tables(results)
 
 
 @figures.register

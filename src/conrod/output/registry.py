@@ -13,7 +13,11 @@ it builds every figure first (a failing figure writes nothing), writes the table
 figures atomically, and writes last ``manifest.json``::
 
     {"conrod_version": str, "kind": str,
-     "tables": [{"file", "title", "caption"}], "figures": [{"file", "title", "caption"}]}
+     "tables": [{"file", "title", "caption"}], "figures": [{"file", "title", "caption"}],
+     "case": {"file", "source_name", "tables", "set"}}   # a run: the case as run
+
+(``case``: :meth:`conrod.results.case_record.CaseRecord.manifest_item`; the case file and
+its tables are among the tables.)
 
 A new result type appears everywhere at once by registering its tables and figures.
 """
@@ -45,8 +49,8 @@ class TableSpec:
     file : str  File name.
     title : str  Short title.
     caption : str  What the table holds, with units.
-    build : callable  () → text (written as is), or columns name → 1-D array (``.csv``),
-        items (``.json``) or named arrays (``.npz``).
+    build : callable  () → text or bytes (written as they are), or columns name → 1-D
+        array (``.csv``), items (``.json``) or named arrays (``.npz``).
     """
 
     file: str
@@ -128,8 +132,12 @@ def manifest(results: Any, table_specs, figure_specs) -> dict[str, Any]:
     def entries(specs) -> list[dict[str, str]]:
         return [{"file": s.file, "title": s.title, "caption": s.caption} for s in specs]
 
-    return {"conrod_version": __version__, "kind": result_kind(results),
-            "tables": entries(table_specs), "figures": entries(figure_specs)}
+    items = {"conrod_version": __version__, "kind": result_kind(results),
+             "tables": entries(table_specs), "figures": entries(figure_specs)}
+    record = getattr(results, "case_record", None)
+    if record is not None:
+        items["case"] = record.manifest_item()
+    return items
 
 
 def _figure_specs(results: Any) -> tuple[FigureSpec, ...]:
@@ -139,6 +147,10 @@ def _figure_specs(results: Any) -> tuple[FigureSpec, ...]:
 def _write_table(path: Path, content: Any) -> Path:
     if isinstance(content, str):
         return write_text(path, content)
+    if isinstance(content, bytes):  # a copy of an input file, byte for byte
+        with atomic_path(path) as tmp:
+            tmp.write_bytes(content)
+        return path
     if path.suffix == ".csv":
         return write_csv(path, content)
     if path.suffix == ".json":

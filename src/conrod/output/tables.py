@@ -15,6 +15,7 @@ from conrod.mechanism.regimes import SweepRun
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults, MechanismRun
 from conrod.output.registry import TableSpec, result_kind, tables
 from conrod.results.axial import axial_summary_items
+from conrod.results.case_record import CASE_FILE
 from conrod.results.columns import CYCLE_COLUMNS, axial_table
 from conrod.results.cycle_results import RunResults
 
@@ -73,6 +74,34 @@ def summary_items(results: RunResults) -> dict:
     return items
 
 
+def contact_tables(results) -> tuple[TableSpec, ...]:
+    """The contact and wear tables of a run, only where the journal touches the shell or
+    the asperities carry load (a run without contact writes none)."""
+    contact = results.contact
+    if contact is None or not contact.has_contact:
+        return ()
+    return tables(contact)
+
+
+def case_tables(results) -> tuple[TableSpec, ...]:
+    """The case as run (:class:`conrod.results.case_record.CaseRecord`): the case file as
+    written and a copy of every table it reads; ``manifest.json["case"]`` names them with
+    the values the run set on top of the file."""
+    record = getattr(results, "case_record", None)
+    if record is None:
+        return ()
+    source = f" ({record.source_name})" if record.source_name else ""
+    specs = [TableSpec(CASE_FILE, "Case file",
+                       f"The case file as given{source}, with the sources in its comments; "
+                       "the values the run set on top of it (command-line options) are in "
+                       "manifest.json 'case'.", lambda: record.text.encode("utf-8"))]
+    for key, name, content in record.tables:
+        specs.append(TableSpec(name, f"Case input {key}",
+                               f"Copy of the file the case reads as {key}.",
+                               lambda content=content: content))
+    return tuple(specs)
+
+
 @tables.register
 def _run_tables(results: RunResults) -> tuple[TableSpec, ...]:
     own = (
@@ -81,11 +110,12 @@ def _run_tables(results: RunResults) -> tuple[TableSpec, ...]:
                   "output crank angle (units in the column names: m, Pa, W, m^3/s, N, deg).",
                   lambda: cycle_table(results)),
         TableSpec("summary.json", "Cycle summary",
-                  "Smallest h_min [m] and largest p_max [Pa] with their crank angles [deg], "
-                  "cycle means, heat balance and run diagnostics.",
+                  "The headline; smallest film h_min [m] and largest p_max [Pa] with their "
+                  "crank angles [deg], cycle means, heat balance, grid-error estimate and "
+                  "run diagnostics.",
                   lambda: summary_items(results)),
 )
-    return own + (tables(results.contact) if results.contact is not None else ())
+    return own + contact_tables(results) + case_tables(results)
 
 
 @result_kind.register

@@ -83,28 +83,28 @@ def _centred(theta_deg: np.ndarray, field: np.ndarray, centre_deg: float):
 
 def plot_deformed_film_maps(results) -> Figure:
     """Film thickness h [µm] and pressure p [MPa] over θ [deg] and z [mm] on the deformed
-    bore at the crank angle of the largest p_max, θ centred on the pressure peak."""
+    bore at the crank angle of the largest p_max, θ centred on the pressure peak (the
+    thickness the run holds at the bore nodes, alike at every z of the 2-D housing)."""
     elastic = results.elastic
     fig = Figure(figsize=(10.0, 4.5))
     axes = fig.subplots(1, 2)
-    if elastic.pressure_at_p_max is None:
+    if elastic.pressure_at_p_max is None or elastic.film_thickness is None:
         axes[0].text(0.5, 0.5, "no pressure field", ha="center")
         return fig
     theta, z = elastic.pressure_grid
-    i = int(np.argmax(elastic.cycle.p_max))
     cycle = elastic.cycle
-    h = (results.clearance - cycle.eccentricity_x[i] * np.cos(theta)
-         - cycle.eccentricity_y[i] * np.sin(theta))[:, None] + (
-        results.deformation[i][:, None] if results.deformation_field is None
-        else results.deformation_field[i])
+    i = int(np.argmax(cycle.p_max))
     pressure = elastic.pressure_at_p_max
     peak = np.degrees(theta[np.unravel_index(np.argmax(pressure), pressure.shape)[0]])
-    theta_deg = np.degrees(theta)
-    for ax, (field, label, cmap) in zip(axes, (
-            (np.broadcast_to(h, (len(theta), len(z))) * UM, "film thickness h [µm]",
-             "viridis"),
-            (pressure * MPA, "pressure p [MPa]", "inferno")), strict=True):
-        angles, rolled = _centred(theta_deg, field, peak)
+    if results.deformation_field is not None:  # a bore that deforms along the width
+        nodes, thickness_map = np.degrees(theta), results.gap_field(i)
+    else:
+        nodes = np.degrees(elastic.film_angles[:-1])  # without the closing 360° point
+        thickness_map = np.repeat(elastic.film_thickness[i, :-1][:, None], len(z), axis=1)
+    for ax, (angles_deg, field, label, cmap) in zip(axes, (
+            (nodes, thickness_map * UM, "film thickness h [µm]", "viridis"),
+            (np.degrees(theta), pressure * MPA, "pressure p [MPa]", "inferno")), strict=True):
+        angles, rolled = _centred(angles_deg, field, peak)
         mesh = ax.pcolormesh(angles, z * 1e3, rolled.T, shading="auto", cmap=cmap)
         fig.colorbar(mesh, ax=ax, label=label)
         ax.set_xlabel("θ [deg] (centred on the pressure peak)")
@@ -116,14 +116,11 @@ def plot_deformed_film_maps(results) -> Figure:
 
 def plot_von_mises(results, scheme: str) -> Figure:
     """Rod von Mises stress [MPa] at the largest load, ``scheme`` 'pressure' (elastic film
-    pressure on the bore) or 'cosine' (the same resultant as a cosine load)."""
+    pressure on the bore) or 'cosine' (the same resultant as a cosine load), as the run
+    computed them (``results.stresses``)."""
     from conrod.plotting.housing_plots import von_mises_figure
 
-    housing, i = results.housing, results.peak_load_index
-    theta, z = results.elastic.pressure_grid
-    angle = float(results.cycle.crank_angle[i])
-    comparison = housing.stresses(results.peak_load_pressure, z, angle, theta)
+    angle = float(results.cycle.crank_angle_deg[results.peak_load_index])
     title = {"pressure": "elastic film pressure", "cosine": "cosine load, same resultant"}
-    return von_mises_figure(housing.structure, comparison[scheme],
-                            f"Von Mises at φ = {np.degrees(angle):.0f}° (largest load): "
-                            f"{title[scheme]}")
+    return von_mises_figure(results.housing.structure, results.stresses[scheme],
+                            f"Von Mises at φ = {angle:.0f}° (largest load): {title[scheme]}")

@@ -1,8 +1,10 @@
-"""Film-thickness figures of ``conrod run`` over the shell circumference (rigid bore:
-h(θ, φ) = c − e_x(φ) cos θ − e_y(φ) sin θ, film frame, :func:`conrod.film.base.film_thickness`).
+"""Film-thickness figures of ``conrod run`` over the shell circumference, drawn from the
+film thickness the run holds (:attr:`conrod.results.cycle_results.RunResults.film_thickness`:
+on a rigid bore h = c − e_x cos θ − e_y sin θ, on a deforming bore the deformed gap
+h_rigid + u the film sees).
 
 * :func:`plot_film_thickness_map` — h(θ, φ) over shell angle and crank angle, the h_c
-  contour and the track of h_min;
+  contour (rigid bore) and the track of h_min;
 * :func:`plot_min_film_envelope` — the shell envelope of minimum film thickness: for each
   shell angle θ the thinnest film it sees over the cycle, min_φ h(θ, φ), and at which φ.
 """
@@ -15,37 +17,32 @@ from matplotlib.figure import Figure
 from conrod.results.cycle_results import RunResults
 
 UM = 1e6
-SHELL_POINTS = 361
-"""Shell angles of the maps, 0..360° [-]."""
 
 
-def film_thickness_over_cycle(results: RunResults) -> tuple[np.ndarray, np.ndarray]:
-    """(shell angles θ [rad], h(φ, θ) [m] of shape (n_φ, n_θ)) of the rigid bore."""
-    cycle = results.cycle
-    theta = np.linspace(0.0, 2.0 * np.pi, SHELL_POINTS)
-    h = (results.clearance - cycle.eccentricity_x[:, None] * np.cos(theta)[None, :]
-         - cycle.eccentricity_y[:, None] * np.sin(theta)[None, :])
-    return theta, h
+def _which_bore(results: RunResults) -> str:
+    return "deformed bore" if results.contact_circle_widened else "rigid bore"
 
 
-def _contact_threshold(results: RunResults) -> float | None:
-    settings = results.settings or {}
-    value = settings.get("contact_film_thickness")
-    return float(value) if value else None
+def _rigid_threshold(results: RunResults) -> float | None:
+    """h_c where the rigid contact circle stops the journal (None on a deforming bore,
+    where the deformed film stops it)."""
+    return None if results.contact_circle_widened else results.contact_threshold
 
 
 def plot_film_thickness_map(results: RunResults) -> Figure:
     """h(θ, φ) [µm] over crank angle φ [deg] and shell angle θ [deg]."""
-    theta, h = film_thickness_over_cycle(results)
-    phi = results.cycle.crank_angle_deg
     fig = Figure(figsize=(8.0, 4.2))
     ax = fig.add_subplot()
-    mesh = ax.pcolormesh(phi, np.degrees(theta), h.T * UM, shading="auto", cmap="viridis_r")
+    if results.film_thickness is None or results.film_angles is None:
+        ax.text(0.5, 0.5, "no film thickness field in this result", ha="center")
+        return fig
+    h, theta = results.film_thickness, np.degrees(results.film_angles)
+    phi = results.cycle.crank_angle_deg
+    mesh = ax.pcolormesh(phi, theta, h.T * UM, shading="auto", cmap="viridis_r")
     fig.colorbar(mesh, ax=ax, label="film thickness h [µm]")
-    h_c = _contact_threshold(results)
-    if h_c is not None and h.min() <= h_c * 1.5:
-        ax.contour(phi, np.degrees(theta), h.T * UM, levels=[h_c * UM], colors="C3",
-                   linewidths=0.8)
+    h_c = _rigid_threshold(results)
+    if h_c and h.min() <= h_c * 1.5:
+        ax.contour(phi, theta, h.T * UM, levels=[h_c * UM], colors="C3", linewidths=0.8)
         ax.plot([], [], color="C3", lw=0.8, label=f"h = h_c = {h_c * UM:.2g} µm (contact)")
     ax.plot(phi, np.degrees(np.mod(results.cycle.h_min_angle_shell, 2 * np.pi)), ".",
             color="w", ms=1.5, label="θ of h_min")
@@ -53,20 +50,24 @@ def plot_film_thickness_map(results: RunResults) -> Figure:
     ax.set_xlabel("crank angle φ [deg]")
     ax.set_ylabel("shell angle θ [deg] (film frame)")
     ax.set_yticks(np.arange(0, 361, 90))
-    ax.set_title("Film thickness over the shell and the cycle (rigid bore)", fontsize=10)
+    ax.set_title(f"Film thickness over the shell and the cycle ({_which_bore(results)})",
+                 fontsize=10)
     return fig
 
 
 def plot_min_film_envelope(results: RunResults) -> Figure:
     """min over the cycle of h(θ, φ) [µm] against shell angle θ [deg], with the crank angle
     where each shell point sees its thinnest film."""
-    theta, h = film_thickness_over_cycle(results)
-    envelope, where = h.min(axis=0), results.cycle.crank_angle_deg[h.argmin(axis=0)]
     fig = Figure(figsize=(8.0, 5.0))
     top, bottom = fig.subplots(2, 1, sharex=True)
-    top.plot(np.degrees(theta), envelope * UM, color="C0", label="min over the cycle")
-    h_c = _contact_threshold(results)
-    if h_c is not None:
+    envelope = results.film_envelope()
+    if envelope is None:
+        top.text(0.5, 0.5, "no film thickness field in this result", ha="center")
+        return fig
+    theta, smallest, where = envelope
+    top.plot(np.degrees(theta), smallest * UM, color="C0", label="min over the cycle")
+    h_c = _rigid_threshold(results)
+    if h_c:
         top.axhline(h_c * UM, color="C3", ls="--", lw=0.8, label=f"h_c = {h_c * UM:.2g} µm")
     top.set_ylabel("smallest film h [µm]")
     top.set_ylim(bottom=0.0)
@@ -77,5 +78,6 @@ def plot_min_film_envelope(results: RunResults) -> Figure:
     bottom.set_xticks(np.arange(0, 361, 45))
     for ax in (top, bottom):
         ax.grid(True, lw=0.3)
-    fig.suptitle("Shell envelope of minimum film thickness", fontsize=10)
+    fig.suptitle(f"Shell envelope of minimum film thickness ({_which_bore(results)})",
+                 fontsize=10)
     return fig

@@ -82,18 +82,20 @@ def plot_impacts(results: MechanismResults) -> Figure:
 
 
 def plot_sweep_map(sweep: SweepResults) -> Figure:
-    """Max impact velocity of each joint and the ratio κ over speed × load; best marked."""
+    """Max impact velocity of each joint and the worn joint's excess Δv over speed × load;
+    the most informative mode marked, with the joint that drives it."""
     figure = Figure(figsize=(14.0, 4.4), layout="constrained")
     axes = figure.subplots(1, 3)
     panels = [(sweep.max_velocity[0], "max impact velocity, big end [m/s]"),
               (sweep.max_velocity[1], "max impact velocity, small end [m/s]"),
-              (sweep.ratio, f"κ = v({JOINT_NAMES[sweep.worn_joint]}) / v(other) [-]")]
+              (sweep.excess, f"Δv = v({JOINT_NAMES[sweep.worn_joint]}) − v(other) [m/s]")]
     best = sweep.best()
     for ax, (values, title) in zip(axes, panels, strict=True):
         points = ax.scatter(sweep.speed_rpm, sweep.load_scale, c=values, s=160, marker="s",
                             cmap="viridis")
         figure.colorbar(points, ax=ax)
-        ax.plot(best["speed_rpm"], best["load_scale"], "r*", ms=14, label="most informative")
+        ax.plot(best["speed_rpm"], best["load_scale"], "r*", ms=14,
+                label=f"most informative (driven by the {best['driven_by'].replace('_', ' ')})")
         ax.set_title(title, fontsize=9)
         ax.set_xlabel("crank speed [rpm]")
         ax.set_ylabel("load (gas pressure scale) [-]")

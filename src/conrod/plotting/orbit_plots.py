@@ -21,18 +21,16 @@ LABEL_EVERY_DEG = 60.0
 
 
 def plot_orbit(results: RunResults) -> Figure:
-    """Orbit (x, y) [µm] in the clearance circle, with the contact circle c − h_c, the load
-    direction at the peak load, and crank-angle labels that do not overlap."""
+    """Orbit (x, y) [µm] in the clearance circle, with the orbit's contact circle (c − h_c;
+    on a deforming bore widened by one clearance, said in the legend and the title), the
+    load direction at the peak load, and crank-angle labels that do not overlap."""
     cycle, c = results.cycle, results.clearance
     fig = Figure(figsize=(6.4, 6.4))
     ax = fig.add_subplot()
     circle = np.linspace(0.0, 2.0 * np.pi, 361)
-    ax.plot(c * UM * np.cos(circle), c * UM * np.sin(circle), "k-", lw=1.0, label="clearance c")
-    h_c = (results.settings or {}).get("contact_film_thickness")
-    if h_c:
-        radius = (c - h_c) * UM
-        ax.plot(radius * np.cos(circle), radius * np.sin(circle), ":", color="C3", lw=0.9,
-                label=f"contact circle c − h_c (h_c = {h_c * UM:.2g} µm)")
+    ax.plot(c * UM * np.cos(circle), c * UM * np.sin(circle), "k-", lw=1.0,
+            label="clearance c (rigid bore)")
+    reach = _contact_circle(ax, results, circle)
     if results.previous_cycle_eccentricity is not None:
         prev = results.previous_cycle_eccentricity * UM
         ax.plot(prev[0], prev[1], "--", color="0.6", lw=0.8, label="previous cycle")
@@ -43,18 +41,38 @@ def plot_orbit(results: RunResults) -> Figure:
     _load_arrow(ax, cycle, c * UM)
     _angle_labels(ax, cycle, x, y, c * UM)
     ax.set_aspect("equal")
-    ax.set_xlim(-1.35 * c * UM, 1.35 * c * UM)
-    ax.set_ylim(-1.35 * c * UM, 1.35 * c * UM)
+    limit = max(1.35 * c, 1.1 * reach, 1.1 * float(np.max(np.hypot(x, y))) / UM) * UM
+    ax.set_xlim(-limit, limit)
+    ax.set_ylim(-limit, limit)
     ax.set_xlabel("e_x [µm] (film frame)")
     ax.set_ylabel("e_y [µm]")
     s = results.summary
     title = f"Journal-centre orbit — {s.film_model}, {s.cycles} cycles"
+    if results.contact_circle_widened:
+        title += "\ndeforming bore: the journal may pass the rigid clearance circle"
     if not s.periodic:
         title += f"\nNOT PERIODIC: error {s.periodicity_error:.2g}"
     ax.set_title(title, color="C3" if not s.periodic else "k", fontsize=10)
     ax.legend(loc="lower left", fontsize=6.5, bbox_to_anchor=(0.0, 1.06), ncols=2,
               frameon=False)
     return fig
+
+
+def _contact_circle(ax, results: RunResults, circle: np.ndarray) -> float:
+    """Draw the orbit's contact circle; return its radius [m] (the clearance without one)."""
+    radius, h_c = results.contact_radius, results.contact_threshold or 0.0
+    if radius is None:
+        radius = results.clearance - h_c
+    if radius <= 0.0 or (h_c == 0.0 and not results.contact_circle_widened):
+        return results.clearance  # the clearance circle itself
+    if results.contact_circle_widened:
+        label = (f"contact circle of the deforming bore, 2c − h_c = {radius * UM:.3g} µm: the "
+                 "bore gives way, the deformed film stops the journal")
+    else:
+        label = f"contact circle c − h_c (h_c = {h_c * UM:.2g} µm)"
+    ax.plot(radius * UM * np.cos(circle), radius * UM * np.sin(circle), ":", color="C3",
+            lw=0.9, label=label)
+    return radius
 
 
 def _load_arrow(ax, cycle, radius: float) -> None:

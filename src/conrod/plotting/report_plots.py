@@ -58,10 +58,18 @@ def load_diagram_figure(cycle) -> Figure:
     return fig
 
 
+def _column(cycle, name: str):
+    """A cycle.csv column by its name, or by the name older conrod versions wrote (without
+    the unit suffix)."""
+    if name in cycle:
+        return cycle[name]
+    return cycle[name.removesuffix("_m").removesuffix("_1")]
+
+
 def orbit_from_table(cycle) -> Figure:
     """Journal-centre orbit [µm] in the clearance circle (c = |e|/ε from the table)."""
-    x, y = cycle["eccentricity_x"] * UM, cycle["eccentricity_y"] * UM
-    eps = cycle["eccentricity_ratio"].to_numpy()
+    x, y = _column(cycle, "eccentricity_x_m") * UM, _column(cycle, "eccentricity_y_m") * UM
+    eps = _column(cycle, "eccentricity_ratio_1").to_numpy()
     radius = np.hypot(x, y).to_numpy()
     usable = eps > 1e-6
     fig = Figure(figsize=(5.6, 5.6))

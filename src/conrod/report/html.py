@@ -29,6 +29,12 @@ div.wide { overflow-x: auto; }
 p.meta { color: #555; font-size: .85em; }
 caption { caption-side: bottom; text-align: left; font-size: .85em; color: #333; }
 .failed { color: #a00; }
+div.notice { border: 2px solid #b85c00; background: #fff3e0; padding: .4em 1em;
+             margin: .8em 0; }
+div.notice.ok { border-color: #2e7d32; background: #edf7ee; }
+div.notice h3 { margin: .2em 0; font-size: 1.05em; }
+div.notice li { margin: .2em 0; }
+table.headline td:first-child { font-weight: bold; white-space: nowrap; }
 """
 
 
@@ -40,6 +46,7 @@ class Table:
     rows: list[list[str]]
     caption: str = ""
     numeric: tuple[str, ...] = ()
+    css_class: str = ""
 
 
 @dataclass
@@ -52,11 +59,21 @@ class Image:
 
 
 @dataclass
+class Notice:
+    """A box at the top of a section: a title and its items (warnings, say); ``ok`` draws it
+    green (nothing to warn about)."""
+
+    title: str
+    items: list[str]
+    ok: bool = False
+
+
+@dataclass
 class Section:
     """A titled part of the report."""
 
     title: str
-    blocks: list[str | Table | Image] = field(default_factory=list)
+    blocks: list[str | Table | Image | Notice] = field(default_factory=list)
     two_columns: bool = False
 
 
@@ -79,6 +96,8 @@ def _section(section: Section, counter: list[int]) -> str:
     for block in section.blocks:
         if isinstance(block, Table):
             parts.append(_table(block))
+        elif isinstance(block, Notice):
+            parts.append(_notice(block))
         elif isinstance(block, Image):
             counter[0] += 1
             parts.append(_figure(block, counter[0]))
@@ -86,6 +105,13 @@ def _section(section: Section, counter: list[int]) -> str:
             parts.append(f"<p>{html.escape(block)}</p>")
     parts.append("</section>")
     return "".join(parts)
+
+
+def _notice(notice: Notice) -> str:
+    kind = "notice ok" if notice.ok else "notice"
+    items = "".join(f"<li>{html.escape(item)}</li>" for item in notice.items)
+    body = f"<ul>{items}</ul>" if items else ""
+    return f"<div class=\"{kind}\"><h3>{html.escape(notice.title)}</h3>{body}</div>"
 
 
 def _table(table: Table) -> str:
@@ -98,7 +124,9 @@ def _table(table: Table) -> str:
             for column, cell in zip(table.columns, row, strict=True))
         rows.append(f"<tr>{cells}</tr>")
     caption = f"<caption>{html.escape(table.caption)}</caption>" if table.caption else ""
-    return (f"<div class=\"wide\"><table>{caption}<thead><tr>{head}</tr></thead>"
+    kind = f" class=\"{table.css_class}\"" if table.css_class else ""
+    thead = f"<thead><tr>{head}</tr></thead>" if any(table.columns) else ""
+    return (f"<div class=\"wide\"><table{kind}>{caption}{thead}"
             f"<tbody>{''.join(rows)}</tbody></table></div>")
 
 

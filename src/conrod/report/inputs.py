@@ -94,8 +94,10 @@ def flatten(data: dict[str, Any], prefix: str = "") -> dict[str, Any]:
 
 
 def input_rows(case_file: Path | None, data: dict[str, Any] | None = None,
-               swept: tuple[str, ...] = ()) -> list[dict[str, str]]:
-    """Rows (key, value, unit, source) of the case; ``data`` overrides the file's values."""
+               swept: tuple[str, ...] = (), set_keys: tuple[str, ...] = ()
+               ) -> list[dict[str, str]]:
+    """Rows (key, value, unit, source) of the case; ``data`` overrides the file's values;
+    ``swept`` keys are marked as swept, ``set_keys`` as set for the run on top of the file."""
     text = case_file.read_text(encoding="utf-8") if case_file and case_file.is_file() else ""
     if data is None:
         data = tomllib.loads(text) if text else {}
@@ -104,7 +106,9 @@ def input_rows(case_file: Path | None, data: dict[str, Any] | None = None,
     for key, value in flatten(data).items():
         if key in ("title", "source"):
             continue
-        source = "swept (see the variant table)" if key in swept else comments.get(key, "")
+        source = ("swept (see the variant table)" if key in swept else
+                  "set for this run (command line)" if key in set_keys else
+                  comments.get(key, ""))
         rows.append({"key": key, "value": _show(value), "unit": unit_of(key), "source": source})
     return rows
 

@@ -9,11 +9,13 @@ and the figures a folder lacks (sweep variants are written without figures) are 
 from __future__ import annotations
 
 import json
+import tomllib
 from pathlib import Path
 from typing import Any
 
 import pandas as pd
 
+from conrod.report.headline import comparison_section, headline_section, summary_section
 from conrod.report.html import Image, Section, Table
 from conrod.report.inputs import header_notes, input_rows
 
@@ -81,31 +83,31 @@ def figure_catalogue(folder: Path, manifest: dict[str, Any] | None) -> dict[str,
             for p in sorted(folder.glob("*.png"))}
 
 
-def summary_table(summary: dict[str, Any]) -> Table:
-    """Scalar items of summary.json; the unit is in each name (h_min_m: metres)."""
-    rows = [[name, _value(value)] for name, value in summary.items()
-            if not isinstance(value, list | dict)]
-    return Table(["quantity (unit in the name)", "value"], rows,
-                 "summary.json: cycle characteristics and run diagnostics; SI units as "
-                 "named (_m metres, _Pa pascals, _W watts, _m3_s m³/s, _C °C, _deg degrees).",
-                 numeric=("value",))
-
-
 def inputs_section(case_file: Path | None, case_data: dict | None,
-                   swept: tuple[str, ...] = ()) -> Section:
-    """The case's inputs with units and the sources its comments cite."""
+                   swept: tuple[str, ...] = (), set_values: dict[str, Any] | None = None,
+                   source_name: str = "") -> Section:
+    """The case's inputs with units and the sources its comments cite; ``set_values``
+    (dotted key → value) are the values the run set on top of the file; ``source_name``:
+    the name of the file the result folder's copy ``case_file`` was taken from."""
     section = Section("Case inputs")
     if case_file is None and case_data is None:
-        section.blocks.append("The case file is not known for this folder; give it with "
-                              "--case to list the inputs.")
+        section.blocks.append("The case file is not known for this folder (a result folder "
+                              "written by an older conrod); give it with --case to list the "
+                              "inputs.")
         return section
     if case_file is not None:
-        section.blocks.append(f"Case file: {case_file}")
+        section.blocks.append(f"Case file: {source_name} (its copy in the result folder: "
+                              f"{case_file.name})" if source_name else
+                              f"Case file: {case_file.name}")
         notes = header_notes(case_file.read_text(encoding="utf-8")) if case_file.is_file() \
             else []
         if notes:
             section.blocks.append(" ".join(notes))
-    rows = input_rows(case_file, case_data, swept)
+    if set_values:
+        section.blocks.append("Set for this run on top of the case file (command-line "
+                              "options): " + ", ".join(f"{k} = {_value(v)}"
+                                                       for k, v in set_values.items()) + ".")
+    rows = input_rows(case_file, case_data, swept, tuple(set_values or ()))
     section.blocks.append(Table(["key", "value", "unit", "source"],
                                 [[r["key"], r["value"], r["unit"], r["source"]] for r in rows],
                                 "Every key of the case; units from the case-file schema, "
@@ -115,7 +117,8 @@ def inputs_section(case_file: Path | None, case_data: dict | None,
 
 
 def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list[Section]]:
-    """(title, sections) of the report of one run folder."""
+    """(title, sections) of the report of one run folder: headline with the warnings box,
+    the rigid-vs-elastic comparison, the cycle summary, the inputs, then the figures."""
     from conrod.plotting import report_plots as plots
 
     manifest = read_manifest(folder)
@@ -124,12 +127,25 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
     case_data = record.get("case") or None
     if case_file is None and record.get("case_file"):
         case_file = Path(record["case_file"])
+    recorded = (manifest or {}).get("case") if case_file is None and case_data is None \
+        else None
+    set_values = None
+    if isinstance(recorded, dict) and (folder / str(recorded.get("file", ""))).is_file():
+        case_file = folder / recorded["file"]
+        set_values = recorded.get("set") or None
+        case_data = _recorded_data(case_file, recorded)
     cycle = _csv(folder / "cycle.csv")
-    sections = [Section("Summary", [summary_table(summary)])] if summary else []
+    sections = [headline_section(summary)] if summary else []
     if record.get("axes"):
         sections[0].blocks.insert(0, "Sweep variant: " + ", ".join(
             f"{k} = {v}" for k, v in record["axes"].items()))
-    sections.append(inputs_section(case_file, case_data, tuple(record.get("axes", {}))))
+    comparison = comparison_section(summary)
+    if comparison is not None:
+        sections.append(comparison)
+    if summary:
+        sections.append(summary_section(summary))
+    sections.append(inputs_section(case_file, case_data, tuple(record.get("axes", {})),
+                                   set_values, (recorded or {}).get("source_name", "")))
     engine_figures = engine_load_images(case_file, case_data)
     if engine_figures:
         sections.append(Section("Engine load diagrams", engine_figures))
@@ -139,17 +155,7 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
             "polar diagram (left, labels give the crank angle in degrees) and magnitude "
             "against crank angle in degrees (right).", plots.png_bytes(
                 plots.load_diagram_figure(cycle)))]))
-    catalogue = figure_catalogue(folder, manifest)
-    for title, files, drawing in SECTIONS:
-        images = [_file_image(folder, name, catalogue.pop(name)) for name in files
-                  if name in catalogue]
-        if not images and cycle is not None:
-            images = [_drawn(drawing, folder, cycle)]
-        if images:
-            sections.append(Section(title, images))
-    if catalogue:
-        sections.append(Section("Further figures", [_file_image(folder, name, entry)
-                                                    for name, entry in catalogue.items()]))
+    sections += _figure_sections(folder, manifest, cycle)
     if manifest is not None and manifest.get("tables"):
         sections.append(Section("Result files", [Table(
             ["file", "title", "caption"],
@@ -157,6 +163,47 @@ def run_sections(folder: Path, case_file: Path | None = None) -> tuple[str, list
             "Tables written into the results folder.")]))
     title = (case_data or {}).get("title") or f"conrod results: {folder.name}"
     return title, sections
+
+
+def _figure_sections(folder: Path, manifest: dict | None, cycle) -> list[Section]:
+    """The figure sections in their order, drawn from cycle.csv where the folder has none
+    (a sweep variant written without figures); contact and wear only where the journal
+    touched the shell."""
+    catalogue = figure_catalogue(folder, manifest)
+    sections = []
+    for title, files, drawing in SECTIONS:
+        images = [_file_image(folder, name, catalogue.pop(name)) for name in files
+                  if name in catalogue]
+        if not images and cycle is not None and (drawing != "contact" or _touches(cycle)):
+            images = [_drawn(drawing, folder, cycle)]
+        if images:
+            sections.append(Section(title, images))
+    if catalogue:
+        sections.append(Section("Further figures", [_file_image(folder, name, entry)
+                                                    for name, entry in catalogue.items()]))
+    return sections
+
+
+def _touches(cycle) -> bool:
+    return "contact_force_N" in cycle and float(cycle["contact_force_N"].max()) > 0.0
+
+
+def _recorded_data(case_file: Path, recorded: dict) -> dict | None:
+    """The recorded case's values: the file with the values set on top (dotted keys)."""
+    try:
+        data = tomllib.loads(case_file.read_text(encoding="utf-8"))
+    except (OSError, UnicodeError, tomllib.TOMLDecodeError):
+        return None
+    for key, value in (recorded.get("set") or {}).items():
+        *sections, name = key.split(".")
+        target = data
+        for part in sections:
+            target = target.setdefault(part, {})
+        target[name] = value
+    for key, name in (recorded.get("tables") or {}).items():
+        section, field = key.split(".", 1)
+        data.setdefault(section, {})[field] = name
+    return data
 
 
 def engine_load_images(case_file: Path | None, case_data: dict | None) -> list[Image]:
@@ -216,11 +263,9 @@ def _drawn(drawing: str, folder: Path, cycle: pd.DataFrame) -> Image:
                      "side and supply flow in l/min (bottom) against crank angle in degrees.",
                      plots.png_bytes(plots.friction_flow_from_table(cycle)))
     journal, shell = _csv(folder / "wear_journal.csv"), _csv(folder / "wear_shell.csv")
-    quiet = float(cycle["contact_force_N"].max()) <= 0.0
     return Image("Contact force and wear", "Hard-contact force in kN against crank angle in "
                  "degrees (top) and wear per cycle in nm on journal and shell against the "
-                 "surface angle in degrees (bottom)" + (
-                     "; the journal does not touch the shell in this run." if quiet else "."),
+                 "surface angle in degrees (bottom).",
                  plots.png_bytes(plots.contact_wear_from_tables(cycle, journal, shell)))
 
 

@@ -7,9 +7,9 @@ import numpy as np
 
 CYCLE_COLUMNS = {
     "crank_angle_deg": ("crank_angle", np.degrees),
-    "eccentricity_ratio": ("eccentricity_ratio", None),
-    "eccentricity_x": ("eccentricity_x", None),
-    "eccentricity_y": ("eccentricity_y", None),
+    "eccentricity_ratio_1": ("eccentricity_ratio", None),
+    "eccentricity_x_m": ("eccentricity_x", None),
+    "eccentricity_y_m": ("eccentricity_y", None),
     "velocity_x_m_s": ("velocity_x", None),
     "velocity_y_m_s": ("velocity_y", None),
     "attitude_angle_deg": ("attitude_angle", np.degrees),
@@ -33,12 +33,10 @@ CYCLE_COLUMNS = {
     "sliding_speed_m_s": ("sliding_speed", None),
     "in_contact": ("in_contact", None),
 }
-"""cycle.csv column → (CycleResults field, conversion). eccentricity_x/_y are in [m]."""
-
-DATAFRAME_NAMES = {"eccentricity_x": "eccentricity_x_m", "eccentricity_y": "eccentricity_y_m",
-                   "eccentricity_ratio": "eccentricity_ratio_1"}
-"""cycle.csv columns renamed in :meth:`CycleResults.to_dataframe` so that every name ends
-in its unit (``_1``: dimensionless)."""
+"""cycle.csv column → (CycleResults field, conversion): the column names of ``cycle.csv``
+and of :meth:`CycleResults.to_dataframe` alike. Every name ends in its unit (``_m``,
+``_Pa``, ``_deg``, ``_m3_s``, ...; ``_1`` for a dimensionless ratio, ``eccentricity_ratio_1``)
+but the flag ``in_contact`` (1 where the journal touches the shell)."""
 
 AXIAL_COLUMNS = {
     "tilt_x_rad": ("tilt_x", None),

@@ -82,18 +82,18 @@ class CycleResults:
         return np.degrees(self.crank_angle)
 
     def to_dataframe(self) -> Any:
-        """The cycle as a pandas DataFrame, one row per output angle, the columns of
-        ``cycle.csv`` with the unit in each name (``h_min_m``, ``p_max_Pa``,
-        ``crank_angle_deg``, ...; angles in degrees)."""
+        """The cycle as a pandas DataFrame, one row per output angle, with the columns and
+        names of ``cycle.csv`` (:data:`conrod.results.columns.CYCLE_COLUMNS`: the unit in
+        each name, ``h_min_m``, ``p_max_Pa``, ``crank_angle_deg``, ...; angles in degrees;
+        ``in_contact`` as booleans where ``cycle.csv`` writes 0/1)."""
         import pandas as pd
 
-        from conrod.results.columns import CYCLE_COLUMNS, DATAFRAME_NAMES, axial_table
+        from conrod.results.columns import CYCLE_COLUMNS, axial_table
 
         columns = {}
         for column, (name, convert) in CYCLE_COLUMNS.items():
             values = np.asarray(getattr(self, name))
-            columns[DATAFRAME_NAMES.get(column, column)] = (
-                convert(values) if convert is not None else values)
+            columns[column] = convert(values) if convert is not None else values
         columns.update(axial_table(self.axial))
         return pd.DataFrame(columns)
 
@@ -144,23 +144,61 @@ class RunSummary:
     """Human-readable warnings (non-periodic orbit, ...) [-]."""
     mean_contact_friction_power: float = 0.0
     """Cycle mean dry-friction power of hard contact μ_dry P_c |V_slide| [W]."""
+    mean_boundary_friction_power: float = 0.0
+    """Cycle mean boundary friction power of the asperities (Greenwood–Tripp contact)
+    μ_dry F_a |V_slide| [W]."""
+    film_h_min: float | None = None
+    """Smallest h_min over the angles outside hard contact, the smallest FILM thickness [m]
+    (None: the journal touches the shell over the whole cycle). Where the journal touches,
+    the gap is the contact threshold h_c, not a film."""
+    film_h_min_crank_angle: float | None = None
+    """Crank angle of ``film_h_min`` [rad]."""
+    roughness: float | None = None
+    """Combined roughness σ of journal and shell ``[contact] roughness`` [m]."""
+    grid_error: Any = None
+    """Grid-error estimate of h_min and p_max (:class:`conrod.results.grid_error.GridError`),
+    None for a film without a grid or when not estimated [-]."""
 
     @property
     def mean_total_friction_power(self) -> float:
-        """Film plus contact friction power, the heat the oil carries away [W]."""
-        return self.mean_friction_power + self.mean_contact_friction_power
+        """Film, hard-contact and boundary (asperity) friction power, the heat the oil
+        carries away [W]."""
+        return (self.mean_friction_power + self.mean_contact_friction_power
+                + self.mean_boundary_friction_power)
+
+    @property
+    def film_thickness_ratio(self) -> float | None:
+        """λ = film h_min / σ, the film thickness over the combined roughness [-] (None
+        without a film h_min or a roughness); below 3 the asperities touch (mixed
+        lubrication), below 1 they carry much of the load."""
+        if self.film_h_min is None or not self.roughness:
+            return None
+        return self.film_h_min / self.roughness
+
+    @property
+    def exit_code(self) -> int:
+        """What ``conrod run`` exits with for this result: 3 not periodic, 4 with warnings,
+        0 otherwise (``--accept-warnings`` turns a 3 or 4 into 0) [-]."""
+        if not self.periodic:
+            return 3
+        return 4 if self.warnings else 0
 
     def as_json_items(self) -> dict[str, Any]:
         """The summary.json items (engineering-friendly names with units in the key)."""
         return {
             "h_min_m": self.h_min,
             "h_min_crank_angle_deg": float(np.degrees(self.h_min_crank_angle)),
+            "film_h_min_m": self.film_h_min,
+            "film_h_min_crank_angle_deg": (None if self.film_h_min_crank_angle is None
+                                           else float(np.degrees(self.film_h_min_crank_angle))),
+            "film_thickness_ratio": self.film_thickness_ratio,
             "p_max_Pa": self.p_max,
             "p_max_crank_angle_deg": float(np.degrees(self.p_max_crank_angle)),
             "mean_h_min_m": self.mean_h_min,
             "mean_p_max_Pa": self.mean_p_max,
             "mean_friction_power_W": self.mean_friction_power,
             "mean_contact_friction_power_W": self.mean_contact_friction_power,
+            "mean_boundary_friction_power_W": self.mean_boundary_friction_power,
             "mean_total_friction_power_W": self.mean_total_friction_power,
             "mean_side_flow_m3_s": self.mean_side_flow,
             "mean_supply_flow_m3_s": self.mean_supply_flow,
@@ -175,6 +213,9 @@ class RunSummary:
             "thermal_iterations": self.thermal_iterations,
             "max_orbit_contact_force_N": self.max_contact_force,
             "warnings": list(self.warnings),
+            "exit_code": self.exit_code,
+            **({"grid_error": self.grid_error.as_json_items()}
+               if self.grid_error is not None else {}),
         }
 
 
@@ -221,3 +262,42 @@ class RunResults:
     headline_extra: dict[str, str] | None = None
     """Further headline lines (label → text) added by other analyses, e.g. an elastic
     comparison; printed after the standard lines [-]."""
+    film_thickness: np.ndarray | None = None
+    """Film thickness h(φ, θ) at each output angle over the shell angles ``film_angles``
+    (n_out, n_θ) [m]: on the rigid bore c − e_x cos θ − e_y sin θ, on a deforming bore
+    with the bore displacement added (the gap the film sees)."""
+    film_angles: np.ndarray | None = None
+    """Shell angles θ of ``film_thickness``, film frame, 0 … 2π with the closing point [rad]."""
+    contact_radius: float | None = None
+    """Radius of the orbit's contact circle, on which the journal centre is stopped [m]:
+    c − h_c on a rigid bore; on a deforming bore widened by one clearance (2c − h_c: the
+    bore gives way, the deformed film stops the journal)."""
+    case_record: Any = None
+    """The case as run (:class:`conrod.results.case_record.CaseRecord`): the case file,
+    the tables it reads, the values set on top of it; written into the result folder."""
+
+    def film_envelope(self) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """(shell angles θ [rad], the smallest film thickness each of them sees over the
+        cycle min_φ h(φ, θ) [m], the crank angle where it does [deg]) from
+        ``film_thickness``; None without it."""
+        if self.film_thickness is None or self.film_angles is None:
+            return None
+        rows = np.argmin(self.film_thickness, axis=0)
+        return (self.film_angles, self.film_thickness.min(axis=0),
+                self.cycle.crank_angle_deg[rows])
+
+    @property
+    def contact_threshold(self) -> float | None:
+        """h_c, the film thickness at which the journal touches the rigid contact circle
+        [m] (None when not set); on a deforming bore the journal is stopped by the deformed
+        film, the circle is widened (``contact_radius``)."""
+        value = (self.settings or {}).get("contact_film_thickness")
+        return None if value is None else float(value)
+
+    @property
+    def contact_circle_widened(self) -> bool:
+        """True when the orbit's contact circle lies beyond the rigid one, c − h_c: the bore
+        deforms and the deformed film stops the journal [-]."""
+        if self.contact_radius is None:
+            return False
+        return self.contact_radius > self.clearance - (self.contact_threshold or 0.0) + 1e-15

@@ -5,7 +5,7 @@ own inertia and a run's film pressure. Their tables and figures are registered i
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -38,6 +38,7 @@ class HousingResults:
     bore : tuple of BoreDeformation  Bore under the test load in four directions.
     inertia : tuple of BoreDeformation  Bore under the rod's own inertia at TDC and BDC
         (empty without ``[engine]``).
+    case_record : CaseRecord or None  The case (:mod:`conrod.results.case_record`).
     """
 
     housing: Any
@@ -45,6 +46,7 @@ class HousingResults:
     test_load: float
     bore: tuple[BoreDeformation, ...]
     inertia: tuple[BoreDeformation, ...] = ()
+    case_record: Any = None
 
     @property
     def has_mesh(self) -> bool:
@@ -60,8 +62,13 @@ class StressResults:
     schemes : dict  Crank angle [deg] → :func:`conrod.housing.stresses.compare_schemes`
         (``pressure`` and ``cosine`` StressFields, resultant [N], ratios [-]).
     pressure_source : str  Which film pressure loads the rod, in words.
+    run : dict  The run that pressure comes from: film model, bore, grid, its h_min [m],
+        p_max [Pa] and warnings.
+    case_record : CaseRecord or None  The case (:mod:`conrod.results.case_record`).
     """
 
     structure: Any
     schemes: dict[float, dict]
     pressure_source: str
+    run: dict = field(default_factory=dict)
+    case_record: Any = None

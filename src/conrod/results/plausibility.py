@@ -16,8 +16,10 @@ Orbit (``conrod run``):
   :data:`PENETRATION_SHARE` of it → warning; on a deforming bore beyond the orbit's
   contact circle (widened by one clearance: the bore gives way, the deformed film is what
   stops the journal) by more than that share;
-* minimum film thickness below the combined roughness σ while hard contact is not active
-  (the asperities would touch: mixed lubrication not modelled) → warning;
+* minimum film thickness below the combined roughness σ (h/σ < 1) while hard contact is
+  not active → warning (hard contact alone: the asperities would touch, mixed lubrication
+  not modelled; Greenwood–Tripp: boundary lubrication, the answer rests on the asperity
+  model); h/σ < 3 (mixed lubrication) is stated in the headline;
 * heat-balance temperature above ``lubricant.max_temperature`` → warning, above
   :data:`TEMPERATURE_LIMIT` → error (no oil film exists there);
 * peak film pressure above :data:`FILM_PRESSURE_LIMIT` → warning (a rigid bore under a
@@ -166,16 +168,27 @@ def _film_pressure_warnings(cycle: Any) -> list[str]:
 
 
 def _roughness_warnings(cycle: Any, case: Any) -> list[str]:
+    """h/σ below 1 outside hard contact: the film is thinner than the combined roughness.
+    Under hard contact alone the asperities' contact is not modelled (the advice names the
+    model that is); under Greenwood–Tripp they carry part of the load, boundary lubrication,
+    where the answer rests on the asperity model more than on the film."""
     contact = getattr(case, "contact", None)
-    if contact is None or contact.model != "hard":
+    if contact is None or not contact.roughness:
         return []
-    thin = (cycle.h_min < contact.roughness) & ~np.asarray(cycle.in_contact, dtype=bool)
+    free = ~np.asarray(cycle.in_contact, dtype=bool)
+    thin = (cycle.h_min < contact.roughness) & free
     if not np.any(thin):
         return []
-    i = int(np.flatnonzero(thin)[0])
-    return [f"film thickness {cycle.h_min[i] * 1e6:.3g} µm at {_angle(cycle.crank_angle, i)} "
-            f"is below the combined roughness {contact.roughness * 1e6:.3g} µm without "
-            "contact: asperities touch (consider [contact] model = \"greenwood_tripp\")"]
+    i = int(np.flatnonzero(thin)[np.argmin(cycle.h_min[thin])])
+    ratio = float(cycle.h_min[i]) / contact.roughness
+    text = (f"film thickness {cycle.h_min[i] * 1e6:.3g} µm at {_angle(cycle.crank_angle, i)} "
+            f"is below the combined roughness {contact.roughness * 1e6:.3g} µm (h/σ = "
+            f"{ratio:.2g} < 1)")
+    if contact.model == "hard":
+        return [text + " without contact: asperities touch (consider [contact] model = "
+                "\"greenwood_tripp\")"]
+    return [text + ": boundary lubrication, the asperities carry part of the load and the "
+            "result rests on the asperity-contact model"]
 
 
 def _mechanism_load_scale(results: Any, mechanism: Any) -> float:

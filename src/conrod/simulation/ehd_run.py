@@ -10,12 +10,13 @@ import numpy as np
 
 from conrod import registry
 from conrod.contact.analysis import analyse_contact
-from conrod.ehd.cycle import elastic_cycle
+from conrod.ehd.cycle import displacement_split, elastic_cycle
 from conrod.errors import CaseError
 from conrod.film.capabilities import HasContentStep
 from conrod.orbit.implicit_step import needs_journal_step
 from conrod.orbit.integrators import declared, resolved
 from conrod.results.ehd import ElasticRunResults
+from conrod.results.summary import film_minimum
 
 
 def check_integrator(simulation) -> None:
@@ -61,13 +62,23 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
         integrator = registry.integrator(integrator)
     integrator = resolved(integrator, problem)  # an automatic integrator: the one it chose
     name = integrator.name
+    rows = stress_rows(results.cycle, simulation.case)
     diagnostics = elastic_cycle(problem, results.cycle, orbit.last.film_memory,
-                                massless=not declared(integrator, "with_mass"))
+                                massless=not declared(integrator, "with_mass"),
+                                pressure_rows=tuple(rows.values()))
     film = problem.film
+    angles, thickness = diagnostics.film_thickness(results.cycle, problem.clearance)
+    results = dataclasses.replace(results, film_thickness=thickness, film_angles=angles)
     if film.carries_asperity():  # contact columns from the asperity on the deformed film
         results = dataclasses.replace(results, contact=analyse_contact(
             simulation.case, results.cycle, diagnostics.columns.get(
                 "asperity_force_N", np.zeros(len(results.cycle.crank_angle)))))
+    thinnest = film_minimum(results.cycle)
+    split = None if thinnest is None else displacement_split(
+        film, results.cycle, diagnostics.deformation,
+        int(np.argmin(np.abs(results.cycle.crank_angle - thinnest[1]))))
+    fields = {angle: diagnostics.pressures[row] for angle, row in rows.items()}
+    stresses = _peak_load_stresses(film.housing, results, diagnostics)
     elastic_seconds = time.perf_counter() - start
     companion = simulation.rigid_companion(integrator=name)  # same journal model as above
     rigid = None
@@ -94,8 +105,33 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
         deformation=diagnostics.deformation, bore_angles=diagnostics.angles,
         housing=film.housing, rigid=rigid, info=info,
         peak_load_index=diagnostics.peak_load_index,
-        peak_load_pressure=diagnostics.peak_load_pressure,
-        deformation_field=diagnostics.field)
+        peak_load_pressure=diagnostics.peak_load_pressure, pressure_fields=fields,
+        stresses=stresses, bore_displacement=split, deformation_field=diagnostics.field)
+
+
+def stress_rows(cycle, case) -> dict[float, int]:
+    """Crank angle [deg] → output row of the film pressure fields an elastic run keeps for
+    the rod stresses: the largest load and ``[housing] stress_angles`` (default 360°, the
+    gas-exchange TDC), each at the nearest output angle."""
+    degrees = np.asarray(cycle.crank_angle_deg)
+    peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
+    rows = {float(degrees[peak]): peak}
+    wanted = case.housing.stress_angles or [360.0]
+    length = float(degrees[-1] - degrees[0] + np.median(np.diff(degrees)))
+    for angle in wanted:
+        row = int(np.argmin(np.abs((degrees - angle + 0.5 * length) % length - 0.5 * length)))
+        rows.setdefault(float(degrees[row]), row)
+    return rows
+
+
+def _peak_load_stresses(housing, results, diagnostics) -> dict | None:
+    """Rod stresses at the largest load under the elastic film pressure and a cosine load
+    of the same resultant; None without a finite-element rod or a pressure field."""
+    if diagnostics.peak_load_pressure is None or not housing.structure_factory:
+        return None
+    theta, z = results.pressure_grid
+    angle = float(results.cycle.crank_angle[diagnostics.peak_load_index])
+    return housing.stresses(diagnostics.peak_load_pressure, z, angle, theta)
 
 
 def _staged(progress, prefix: str):

@@ -24,24 +24,31 @@ from typing import Any
 import numpy as np
 
 from conrod.cases.case import Case
-from conrod.contact.analysis import analyse_contact
+from conrod.contact.analysis import analyse_contact, asperity_friction_power
 from conrod.contact.asperity import kernel_parameters
 from conrod.errors import CaseError
-from conrod.film.base import BearingGeometry, FilmModel, FilmState
+from conrod.film.base import BearingGeometry, FilmModel
 from conrod.film.capabilities import SupportsDeformation
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
 from conrod.loads.oil_feed import feed_schedule, wear_diagram_angle
-from conrod.loads.tilt import cycle_tilt, journal_tilt
+from conrod.loads.tilt import journal_tilt
 from conrod.orbit.characteristics import cycle_characteristics
-from conrod.orbit.heat_balance import effective_temperature, relaxed_update
+from conrod.orbit.heat_balance import relaxed_update
 from conrod.orbit.integrators import Integrator
 from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
 from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
 from conrod.results.plausibility import check_run
-from conrod.results.summary import contact_friction_power, contact_warnings, summarise
+from conrod.results.summary import contact_warnings, summarise
+from conrod.simulation.orbit_outputs import (
+    film_asperity_force,
+    heat_balance_temperature,
+    pressure_map,
+    previous_cycle,
+    rigid_film_thickness,
+)
 
 DEFAULT_TABLE_LOAD_MASS = 1.0
 """Moving mass for table loads when ``[solver] mass_x/mass_y`` are not given [kg]."""
@@ -187,6 +194,13 @@ class Simulation:
         film = self._film if self._film is not None else self._named_film()
         return self.housing() is not None and isinstance(film, SupportsDeformation)
 
+    def case_record(self) -> Any:
+        """What a result folder records of the case as run
+        (:func:`conrod.simulation.recording.record_case`)."""
+        from conrod.simulation.recording import record_case
+
+        return record_case(self.case, self.solver)
+
     def integrator(self) -> Integrator | str:
         """The orbit integrator: the object given, else the name of ``[solver]``."""
         return self._integrator if self._integrator is not None else self.solver.integrator
@@ -250,12 +264,19 @@ class Simulation:
         orbit, problem, cycle = thermal.orbit, thermal.problem, thermal.cycle
         summary = summarise(cycle, orbit, problem, self.solver, thermal.temperature,
                             thermal.cycles, thermal.iterations, _name(self.integrator(), problem))
-        pressure, grid = _pressure_map(problem, cycle, orbit.last.film_memory)
+        contact = analyse_contact(self.case, cycle, thermal.asperity_force)
+        boundary = contact.boundary_friction_power
+        summary = dataclasses.replace(
+            summary, roughness=self.case.contact.roughness,
+            mean_boundary_friction_power=0.0 if boundary is None else float(boundary.mean()))
+        pressure, grid = pressure_map(problem, cycle, orbit.last.film_memory)
+        angles, thickness = rigid_film_thickness(cycle, problem.clearance)
         results = RunResults(
             cycle=cycle, summary=summary, clearance=problem.clearance,
             pressure_at_p_max=pressure, pressure_grid=grid,
-            previous_cycle_eccentricity=_previous(orbit),
-            contact=analyse_contact(self.case, cycle),
+            previous_cycle_eccentricity=previous_cycle(orbit), contact=contact,
+            film_thickness=thickness, film_angles=angles,
+            contact_radius=problem.contact_radius, case_record=self.case_record(),
         )
         warnings = (summary.warnings  # check_run: or ConvergenceError
                     + tuple(check_run(results, self.case, problem.contact_radius))
@@ -291,10 +312,13 @@ class Simulation:
             orbit = self._orbit(current, state, stage, progress)
             cycles += orbit.cycles
             cycle = cycle_characteristics(current, orbit.last)
-            target = _heat_balance_temperature(cycle, lubricant)
+            asperity = film_asperity_force(current, cycle, orbit.last.film_memory)
+            boundary = asperity_friction_power(self.case, cycle, asperity)
+            target = heat_balance_temperature(cycle, lubricant, float(boundary.mean()))
             if (target is None or iteration == iterations
                     or abs(target - temperature) <= s.thermal_tolerance):
-                return ThermalOrbit(orbit, current, cycle, target, cycles, iteration)
+                return ThermalOrbit(orbit, current, cycle, target, cycles, iteration,
+                                    asperity)
             temperature = relaxed_update(temperature, target)
             viscosity = lubricant.viscosity_at(temperature)
             state = orbit.last.end_state
@@ -320,8 +344,8 @@ class Simulation:
 class ThermalOrbit:
     """The converged orbit of the heat balance and what was computed along with it: the
     periodic orbit, its problem (at the converged viscosity), the cycle characteristics,
-    the effective temperature [°C] (None without a heat balance), the cycles integrated and
-    the heat-balance iterations [-]."""
+    the effective temperature [°C] (None without a heat balance), the cycles integrated,
+    the heat-balance iterations [-] and the asperity force of a film that carries it [N]."""
 
     orbit: PeriodicOrbit
     problem: OrbitProblem
@@ -329,6 +353,10 @@ class ThermalOrbit:
     temperature: float | None
     cycles: int
     iterations: int
+    asperity_force: np.ndarray | None = None
+    """Greenwood–Tripp asperity force at each output angle as the film computed it on its
+    own (deformed) gap [N]; None when the film does not carry it (the contact analysis then
+    takes it on the rigid shell)."""
 
 
 def check_oil_feed(geometry: BearingGeometry, film: str) -> None:
@@ -393,43 +421,6 @@ def _solver_with(case: Case, overrides: dict[str, Any]):
     from conrod.cases.solver import SolverSection
 
     return validate_section(SolverSection, {**case.solver.model_dump(), **clean}, "solver")
-
-
-def _heat_balance_temperature(cycle: CycleResults, lubricant) -> float | None:
-    """T_eff [°C] from the mean friction power of film and hard contact and the mean side
-    flow of the cycle."""
-    friction = cycle.friction_power.mean() + contact_friction_power(cycle).mean()
-    return effective_temperature(
-        float(friction), float(cycle.side_flow.mean()),
-        lubricant.supply_temperature, lubricant.density_at(lubricant.supply_temperature),
-        lubricant.specific_heat,
-    )
-
-
-def _pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None = None):
-    """(pressure field p(θ, z) [Pa], grid (θ [rad], z [m])) at the crank angle of the
-    largest p_max, with the film memory sampled there (film fraction ϑ of a
-    mass-conserving film); (None, None) for a film without a pressure field."""
-    i = int(cycle.p_max.argmax())
-    state = FilmState(
-        eccentricity_x=float(cycle.eccentricity_x[i]),
-        eccentricity_y=float(cycle.eccentricity_y[i]),
-        velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
-        journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
-        viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i),
-        journal_feed=problem.journal_feed(float(cycle.crank_angle[i])),
-    )
-    session = problem.session(film_memory[i] if film_memory else None)
-    field = session.accepted(state, with_pressure=True).pressure
-    if field is None:
-        return None, None
-    return field, problem.film.grid()
-
-
-def _previous(orbit: PeriodicOrbit) -> np.ndarray | None:
-    if orbit.previous is None:
-        return None
-    return np.vstack([orbit.previous.x, orbit.previous.y])
 
 
 def _asperity_parameters(case: Case):

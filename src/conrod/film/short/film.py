@@ -264,8 +264,8 @@ class GroovedShortBearingFilm:
 
     Each land of width L_l = (L − g)/2 carries the Ocvirk film with ambient (gauge supply)
     pressure at both of its edges, so forces and torques are twice those of one land; half
-    of the leakage leaves at the outer edges (side flow) and half enters from the groove
-    (supply flow, with the sign convention 'into the film' of :class:`FilmResult`).
+    of each land's leakage leaves at its outer edge (side flow) and half at the groove edge:
+    the supply flow, positive into the film as in :class:`FilmResult`, is minus that.
     """
 
     geometry: BearingGeometry
@@ -297,7 +297,7 @@ class GroovedShortBearingFilm:
             r, force_x=2.0 * r.force_x, force_y=2.0 * r.force_y,
             friction_torque_journal=2.0 * r.friction_torque_journal,
             friction_torque_shell=2.0 * r.friction_torque_shell,
-            friction_power=2.0 * r.friction_power, side_flow=leakage, supply_flow=leakage,
+            friction_power=2.0 * r.friction_power, side_flow=leakage, supply_flow=-leakage,
 )
         if with_pressure and r.pressure is not None:
             result.pressure = np.concatenate([r.pressure, r.pressure], axis=1)

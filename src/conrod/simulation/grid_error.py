@@ -1,0 +1,126 @@
+"""The grid-error estimate of a run on a grid film (``conrod run``; :mod:`conrod.results.
+grid_error`): the same orbit on two coarser grids, the cycle's smallest film h_min and
+largest p_max of each grid (each at its own critical crank angle: where the thinnest film
+sits can move between neighbouring angles from grid to grid), Richardson extrapolation
+with the observed order."""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+import numpy as np
+
+from conrod.cases.solver import SolverSection
+from conrod.results.grid_error import GridError, GridEstimate, cell_size, richardson
+from conrod.results.summary import film_minimum
+
+GRID_FILMS = ("reynolds", "mass_conserving")
+"""Films solved on the ``[solver]`` grid, whose answer depends on it [-]."""
+RATIOS = (1.4, 2.0)
+"""Coarsening of the two coarser grids: n_θ and n_z divided by about these [-]."""
+FEATURE_CELLS = 3.0
+"""A groove or hole spanning fewer axial cells than this on the run grid is not resolved:
+its edges snap to other nodes on every grid and the values need not converge [-]."""
+
+
+def coarser_grids(grid: tuple[int, int]) -> list[tuple[int, int]]:
+    """The two coarser grids of ``grid`` (n_θ, n_z): each count divided by about
+    :data:`RATIOS`, even and within the ``[solver]`` limits, each strictly coarser than the
+    one before; fewer when the grid cannot be coarsened."""
+    low_theta = SolverSection.model_fields["n_theta"].metadata[0].ge
+    low_z = SolverSection.model_fields["n_z"].metadata[0].ge
+    grids, last = [], grid
+    for ratio in RATIOS:
+        candidate = (max(low_theta, 2 * round(grid[0] / ratio / 2)),
+                     max(low_z, 2 * round(grid[1] / ratio / 2)))
+        if cell_size(candidate) > cell_size(last) * 1.2:
+            grids.append(candidate)
+            last = candidate
+    return grids
+
+
+def with_grid_error(results: Any, simulation: Any, progress: Any = None) -> Any:
+    """``results`` with ``summary.grid_error`` (:class:`GridError`) when the film has a grid
+    that can be coarsened twice; unchanged otherwise. The coarser orbits run with the same
+    case, integrator and settings but without a rigid companion."""
+    solver = simulation.solver
+    name = results.summary.film_model
+    grid = (solver.n_theta, solver.n_z)
+    coarse = coarser_grids(grid)
+    if name not in GRID_FILMS or len(coarse) < 2:
+        return results
+    runs = [results] + [_coarse_run(simulation, g, progress) for g in coarse]
+    grids = (grid, *coarse)
+    estimate = GridError(grids, _estimate("h_min", runs, grids),
+                         _estimate("p_max", runs, grids),
+                         feature_note(simulation.geometry(), solver.n_z))
+    summary = dataclasses.replace(results.summary, grid_error=estimate)
+    return _with_summary(results, summary)
+
+
+def feature_note(geometry: Any, n_z: int) -> str:
+    """Words on the oil-supply feature worst resolved axially on the run grid ('' when every
+    groove and hole spans at least :data:`FEATURE_CELLS` axial cells)."""
+    spacing = geometry.width / n_z
+    features = [("groove", groove.width) for groove in geometry.grooves
+                if groove.width < geometry.width]
+    features += [("hole", hole.diameter) for hole in geometry.feed_holes]
+    if not features:
+        return ""
+    name, size = min(features, key=lambda item: item[1])
+    cells = size / spacing
+    if cells >= FEATURE_CELLS:
+        return ""
+    return (f"the {size * 1e3:.3g} mm {name} spans {cells:.1f} axial cells of the run grid: "
+            "its edges fall on other nodes on every grid, so the values need not converge "
+            "monotonically and the error can be larger or of the other sign (a finer n_z "
+            "resolves it)")
+
+
+def _coarse_run(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
+    from conrod.simulation.simulation import Simulation
+
+    staged = None
+    if progress is not None:
+        def staged(stage: str, cycle: int, error: float) -> None:
+            progress(f"grid {grid[0]}x{grid[1]} {stage}", cycle, error)
+    coarse = Simulation(simulation.case, film=simulation.solver.film,
+                        integrator=simulation.solver.integrator, rigid_companion=False,
+                        **{**_overrides(simulation), "n_theta": grid[0], "n_z": grid[1]})
+    results = coarse.run(staged)
+    return getattr(results, "elastic", results)
+
+
+def _overrides(simulation: Any) -> dict[str, Any]:
+    """The ``[solver]`` values the run set on top of the case's."""
+    own, case = simulation.solver.model_dump(), simulation.case.solver.model_dump()
+    return {key: value for key, value in own.items() if case.get(key) != value
+            and key not in ("film", "integrator")}
+
+
+def _estimate(quantity: str, runs: list[Any], grids) -> GridEstimate:
+    extremes = [_extreme(getattr(run, "elastic", run).cycle, quantity) for run in runs]
+    values = tuple(value for value, _ in extremes)
+    order, error = richardson(values, tuple(cell_size(g) for g in grids))
+    return GridEstimate(quantity, float(np.degrees(extremes[0][1])), values, order, error,
+                        tuple(float(np.degrees(angle)) for _, angle in extremes))
+
+
+def _extreme(cycle: Any, quantity: str) -> tuple[float, float]:
+    """(the cycle's smallest film h_min or largest p_max, its crank angle [rad])."""
+    if quantity == "h_min":
+        thinnest = film_minimum(cycle)
+        if thinnest is not None:
+            return thinnest
+        row = int(np.argmin(cycle.h_min))
+    else:
+        row = int(np.argmax(cycle.p_max))
+    return float(getattr(cycle, quantity)[row]), float(cycle.crank_angle[row])
+
+
+def _with_summary(results: Any, summary: Any) -> Any:
+    if hasattr(results, "elastic"):
+        return dataclasses.replace(results, elastic=dataclasses.replace(results.elastic,
+                                                                        summary=summary))
+    return dataclasses.replace(results, summary=summary)
