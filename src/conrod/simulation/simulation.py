@@ -40,6 +40,7 @@ from conrod.orbit.integrators import Integrator
 from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
 from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
+from conrod.results.feed import starvation_warnings
 from conrod.results.plausibility import check_run
 from conrod.results.summary import contact_warnings, summarise
 from conrod.simulation.orbit_outputs import (
@@ -280,7 +281,8 @@ class Simulation:
         )
         warnings = (summary.warnings  # check_run: or ConvergenceError
                     + tuple(check_run(results, self.case, problem.contact_radius))
-                    + tuple(contact_warnings(cycle)))
+                    + tuple(contact_warnings(cycle))
+                    + tuple(starvation_warnings(cycle.feed, cycle.crank_angle_deg)))
         wall_time = time.perf_counter() - start
         summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)
         resolved = self.case.model_copy(update={"solver": self.solver})  # with the overrides
