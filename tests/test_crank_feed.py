@@ -1,0 +1,232 @@
+"""Oil holes in the crank pin: a supply region of the film that turns with the journal,
+fed at the gallery pressure plus the centrifugal head of the drilling (Reynolds film)."""
+
+from __future__ import annotations
+
+import copy
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from conrod.cases.case import Case
+from conrod.errors import CaseError
+from conrod.film.base import BearingGeometry, FeedHole, FilmState, Groove, JournalFeed, JournalHole
+from conrod.film.reynolds.film import ReynoldsFilm
+from conrod.loads.cycle import LoadCycle
+from conrod.loads.oil_feed import (
+    FeedSchedule,
+    HoleSupply,
+    centrifugal_head,
+    feed_schedule,
+    journal_turn,
+    mouth_radius,
+)
+from conrod.orbit import OrbitProblem, OrbitState, integrate_cycle
+from orbit_helpers import solver
+
+EXAMPLE = (Path(__file__).resolve().parents[1] / "examples"
+           / "passenger_car_diesel_2000rpm_crank_fed.toml")
+BASE = {"diameter": 0.05, "width": 0.02, "radial_clearance": 25e-6}
+STATE = {"eccentricity_x": 15e-6, "eccentricity_y": 5e-6, "velocity_x": 1e-3,
+         "journal_speed": 300.0, "viscosity": 0.01}
+
+
+def _constant_feed(pressures, turned_per_cycle=0.0, cycle=2 * math.pi) -> FeedSchedule:
+    """A feed with constant pressures whose journal turns ``turned_per_cycle`` [rad]
+    uniformly over a cycle."""
+    angles = np.linspace(0.0, cycle, 9)
+    supplies = tuple(HoleSupply(None, np.array([p]), 0.0, 0.0, cycle) for p in pressures)
+    return FeedSchedule(angles, angles * turned_per_cycle / cycle, cycle, supplies)
+
+
+def _steady_loads(journal, shell, load=4000.0, n=72, cycle=2 * math.pi) -> LoadCycle:
+    phi = np.linspace(0.0, cycle, n, endpoint=False)
+    omega = 200.0
+    return LoadCycle(phi, np.full(n, load), np.full(n, 0.3 * load), np.full(n, journal),
+                     np.full(n, shell), omega, cycle)
+
+
+def test_pin_hole_at_its_shell_angle_is_the_shell_hole_bit_for_bit():
+    """A journal hole whose journal angle puts it at θ = 100° gives the film of a shell
+    hole at 100° at the same pressure, to the last bit (force, flows, field)."""
+    shell = ReynoldsFilm(BearingGeometry(**BASE, feed_holes=(FeedHole(math.radians(100.0),
+                                                                       0.005),),
+                                         supply_pressure=3e5), n_theta=72, n_z=16)
+    pin = ReynoldsFilm(BearingGeometry(**BASE, journal_holes=(
+        JournalHole(math.radians(100.0), 0.005),)), n_theta=72, n_z=16)
+    a = shell.solve(FilmState(**STATE), with_pressure=True)
+    b = pin.solve(FilmState(**STATE, journal_feed=JournalFeed(0.0, (3e5,))),
+                  with_pressure=True)
+    assert (a.force_x, a.force_y, a.supply_flow, a.side_flow) == (
+        b.force_x, b.force_y, b.supply_flow, b.side_flow)
+    assert np.array_equal(a.pressure, b.pressure)
+    assert b.extra["journal_hole_flow_m3_per_s"] == b.supply_flow > 0.0
+
+
+def test_pin_hole_at_zero_relative_speed_gives_the_fixed_hole_orbit():
+    """Journal and shell turning together (ω_j = ω_b, the Couette term from their sum): the
+    pin hole does not move on the shell, and the orbit is that of the same hole fixed in
+    the shell, bit for bit."""
+    loads = _steady_loads(150.0, 150.0)
+    shell = ReynoldsFilm(BearingGeometry(**BASE, feed_holes=(FeedHole(2.0, 0.005),),
+                                         supply_pressure=2e5), n_theta=36, n_z=8)
+    pin = ReynoldsFilm(BearingGeometry(**BASE, journal_holes=(JournalHole(2.0, 0.005),)),
+                       n_theta=36, n_z=8)
+    feed = feed_schedule_of(loads, 2e5)
+    assert feed.journal_angle(1.3) == 0.0 and feed.journal_angle(9.0) == 0.0
+    runs = [integrate_cycle(OrbitProblem(film, loads, 0.01, 1.0, 1.0, feed=f),
+                            OrbitState(5e-6, 0.0), solver(output_step_deg=10.0),
+                            "quasi_static")
+            for film, f in ((shell, None), (pin, feed))]
+    assert np.array_equal(runs[0].x, runs[1].x) and np.array_equal(runs[0].y, runs[1].y)
+
+
+def feed_schedule_of(loads: LoadCycle, pressure: float) -> FeedSchedule:
+    """The feed of one hole at a constant ``pressure`` [Pa] on ``loads``' journal turn."""
+    angles, turned = journal_turn(loads)
+    return FeedSchedule(angles, turned, loads.cycle,
+                        (HoleSupply(None, np.array([pressure]), 0.0, 0.0, loads.cycle),))
+
+
+def _case(**hole) -> Case:
+    data = tomllib.loads(EXAMPLE.read_text())
+    data = copy.deepcopy(data)
+    data["bearing"]["journal_holes"] = [{**data["bearing"]["journal_holes"][0], **hole}]
+    return Case.from_dict(data, base_dir=EXAMPLE.parent)
+
+
+def test_centrifugal_head_is_the_hand_formula():
+    """p = (1 − k)(p_g + ρ ω² (r_out² − r_in²)/2) with r_out the hole's mouth on the pin:
+    by hand for the shipped crank-fed case."""
+    case = _case(angle=30.0, gallery_pressure=2.5e5, drilling_inner_radius=0.02,
+                 loss_coefficient=0.1)
+    rho, omega = 850.0, 2000.0 * math.pi / 30.0
+    r, big_r = 0.5 * 0.0955, 0.5 * 0.0478
+    r_out = math.sqrt((r + big_r * math.cos(math.radians(30.0))) ** 2
+                      + (big_r * math.sin(math.radians(30.0))) ** 2)
+    assert mouth_radius(r, big_r, math.radians(30.0)) == pytest.approx(r_out, rel=1e-15)
+    head = 0.5 * rho * omega**2 * (r_out**2 - 0.02**2)
+    assert centrifugal_head(rho, omega, 0.02, r_out) == pytest.approx(head, rel=1e-14)
+    from conrod.loads.engine_loads import compute_engine_loads
+
+    loads = compute_engine_loads(case).to_load_cycle()
+    feed = feed_schedule(case, loads, rho, None)
+    for phi in (0.0, 1.0, 7.0):
+        assert feed.at(phi).pressures[0] == pytest.approx(0.9 * (2.5e5 + head), rel=1e-12)
+    assert head == pytest.approx(0.825e5, rel=1e-3)  # 0.83 bar at 2000 rpm on this crank
+
+
+def test_gallery_table_over_crank_angle_and_the_journal_turn():
+    """A gallery table is interpolated periodically; ψ(φ) = φ + β(φ) for a crank pin."""
+    case = _case(angle=0.0, gallery_pressure=[[0.0, 1e5], [360.0, 3e5]],
+                 drilling_inner_radius=0.0)
+    from conrod.loads.engine_loads import compute_engine_loads
+
+    loads = compute_engine_loads(case).to_load_cycle()
+    feed = feed_schedule(case, loads, 850.0, None)
+    head = feed.supplies[0].head
+    assert feed.at(math.pi).pressures[0] == pytest.approx(2e5 + head, rel=1e-12)
+    assert feed.at(3 * math.pi).pressures[0] == pytest.approx(2e5 + head, rel=1e-12)
+    lam = 0.5 * 0.0955 / 0.144
+    for phi in (0.3, 2.0, 5.5, 11.0, 13.0):
+        exact = phi + math.asin(lam * math.sin(phi))
+        assert feed.journal_angle(phi) == pytest.approx(exact, abs=1e-5)
+
+
+def test_no_gallery_pressure_and_no_speed_give_an_ambient_hole():
+    """Gallery 0 Pa and crank speed 0: the hole's feed pressure is 0 (ambient) and the
+    film holds gauge 0 on the hole's nodes (the same film as a shell hole at 0 Pa)."""
+    supply = HoleSupply(None, np.array([0.0]), centrifugal_head(850.0, 0.0, 0.0, 0.07),
+                        0.0, 4 * math.pi)
+    assert supply.pressure(1.0) == 0.0
+    pin = ReynoldsFilm(BearingGeometry(**BASE, journal_holes=(JournalHole(1.0, 0.006),)),
+                       n_theta=72, n_z=16)
+    shell = ReynoldsFilm(BearingGeometry(**BASE, feed_holes=(FeedHole(3.0, 0.006),)),
+                         n_theta=72, n_z=16)
+    b = pin.solve(FilmState(**STATE, journal_feed=JournalFeed(2.0, (0.0,))), with_pressure=True)
+    a = shell.solve(FilmState(**STATE), with_pressure=True)
+    assert np.array_equal(a.pressure, b.pressure)
+    problem = pin.discrete_problem(FilmState(**STATE, journal_feed=JournalFeed(2.0, (0.0,))))
+    assert problem.journal_holes.any() and np.all(b.pressure[problem.journal_holes] == 0.0)
+
+
+def _ring_force(n_holes: int, film_kind=ReynoldsFilm, samples: int = 6) -> np.ndarray:
+    """Mean film force over the journal angle of ``n_holes`` equal holes round the pin
+    [N]."""
+    holes = tuple(JournalHole(2 * math.pi * k / n_holes, 0.004) for k in range(n_holes))
+    film = film_kind(BearingGeometry(**BASE, journal_holes=holes), n_theta=72, n_z=16)
+    forces = [film.force(FilmState(**STATE, journal_feed=JournalFeed(
+        2 * math.pi * s / (samples * n_holes), (2e5,) * n_holes))) for s in range(samples)]
+    return np.mean(forces, axis=0)
+
+
+def test_rotating_hole_force_is_periodic_and_its_mean_tends_to_the_groove():
+    """At a fixed journal state the force of n holes round the pin repeats every 2π/n of
+    journal turn (the relative rotation of one hole spacing), and its mean over a turn
+    approaches the full circumferential groove of the holes' width as n grows."""
+    holes = tuple(JournalHole(2 * math.pi * k / 4, 0.004) for k in range(4))
+    film = ReynoldsFilm(BearingGeometry(**BASE, journal_holes=holes), n_theta=72, n_z=16)
+
+    def force(angle):
+        return np.array(film.force(FilmState(**STATE, journal_feed=JournalFeed(angle,
+                                                                               (2e5,) * 4))))
+    for angle in (0.1, 0.7):
+        np.testing.assert_allclose(force(angle + 0.5 * math.pi), force(angle), rtol=1e-9)
+    assert np.linalg.norm(force(0.1) - force(0.5)) > 1e-3 * np.linalg.norm(force(0.1))
+    groove = ReynoldsFilm(BearingGeometry(**BASE, grooves=(Groove(width=0.004),),
+                                          supply_pressure=2e5), n_theta=72, n_z=16)
+    target = np.array(groove.force(FilmState(**STATE)))
+    errors = [np.linalg.norm(_ring_force(n) - target) / np.linalg.norm(target)
+              for n in (2, 8, 24, 72)]
+    assert errors[0] > errors[1] > errors[2] > errors[3]
+    # 72 holes of the groove's width, one per θ node: the ring closes into the groove
+    assert errors[3] < 1e-12
+
+
+def test_two_pin_holes_on_a_steady_load_give_an_orbit_periodic_at_their_spacing():
+    """Steady load, journal turning at constant speed: two holes 180° apart make the
+    massless orbit repeat every half turn (their passing frequency), not at the load."""
+    loads = _steady_loads(200.0, 0.0)  # one relative turn per cycle of 2π
+    film = ReynoldsFilm(BearingGeometry(**BASE, journal_holes=(
+        JournalHole(0.0, 0.005), JournalHole(math.pi, 0.005))), n_theta=36, n_z=8)
+    feed = _constant_feed((3e5, 3e5), turned_per_cycle=2 * math.pi)
+    problem = OrbitProblem(film, loads, 0.01, 1.0, 1.0, feed=feed)
+    state = OrbitState(10e-6, 5e-6)
+    for _ in range(2):  # settle
+        traj = integrate_cycle(problem, state, solver(output_step_deg=10.0), "quasi_static")
+        state = traj.end_state
+    half = traj.x.size // 2
+    e = np.hypot(traj.x, traj.y)
+    np.testing.assert_allclose(traj.x[half:], traj.x[:half], rtol=0, atol=2e-4 * 25e-6)
+    assert np.ptp(e) > 1e-3 * 25e-6  # the holes do move the journal
+
+
+@pytest.mark.parametrize(("hole", "field"), [
+    ({"diameter": 0.021}, "bearing.journal_holes[0].diameter"),
+    ({"axial_position": 0.009}, "bearing.journal_holes[0].axial_position"),
+    ({"drilling_outer_radius": 0.09}, "bearing.journal_holes[0].drilling_outer_radius"),
+    ({"gallery_pressure": -1.0e5}, "bearing.journal_holes.gallery_pressure"),
+    ({"gallery_pressure": [[0.0, 1e5], [90.0, -2.0]]},
+     "bearing.journal_holes.gallery_pressure[1]"),
+])
+def test_bad_pin_hole_gets_one_clear_line(hole, field):
+    from conrod.simulation import Simulation
+
+    with pytest.raises(CaseError) as error:
+        Simulation(_case(**hole)).problem()
+    message = str(error.value)
+    assert field in message and "allowed" in message and "\n" not in message
+
+
+def test_feed_without_crank_angle_is_refused_loudly():
+    film = ReynoldsFilm(BearingGeometry(**BASE, journal_holes=(JournalHole(0.0, 0.005),)),
+                        n_theta=36, n_z=8)
+    with pytest.raises(CaseError, match="journal_feed"):
+        film.force(FilmState(**STATE))
+    with pytest.raises(CaseError, match="pressures"):
+        film.force(FilmState(**STATE, journal_feed=JournalFeed(0.0, (1e5, 1e5))))
+    with pytest.raises(CaseError, match="pressures"):
+        JournalFeed(0.0, (-1.0,))
