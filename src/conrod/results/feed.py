@@ -15,9 +15,11 @@ from __future__ import annotations
 
 import numpy as np
 
-STARVED_FRACTION = 0.95
+STARVED_FRACTION = 0.9
 """Film fraction at the loaded zone's inlet below which the load zone runs partially
-filled (starved) [-]."""
+filled (starved) [-]. Measured on a 50 mm bearing under a rotating 1.5 kN load (48 × 8,
+mass-conserving film): a full 3 mm groove at 3 bar keeps it ≥ 0.91 (mean 0.996), at
+0.3 bar it falls to 0.62 (mean 0.83)."""
 LITRES_PER_MINUTE = 6.0e4
 """m³/s → l/min [-]."""
 

@@ -20,14 +20,16 @@ class MassConservingMemory:
         next solve [Pa]; None: start from p̃ = −p_cav.
     thickness : ndarray or None  Film thickness h at the instant of ``fraction`` [m], set by
         an implicit content step (:meth:`MassConservingFilm.content_step`); None otherwise.
-    hole_fill : float  Oil the journal's turning holes poured into the partly filled nodes
-        they came over during that step, per second of the step [m³/s] (0: none).
+    hole_fill, held_fill : float  Content change over that step of the nodes the
+        journal's holes (all supply features) hold at its end, per second [m³/s]: oil they
+        gave besides their flux (:func:`conrod.film.mass_conserving.step.content_step`).
     """
 
     fraction: np.ndarray
     pressure: np.ndarray | None = None
     thickness: np.ndarray | None = None
     hole_fill: float = 0.0
+    held_fill: float = 0.0
 
 
 @dataclass
