@@ -316,3 +316,44 @@ def test_starved_load_zone_warns_once():
     full = dict(starved, inlet_film_fraction=np.ones(4))
     assert starvation_warnings(full, angles) == []
     assert "backflow over 25%" in feed_headline(starved)["crank-pin hole"]
+
+
+@pytest.mark.slow
+def test_shipped_crank_fed_example_writes_the_hole_columns(tmp_path):
+    """``conrod run`` on the shipped example (coarse): the hole's columns in cycle.csv, its
+    cycle figures in summary.json and the headline; the hole's shell angle is α + ψ with
+    ψ the journal rotation of the same table, and the mean flow is the cycle's supply."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from conrod.cli.app import _register_commands, app
+    from conrod.loads.oil_feed import wear_diagram_angle
+
+    _register_commands()
+    result = CliRunner().invoke(app, [
+        "run", str(EXAMPLE), "--out", str(tmp_path), "--grid", "24x8", "--integrator",
+        "quasi_static", "--max-cycles", "3", "--no-grid-error", "--no-figures"])
+    assert result.exit_code in (0, 4), result.output
+    assert "crank-pin hole" in result.output
+    table = np.genfromtxt(tmp_path / "cycle.csv", delimiter=",", names=True)
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    alpha = math.degrees(wear_diagram_angle(Case.from_toml(EXAMPLE)))
+    expected = (alpha + table["journal_rotation_deg"]) % 360.0
+    difference = (table["journal_hole_angle_shell_deg"] - expected + 180.0) % 360.0 - 180.0
+    assert np.max(np.abs(difference)) < 1e-3
+    assert summary["journal_hole_flow_mean_m3_s"] == pytest.approx(
+        table["journal_hole_flow_m3_s"].mean(), rel=1e-12)
+    np.testing.assert_array_equal(table["journal_hole_flow_m3_s"], table["supply_flow_m3_s"])
+    assert np.all(table["journal_hole_pressure_Pa"] > 3.0e5)  # gallery plus the head
+
+
+def test_no_journal_hole_leaves_the_film_problem_as_it_was():
+    """Without journal holes the Dirichlet set and values are the film's own arrays (no
+    copy, no new node): today's problem, bit for bit."""
+    film = ReynoldsFilm(BearingGeometry(**BASE, feed_holes=(FeedHole(1.0, 0.005),),
+                                        supply_pressure=1e5), n_theta=36, n_z=8)
+    problem = film.discrete_problem(FilmState(**STATE))
+    assert problem.journal_holes is None
+    assert np.array_equal(problem.fixed, film.discrete_problem(FilmState(**STATE)).fixed)
+    assert "journal_hole_flow_m3_per_s" not in film.solve(FilmState(**STATE)).extra

@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
+import numba as nb
 import numpy as np
 
 from conrod.errors import CaseError
@@ -84,14 +85,35 @@ def journal_hole_masks(geometry: BearingGeometry, grid: FilmGrid,
     """Nodes of each journal hole at the shell angle θ = hole angle + journal angle (edge
     rows excluded), one bool (n_θ, n_z + 1) per hole."""
     masks = []
+    theta, z = grid.theta, grid.z
     for hole in geometry.journal_holes:
-        at = FeedHole(hole.angle + feed.journal_angle, hole.diameter, hole.axial_position)
-        mask = hole_mask(at, grid)
+        angle = hole.angle + feed.journal_angle
+        mask = np.zeros((grid.n_theta, grid.n_z + 1), dtype=bool)
+        if not _disc_nodes(theta, z, grid.radius, angle, 0.5 * hole.diameter,
+                           hole.axial_position, mask):  # no node inside: the nearest
+            mask = hole_mask(FeedHole(angle, hole.diameter, hole.axial_position), grid)
         mask[:, [0, -1]] = False
         if hole.axial_position == 0.0:  # mirror-symmetric to the last bit of z
             mask |= mask[:, ::-1]
         masks.append(mask)
     return masks
+
+
+@nb.njit(cache=True)
+def _disc_nodes(theta, z, radius, angle, half, axial, mask):  # pragma: no cover (compiled)
+    """Mark in ``mask`` the nodes of :func:`hole_mask` (the same arithmetic, so the same
+    nodes) of a hole at ``angle`` [rad], radius ``half`` [m], at ``axial`` [m]; True when
+    any node lies inside."""
+    found = False
+    for i in range(theta.size):
+        arc = radius * ((theta[i] - angle + math.pi) % (2.0 * math.pi) - math.pi)
+        if abs(arc) > half:
+            continue
+        for j in range(z.size):
+            if math.hypot(arc, z[j] - axial) <= half:
+                mask[i, j] = True
+                found = True
+    return found
 
 
 def checked_feed(geometry: BearingGeometry, feed: JournalFeed | None) -> JournalFeed:

@@ -235,6 +235,10 @@ class Simulation:
             summary = dataclasses.replace(results.summary,
                                           warnings=(*results.summary.warnings, note))
             return dataclasses.replace(results, summary=summary)
+        if self.geometry().journal_holes:  # the elastic films do not pass the feed on
+            raise CaseError("bearing.journal_holes with an elastic [housing]: not available "
+                            "(allowed: housing.model = 'rigid', or the feed through shell "
+                            "grooves and holes)")
         from conrod.simulation.ehd_run import elastic_run
 
         return elastic_run(self, progress)
