@@ -9,7 +9,7 @@ Run from the repository root:
 
 For every hole angle on the pin (from the outward crank radius towards rotation, every
 ``--step`` degrees, plus the wear diagram's least-worn angle of ``conrod loads``) it runs
-the periodic orbit (massless, ``quasi_static``) and writes one row of
+the periodic orbit (with mass, the default integrator) and writes one row of
 ``pin_hole_angle.csv``: the film's h_min and p_max over the cycle, the mean flow through
 the hole and the share of the cycle with backflow, the smallest film fraction at the
 loaded zone's inlet and the share of the cycle the load zone runs partially filled
@@ -28,6 +28,7 @@ import tomllib
 from pathlib import Path
 
 from conrod.cases.case import Case
+from conrod.errors import ConrodError
 from conrod.loads.oil_feed import wear_diagram_angle
 from conrod.simulation import Simulation
 
@@ -47,9 +48,13 @@ def case_at(data: dict, angle_deg: float) -> Case:
 
 def row(case: Case, angle_deg: float, wear: bool, grid: tuple[int, int]) -> dict:
     """One study row: the orbit's figures at one hole angle (SI units)."""
-    simulation = Simulation(case, film="mass_conserving", integrator="quasi_static",
-                            n_theta=grid[0], n_z=grid[1])
-    results = simulation.run()
+    simulation = Simulation(case, film="mass_conserving", n_theta=grid[0], n_z=grid[1])
+    try:
+        results = simulation.run()
+    except ConrodError as error:  # a located refusal: the row says so
+        print(f"hole at {angle_deg:6.1f} deg: {error}", flush=True)
+        return {"hole_angle_deg": angle_deg, "wear_diagram": int(wear), "exit_code": 3,
+                **{name: math.nan for name in COLUMNS[2:-1]}}
     s, feed = results.summary, results.cycle.feed
     items = {"hole_angle_deg": angle_deg, "wear_diagram": int(wear),
              "h_min_m": float(results.cycle.h_min.min()), "p_max_Pa": float(s.p_max),
@@ -79,6 +84,8 @@ def main() -> None:
     for angle, is_wear in sorted([(a, False) for a in angles] + [(wear, True)]):
         start = time.perf_counter()
         rows.append(row(case_at(data, angle), angle, is_wear, grid))
+        if rows[-1]["exit_code"] == 3:
+            continue
         print(f"hole at {angle:6.1f} deg: h_min {rows[-1]['h_min_m'] * 1e6:.3f} um, "
               f"p_max {rows[-1]['p_max_Pa'] / 1e6:.0f} MPa, inlet film fraction >= "
               f"{rows[-1]['inlet_film_fraction_min']:.2f} ({time.perf_counter() - start:.0f} s)",
