@@ -2,14 +2,14 @@
 
 Run from the repository root:
 
-    python docs/figures/make_crank_feed_figures.py [STUDY_CSV]
+    python docs/figures/make_crank_feed_figures.py [STUDY_CSV ...]
 
 * ``crank_pin_hole_frames.png``: engine, crank and rod frames, the hole at angle α on the
   pin (from the outward crank radius) and its shell angle θ = α + φ + β; beside it θ over
   the cycle for the passenger-car crank (λ = 0.33) from conrod's own feed schedule.
-* ``pin_hole_angle_study.png`` (when STUDY_CSV, the table of
-  ``examples/studies/passenger_car_pin_hole_angle.py``, is given): h_min, p_max, hole flow
-  and starvation against the hole angle, the wear diagram's angle marked.
+* ``pin_hole_angle_study.png`` (given the tables of
+  ``examples/studies/passenger_car_pin_hole_angle.py``, kept in docs/figures/data/): h_min,
+  p_max, hole flow and starvation against the hole angle, the wear diagram's angle marked.
 """
 
 from __future__ import annotations
@@ -118,33 +118,44 @@ def frames_figure() -> None:
     plt.close(fig)
 
 
-def study_figure(table: Path) -> None:
-    """The pin-hole angle study against the hole angle, the wear diagram's angle marked."""
+def _read(table: Path) -> tuple[str, list[dict]]:
+    """(film name from the file name, rows) of a study table."""
     with open(table) as handle:
         rows = list(csv.DictReader(handle))
-    angle = np.array([float(r["hole_angle_deg"]) for r in rows])
-    wear = [float(r["hole_angle_deg"]) for r in rows if r["wear_diagram"] == "1"]
+    return table.stem.removeprefix("pin_hole_angle_").replace("_", "-"), rows
 
-    def column(name, scale=1.0):
-        return np.array([float(r[name]) * scale for r in rows])
 
-    panels = (("h_min_m", 1e6, "film h_min [µm]"), ("p_max_Pa", 1e-6, "p_max [MPa]"),
-              ("journal_hole_flow_mean_m3_s", 6e4, "mean hole flow [l/min]"),
-              ("inlet_film_fraction_min", 1.0, "smallest inlet film fraction [-]"))
-    fig, axes = plt.subplots(2, 2, figsize=(10, 6.5), sharex=True)
-    for ax, (name, scale, label) in zip(axes.flat, panels, strict=True):
-        ax.plot(angle, column(name, scale), "o-", ms=4)
+def study_figure(tables: list[Path]) -> None:
+    """The pin-hole angle study against the hole angle (one line per film), the wear
+    diagram's angle marked."""
+    panels = (("h_min_m", 1e6, "film h_min over the cycle [µm]"),
+              ("p_max_Pa", 1e-6, "p_max over the cycle [MPa]"),
+              ("journal_hole_flow_mean_m3_s", 6e4, "mean flow through the hole [l/min]"),
+              ("inlet_film_fraction_min", 1.0, "smallest film fraction at the load zone's "
+               "inlet [-]"))
+    fig, axes = plt.subplots(2, 2, figsize=(10.5, 7), sharex=True)
+    for table in tables:
+        film, rows = _read(table)
+        angle = np.array([float(r["hole_angle_deg"]) for r in rows])
+        for ax, (name, scale, label) in zip(axes.flat, panels, strict=True):
+            values = np.array([float(r[name]) * scale for r in rows])
+            if np.all(np.isnan(values)):
+                continue
+            ax.plot(angle, values, "o-", ms=4, label=f"{film} film")
+            ax.set_ylabel(label, fontsize=9)
+        wear = [float(r["hole_angle_deg"]) for r in rows if r["wear_diagram"] == "1"]
+    for ax in axes.flat:
         for value in wear:
             ax.axvline(value, color="tab:red", ls="--", lw=1)
-        ax.set_ylabel(label)
         ax.grid(alpha=0.3)
+        ax.set_xticks(np.arange(0, 361, 60))
     axes[1, 1].axhline(0.9, color="0.5", lw=0.8)
+    axes[0, 0].legend(fontsize=8)
     for ax in axes[1]:
         ax.set_xlabel("hole angle on the pin from the outward crank radius [deg]")
-    axes[0, 0].set_title("red dashed: the wear diagram's least-worn angle", fontsize=9,
-                         color="tab:red")
-    fig.suptitle("Passenger-car big end, 2000 rpm: where to drill the crank-pin oil hole "
-                 "(mass-conserving film)", fontsize=11)
+    fig.suptitle("Passenger-car big end, 2000 rpm, 3 bar gallery: where to drill the crank-pin "
+                 "oil hole\n(red dashed: the wear diagram's least-worn angle; grey: the "
+                 "starvation limit 0.9)", fontsize=10)
     fig.tight_layout()
     fig.savefig(OUT / "pin_hole_angle_study.png", dpi=110)
     plt.close(fig)
@@ -153,4 +164,4 @@ def study_figure(table: Path) -> None:
 if __name__ == "__main__":
     frames_figure()
     if len(sys.argv) > 1:
-        study_figure(Path(sys.argv[1]))
+        study_figure([Path(name) for name in sys.argv[1:]])

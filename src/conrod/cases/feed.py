@@ -54,7 +54,11 @@ class JournalHoleSection(Section):
 
     @model_validator(mode="after")
     def _gallery(self) -> JournalHoleSection:
-        """Gallery pressure ≥ 0 Pa; a table's angles increasing within one cycle."""
+        """Angle within ±360°; gallery pressure ≥ 0 Pa; a table's angles increasing within
+        one cycle."""
+        if self.angle != "wear_diagram" and not -360.0 <= self.angle <= 360.0:
+            raise range_error("bearing.journal_holes.angle", self.angle,
+                              ">= -360 and <= 360, or 'wear_diagram'", "deg")
         value = self.gallery_pressure
         if not isinstance(value, list):
             if not (math.isfinite(value) and value >= 0.0):
