@@ -212,10 +212,15 @@ class Simulation:
         mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
         mass_x, mass_y = self.masses()
         film = self.film_model()
+        tilt = journal_tilt(self.case, self.load_cycle())
+        if tilt is not None and film.geometry.journal_holes:  # its steps do not pass the feed
+            raise CaseError("bearing.journal_holes with a journal tilt ([misalignment]): not "
+                            "available (allowed: an aligned journal, or the feed through "
+                            "shell grooves and holes)")
         return OrbitProblem(
             film, self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
-            _asperity_parameters(self.case), journal_tilt(self.case, self.load_cycle()),
+            _asperity_parameters(self.case), tilt,
             feed_schedule(self.case, self.load_cycle(),
                           lubricant.density_at(lubricant.supply_temperature), self._wear_angle),
         )
