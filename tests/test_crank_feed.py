@@ -357,3 +357,15 @@ def test_no_journal_hole_leaves_the_film_problem_as_it_was():
     assert problem.journal_holes is None
     assert np.array_equal(problem.fixed, film.discrete_problem(FilmState(**STATE)).fixed)
     assert "journal_hole_flow_m3_per_s" not in film.solve(FilmState(**STATE)).extra
+
+
+def test_journal_tilt_with_a_pin_hole_is_refused_before_the_run():
+    from conrod.simulation import Simulation
+
+    path = EXAMPLE.parent / "kamaz_740_truck_diesel_tilt.toml"
+    data = tomllib.loads(path.read_text())
+    data["bearing"]["journal_holes"] = [{"angle": 90.0, "diameter": 0.006,
+                                         "gallery_pressure": 4e5}]
+    case = Case.from_dict(data, base_dir=path.parent)
+    with pytest.raises(CaseError, match="journal_holes with a journal tilt"):
+        Simulation(case).problem()
