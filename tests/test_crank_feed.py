@@ -264,7 +264,7 @@ def test_mass_conserving_film_conserves_oil_through_a_turning_hole():
     """Over the periodic cycle the oil through the turning hole (its flux and the content
     it gives the nodes it comes over) leaves through the edges, to the film's own
     conservation tolerance (measured on 36 × 6: the same hole standing still 1.6e-3, turning
-    9.6e-4; on 48 × 8 without the content the hole gives the nodes it comes over 14 %);
+    9.6e-4; on 48 × 8 without the content the hole gives the nodes it comes over 13.7 %);
     the film starves at the loaded zone's inlet part of the
     cycle and the hole's flow is the whole supply."""
     result, cycle = _rotating_hole_cycle()
