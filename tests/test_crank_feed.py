@@ -369,3 +369,11 @@ def test_journal_tilt_with_a_pin_hole_is_refused_before_the_run():
     case = Case.from_dict(data, base_dir=path.parent)
     with pytest.raises(CaseError, match="journal_holes with a journal tilt"):
         Simulation(case).problem()
+
+
+@pytest.mark.parametrize("film", ["short", "mobility"])
+def test_a_film_that_would_ignore_the_pin_hole_is_refused(film):
+    from conrod.simulation import Simulation
+
+    with pytest.raises(CaseError, match="the hole would be ignored"):
+        Simulation(Case.from_toml(EXAMPLE), film=film).problem()

@@ -43,6 +43,7 @@ from conrod.results.cycle_results import CycleResults, RunResults
 from conrod.results.feed import starvation_warnings
 from conrod.results.plausibility import check_run
 from conrod.results.summary import contact_warnings, summarise
+from conrod.simulation.feed_checks import check_journal_holes
 from conrod.simulation.orbit_outputs import (
     film_asperity_force,
     heat_balance_temperature,
@@ -213,10 +214,7 @@ class Simulation:
         mass_x, mass_y = self.masses()
         film = self.film_model()
         tilt = journal_tilt(self.case, self.load_cycle())
-        if tilt is not None and film.geometry.journal_holes:  # its steps do not pass the feed
-            raise CaseError("bearing.journal_holes with a journal tilt ([misalignment]): not "
-                            "available (allowed: an aligned journal, or the feed through "
-                            "shell grooves and holes)")
+        check_journal_holes(film, tilt)
         return OrbitProblem(
             film, self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
@@ -241,9 +239,7 @@ class Simulation:
                                           warnings=(*results.summary.warnings, note))
             return dataclasses.replace(results, summary=summary)
         if self.geometry().journal_holes:  # the elastic films do not pass the feed on
-            raise CaseError("bearing.journal_holes with an elastic [housing]: not available "
-                            "(allowed: housing.model = 'rigid', or the feed through shell "
-                            "grooves and holes)")
+            check_journal_holes(self._named_film(), None, elastic=True)
         from conrod.simulation.ehd_run import elastic_run
 
         return elastic_run(self, progress)
