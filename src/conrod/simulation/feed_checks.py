@@ -12,14 +12,15 @@ JOURNAL_HOLE_FILMS = ("reynolds", "mass_conserving")
 """Films whose grid holds the journal's turning oil holes [-]."""
 
 
-def check_journal_holes(film: Any, tilt: Any, elastic: bool = False) -> None:
-    """CaseError (one line) when ``film`` has journal holes and would ignore them (not a
-    grid film of :data:`JOURNAL_HOLE_FILMS`), runs a solved journal ``tilt`` or, with
-    ``elastic``, an elastic bore (their step systems do not pass the feed on)."""
-    if not film.geometry.journal_holes:
+def check_journal_holes(geometry: Any, film: str, tilt: Any, elastic: bool = False) -> None:
+    """CaseError (one line) when ``geometry`` has journal holes and the film named ``film``
+    would ignore them (not a grid film of :data:`JOURNAL_HOLE_FILMS`), with a solved
+    journal ``tilt`` or, with ``elastic``, on an elastic bore (their step systems do not
+    pass the feed on)."""
+    if not geometry.journal_holes:
         return
-    if film.name not in JOURNAL_HOLE_FILMS:
-        raise CaseError(f"bearing.journal_holes with solver.film = {film.name!r}: the hole "
+    if film not in JOURNAL_HOLE_FILMS:
+        raise CaseError(f"bearing.journal_holes with solver.film = {film!r}: the hole "
                         "would be ignored (allowed: reynolds, mass_conserving)")
     if tilt is not None:
         raise CaseError("bearing.journal_holes with a journal tilt ([misalignment]): not "

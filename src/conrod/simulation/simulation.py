@@ -174,6 +174,10 @@ class Simulation:
         return elastic_film(film, housing, loads.crank_speed, settings,
                             _asperity_parameters(self.case))
 
+    def _film_name(self) -> str:
+        """Name of the film model: the given object's, else ``[solver] film``."""
+        return self._film.name if self._film is not None else self.solver.film
+
     def _named_film(self) -> FilmModel:
         """The film of ``[solver] film`` with the case's pressure–viscosity law."""
         return build_film_model(self.solver, self.geometry(),
@@ -212,9 +216,9 @@ class Simulation:
         lubricant = self._lubricant
         mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
         mass_x, mass_y = self.masses()
-        film = self.film_model()
         tilt = journal_tilt(self.case, self.load_cycle())
-        check_journal_holes(film, tilt)
+        check_journal_holes(self.geometry(), self._film_name(), tilt)
+        film = self.film_model()
         return OrbitProblem(
             film, self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
@@ -238,8 +242,7 @@ class Simulation:
             summary = dataclasses.replace(results.summary,
                                           warnings=(*results.summary.warnings, note))
             return dataclasses.replace(results, summary=summary)
-        if self.geometry().journal_holes:  # the elastic films do not pass the feed on
-            check_journal_holes(self._named_film(), None, elastic=True)
+        check_journal_holes(self.geometry(), self._film_name(), None, elastic=True)
         from conrod.simulation.ehd_run import elastic_run
 
         return elastic_run(self, progress)
