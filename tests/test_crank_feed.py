@@ -377,3 +377,19 @@ def test_a_film_that_would_ignore_the_pin_hole_is_refused(film):
 
     with pytest.raises(CaseError, match="the hole would be ignored"):
         Simulation(Case.from_toml(EXAMPLE), film=film).problem()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("integrator", "settings"), [("adaptive", {}),
+                                                      ("rk2", {"step_deg": 0.05})])
+def test_every_integrator_passes_the_crank_angle(integrator, settings):
+    """adaptive and rk2 place the turning hole too (a film state without the feed would be
+    refused): one cycle, finite, inside the clearance."""
+    film = ReynoldsFilm(BearingGeometry(**BASE, journal_holes=(JournalHole(0.0, 0.005),)),
+                        n_theta=24, n_z=4, tolerance=1e-10)
+    problem = OrbitProblem(film, _steady_loads(200.0, 0.0), 0.01, 1.0, 1.0, 0.1, 2.5e-6,
+                           feed=_constant_feed((3e5,), 2 * math.pi))
+    traj = integrate_cycle(problem, OrbitState(10e-6, 5e-6),
+                           solver(output_step_deg=10.0, **settings), integrator)
+    ratio = np.hypot(traj.x, traj.y) / 25e-6
+    assert np.all(np.isfinite(ratio)) and ratio.max() < 0.9 + 1e-9
