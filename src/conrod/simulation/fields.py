@@ -18,6 +18,7 @@ pressure field. Besides the pressure:
 from __future__ import annotations
 
 import dataclasses
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -141,14 +142,38 @@ def check_fields_stride(stride: float | None) -> float | None:
     return float(stride)
 
 
-def signed_off(results, thermal, case, wanted: bool = True, stride_deg: float | None = None):
+@dataclass(frozen=True)
+class SignOffRequest:
+    """What a :class:`~conrod.simulation.simulation.Simulation` is asked to sign off.
+
+    wanted : bool  Compute the per-cell indicators and the margins against ``[limits]``.
+    stride_deg : float or None  Keep the fields over the last cycle every this many degrees
+        of crank angle (``conrod run --fields``) [deg]; None: not kept.
+    """
+
+    wanted: bool = True
+    stride_deg: float | None = None
+
+
+def signoff_request(keywords: dict) -> tuple[SignOffRequest, dict]:
+    """(the sign-off asked for, the other keywords) from the keywords of a Simulation:
+    ``signoff`` (bool, default True: per-cell indicators and margins, ``results.signoff``)
+    and ``fields`` (the stride of the fields kept over the cycle [deg], default None)."""
+    rest = dict(keywords)
+    wanted = rest.pop("signoff", True)
+    if not isinstance(wanted, bool):
+        raise CaseError(f"Simulation signoff = {wanted!r}: True or False is required")
+    return SignOffRequest(wanted, check_fields_stride(rest.pop("fields", None))), rest
+
+
+def signed_off(results, thermal, case, request: SignOffRequest):
     """``results`` of the converged orbit ``thermal`` (problem, orbit) with its sign-off
-    (:func:`with_sign_off`) against the case's ``[limits]``; unchanged when not ``wanted``."""
-    if not wanted:
+    (:func:`with_sign_off`) against the case's ``[limits]``; unchanged when not asked for."""
+    if not request.wanted:
         return results
     limits = case.limits.given() if case.limits is not None else {}
     return with_sign_off(results, thermal.problem, thermal.orbit.last.film_memory, limits,
-                         stride_deg)
+                         request.stride_deg)
 
 
 def with_sign_off(results, problem, film_memory, limits, stride_deg=None):
@@ -160,5 +185,5 @@ def with_sign_off(results, problem, film_memory, limits, stride_deg=None):
     return dataclasses.replace(results, summary=summary, signoff=signoff)
 
 
-__all__ = ["check_fields_stride", "cycle_fields", "film_thickness_field", "sign_off",
-           "signed_off", "with_sign_off"]
+__all__ = ["SignOffRequest", "check_fields_stride", "cycle_fields", "film_thickness_field",
+           "sign_off", "signed_off", "signoff_request", "with_sign_off"]

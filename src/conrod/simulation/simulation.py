@@ -32,6 +32,7 @@ from conrod.film.capabilities import HasEccentricityRange, SupportsDeformation
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
+from conrod.loads.oil_feed import feed_schedule, wear_diagram_angle
 from conrod.loads.tilt import journal_tilt
 from conrod.orbit.characteristics import cycle_characteristics
 from conrod.orbit.heat_balance import relaxed_update
@@ -39,9 +40,11 @@ from conrod.orbit.integrators import Integrator
 from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
 from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
+from conrod.results.feed import starvation_warnings
 from conrod.results.plausibility import check_run, table_range_warnings
 from conrod.results.summary import contact_warnings, summarise
-from conrod.simulation.fields import check_fields_stride, signed_off
+from conrod.simulation.feed_checks import check_journal_holes
+from conrod.simulation.fields import signed_off, signoff_request
 from conrod.simulation.orbit_outputs import (
     film_asperity_force,
     heat_balance_temperature,
@@ -75,18 +78,14 @@ class Simulation:
         ``[housing]`` (rigid unless its model is builtin, mesh or compliance).
     rigid_companion : bool  With an elastic housing, also run the rigid bore and compare
         (:class:`conrod.results.ehd.ElasticRunResults`).
-    signoff : bool  Compute the per-cell sign-off indicators and the margins against
-        ``[limits]`` (:mod:`conrod.simulation.fields`; ``results.signoff``).
-    fields : float or None  Keep the fields over the last cycle every ``fields`` degrees of
-        crank angle (``conrod run --fields``) [deg]; None: not kept.
+    signoff, fields : the sign-off's keywords (:func:`conrod.simulation.fields.signoff_request`).
     overrides : keyword arguments replacing other ``[solver]`` fields (e.g. ``max_cycles=2``,
         ``n_theta=72``); validated like the case file.
     """
 
     def __init__(self, case: Case, film: FilmModel | str | None = None,
                  loads: LoadCycle | None = None, integrator: Integrator | str | None = None,
-                 housing: Any = None, rigid_companion: bool = True, signoff: bool = True,
-                 fields: float | None = None, **overrides: Any):
+                 housing: Any = None, rigid_companion: bool = True, **overrides: Any):
         if not isinstance(case, Case):  # the arguments, before anything is read from them
             shown = repr(case) if len(repr(case)) <= 60 else repr(case)[:57] + "..."
             raise CaseError(f"Simulation: case = {shown}: a conrod.Case is required "
@@ -111,24 +110,24 @@ class Simulation:
                             "None, 'rigid' or a conrod.housing.housing.Housing)")
         self._housing = housing
         self._rigid_companion = rigid_companion
-        self._signoff = (signoff, check_fields_stride(fields))
-        self._overrides = dict(overrides)
+        self.signoff, self._overrides = signoff_request(overrides)  # the sign-off's keywords
         names = {"film": film if isinstance(film, str) else None,
                  "integrator": integrator if isinstance(integrator, str) else None}
         self.case = case
         self._bearing, self._lubricant = bearing, lubricant
-        self.solver = _solver_with(case, {**overrides, **names})
+        self.solver = _solver_with(case, {**self._overrides, **names})
         self._film = None if film is None or isinstance(film, str) else film
         self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
         self._names = names
+        self._wear_angle = wear_diagram_angle(case)  # of a crank-pin hole at "wear_diagram"
         if self._film is None:
-            check_oil_feed(bearing.geometry(), self.solver.film)
+            check_oil_feed(bearing.geometry(self._wear_angle), self.solver.film)
         self._loads = loads if loads is not None else self._read_loads()  # bad tables fail here
 
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
         """Bearing geometry with supply features from ``[bearing]``."""
-        return self._bearing.geometry()
+        return self._bearing.geometry(self._wear_angle)
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (given, engine loads or the load table)."""
@@ -177,6 +176,10 @@ class Simulation:
         return elastic_film(film, housing, loads.crank_speed, settings,
                             _asperity_parameters(self.case))
 
+    def _film_name(self) -> str:
+        """Name of the film model: the given object's, else ``[solver] film``."""
+        return self._film.name if self._film is not None else self.solver.film
+
     def _named_film(self) -> FilmModel:
         """The film of ``[solver] film`` with the case's pressure–viscosity law."""
         return build_film_model(self.solver, self.geometry(),
@@ -215,11 +218,15 @@ class Simulation:
         lubricant = self._lubricant
         mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
         mass_x, mass_y = self.masses()
+        tilt = journal_tilt(self.case, self.load_cycle())
+        check_journal_holes(self.geometry(), self._film_name(), tilt)
         film = self.film_model()
         return OrbitProblem(
             film, self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
-            _asperity_parameters(self.case), journal_tilt(self.case, self.load_cycle()),
+            _asperity_parameters(self.case), tilt,
+            feed_schedule(self.case, self.load_cycle(),
+                          lubricant.density_at(lubricant.supply_temperature), self._wear_angle),
         )
 
     # -- run --------------------------------------------------------------------------
@@ -228,7 +235,7 @@ class Simulation:
         an elastic housing the elastic answer, its diagnostics and the rigid companion
         (:class:`conrod.results.ehd.ElasticRunResults`)."""
         if not self.elastic():
-            results = self.run_orbit(progress)[0]
+            results = signed_off(*self.run_orbit(progress), self.case, self.signoff)
             if self.housing() is None:
                 return results
             note = (f"[housing] model = {self.case.housing.model!r} not coupled: film "
@@ -237,14 +244,17 @@ class Simulation:
             summary = dataclasses.replace(results.summary,
                                           warnings=(*results.summary.warnings, note))
             return dataclasses.replace(results, summary=summary)
+        check_journal_holes(self.geometry(), self._film_name(), None, elastic=True)
         from conrod.simulation.ehd_run import elastic_run
 
         return elastic_run(self, progress)
 
-    def rigid_companion(self, integrator: str | None = None) -> Simulation | None:
+    def rigid_companion(self, integrator: str | None = None,
+                        **overrides: Any) -> Simulation | None:
         """The same simulation on a rigid bore (None when not asked for); ``integrator``:
         the one the elastic run used (so that ``auto`` cannot choose a journal with mass
-        for the rigid run and a massless one for the elastic run)."""
+        for the rigid run and a massless one for the elastic run); ``overrides``: other
+        ``[solver]`` fields replaced (as in :class:`Simulation`)."""
         if not self._rigid_companion:
             return None
         film = self._film if self._film is not None else self._names["film"]
@@ -252,7 +262,7 @@ class Simulation:
             integrator = (self._integrator if self._integrator is not None
                           else self._names["integrator"])
         return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
-                          housing="rigid", signoff=False, **self._overrides)
+                          housing="rigid", **{**self._overrides, **overrides})
 
     def run_orbit(self, progress: ProgressCallback | None = None
                   ) -> tuple[RunResults, ThermalOrbit]:
@@ -283,16 +293,16 @@ class Simulation:
         )
         warnings = (summary.warnings  # check_run: or ConvergenceError
                     + tuple(check_run(results, self.case, problem.contact_radius))
-                    + tuple(contact_warnings(cycle)))
+                    + tuple(contact_warnings(cycle))
+                    + tuple(starvation_warnings(cycle.feed, cycle.crank_angle_deg)))
         if isinstance(problem.film, HasEccentricityRange):
             warnings += tuple(table_range_warnings(cycle, problem.film.eccentricity_max))
         wall_time = time.perf_counter() - start
         summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)
         resolved = self.case.model_copy(update={"solver": self.solver})  # with the overrides
-        results = dataclasses.replace(results, summary=summary, model=self._model_description(),
-                                      case_hash=resolved.content_hash(),
-                                      settings=self.solver.model_dump(mode="json"))
-        return signed_off(results, thermal, self.case, *self._signoff), thermal
+        return dataclasses.replace(results, summary=summary, model=self._model_description(),
+                                   case_hash=resolved.content_hash(),
+                                   settings=self.solver.model_dump(mode="json")), thermal
 
     def _model_description(self) -> dict[str, str]:
         """What is computed, in words, for the headline."""
@@ -370,7 +380,7 @@ def check_oil_feed(geometry: BearingGeometry, film: str) -> None:
     through a groove or a hole: without it the lands starve over the cycle and the orbit
     cannot converge (a steady film solve does not need it)."""
     fed = (geometry.grooves or geometry.feed_holes) and (
-        geometry.supply_pressure > geometry.cavitation_pressure)
+        geometry.supply_pressure > geometry.cavitation_pressure) or geometry.journal_holes
     if film == "mass_conserving" and not fed:
         raise CaseError(
             "solver.film = 'mass_conserving': needs an oil feed above the cavitation pressure "
