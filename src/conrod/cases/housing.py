@@ -20,6 +20,7 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
+from conrod.cases.assembly import AssemblySection
 from conrod.cases.base import Section
 from conrod.errors import CaseError
 
@@ -128,6 +129,8 @@ class HousingSection(Section):
         "Largest bore-deformation increment per coupling update, share of h_min [-]"))
     coupling_iterations: int = Field(default=40, ge=2, le=1000, description=(
         "Film solves per coupling before the step fails [-]"))
+    assembly: AssemblySection | None = Field(default=None, description=(
+        "Bolt preload and shell crush of the assembled big end ([housing.assembly]) [-]"))
 
     @model_validator(mode="after")
     def _check_model_inputs(self) -> HousingSection:
@@ -144,6 +147,15 @@ class HousingSection(Section):
             raise ValueError(f"housing.node_file is required with compliance_file = "
                              f"{str(self.compliance_file)!r} (CSV of node_id with angle_deg, "
                              "axial_position_m or with x_m, y_m, z_m)")
+        if self.assembly is not None and self.assembly.active and self.model not in (
+                "builtin", "mesh"):
+            raise ValueError(f"housing.assembly needs a finite-element housing, not model = "
+                             f"{self.model!r} (allowed: builtin or mesh)")
+        if (self.assembly is not None and self.assembly.bolt_preload > 0.0
+                and self.model != "builtin"):
+            raise ValueError("housing.assembly.bolt_preload needs the built-in rod (model = "
+                             "'builtin', whose split line and bolt positions are known); an "
+                             "imported mesh takes crush_height alone")
         for angle in self.stress_angles:
             if not 0.0 <= angle <= 720.0:
                 raise ValueError(f"housing.stress_angles contains {angle!r}: out of range "

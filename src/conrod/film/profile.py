@@ -31,7 +31,9 @@ Shapes (all optional, summed):
 * crown k: h₀ = k (2z/L)² (k more clearance at both edges than at mid-width; negative: a
   barrel that is tighter at the edges);
 * out-of-round: Σ a_n cos(n(θ − φ_n)) (n = 2 ovality, 3 trilobe, ...);
-* a measured table (:class:`~conrod.film.profile_table.ProfileTable`).
+* a measured table (:class:`~conrod.film.profile_table.ProfileTable`);
+* the assembled bore of an elastic housing (bolt preload and shell crush,
+  :mod:`conrod.housing.assembly`), a table on the film nodes, uniform in z.
 
 A profile may not close the film of a centred journal: c + min h₀ must stay above 2 % of c.
 """
@@ -79,6 +81,7 @@ class BoreProfile:
     taper : float  Axial taper t [m].  crown : float  Crown k [m].
     out_of_round : tuple  :class:`Harmonic` terms.
     table : ProfileTable or None  Measured offsets.
+    assembled : ProfileTable or None  The assembled bore of the housing (uniform in z).
     """
 
     crush_relief_depth: float = 0.0
@@ -93,6 +96,7 @@ class BoreProfile:
     crown: float = 0.0
     out_of_round: tuple[Harmonic, ...] = ()
     table: ProfileTable | None = None
+    assembled: ProfileTable | None = None
 
     def __post_init__(self) -> None:
         """Ranges that keep every shape meaningful (module docstring)."""
@@ -127,6 +131,8 @@ class BoreProfile:
                   self.offset_halves, self.taper, self.crown,
                   *(h.amplitude for h in self.out_of_round))
         table = self.table is not None and bool(np.any(np.asarray(self.table.offsets)))
+        table = table or (self.assembled is not None
+                          and bool(np.any(np.asarray(self.assembled.offsets))))
         return table or any(value != 0.0 for value in shapes)
 
     @property
@@ -149,6 +155,8 @@ class BoreProfile:
         out = around[:, None] + along[None, :]
         if self.table is not None:
             out = out + self.table.field(theta, z, width)
+        if self.assembled is not None:
+            out = out + self.assembled.field(theta, z, width)
         return out
 
 
@@ -215,4 +223,5 @@ def refuse_profile(geometry, name: str) -> None:
     if geometry.profile is not None:
         raise CaseError(
             f"film = {name!r} cannot take a bore profile (bearing.profile / "
-            "bearing.profile_file; allowed: a grid film, 'reynolds' or 'mass_conserving')")
+            "bearing.profile_file / housing.assembly; allowed: a grid film, 'reynolds' or "
+            "'mass_conserving')")

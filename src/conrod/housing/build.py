@@ -66,7 +66,7 @@ COUPLING_FIELDS = ("coupling_tolerance", "rigid_start_deg", "increment_share",
 
 def _cache_payload(case) -> dict:
     section = case.housing
-    skip = {"stress_angles", "correction", *COUPLING_FIELDS}
+    skip = {"stress_angles", "correction", "assembly", *COUPLING_FIELDS}
     payload = {"housing": section.model_dump(mode="json", exclude=skip),
                "bearing": [case.bearing.diameter, case.bearing.width],
                "rod_length": case.engine.rod_length if case.engine else None,
@@ -106,11 +106,42 @@ def _finite_element(case, make, angles, radius, common, cache_dir, use_cache) ->
             "seconds": time.perf_counter() - start,
             **{name: arrays[name].item() for name in ("build_seconds", "n_dofs", "n_elements",
                                                        "bore_nodes")}}
+    assembly = _assembly(case, factory, holder, cache_dir, use_cache, info)
     housing = make(angles, radius, arrays["compliance"], arrays["inertia_base"], info=info,
-                      structure_factory=factory, **common)
+                      structure_factory=factory, assembly=assembly, **common)
     if "structure" in holder:
         housing.__dict__["structure"] = holder["structure"]
     return housing
+
+
+def _assembly(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -> Any:
+    """The assembled bore of ``[housing.assembly]`` (None without preload and crush), from
+    the cache or one static FE solve (:mod:`conrod.housing.assembly`)."""
+    section = case.housing.assembly
+    if section is None or not section.active:
+        return None
+    from conrod.housing.assembly import AssembledBore, solve_assembly
+
+    def build() -> dict[str, np.ndarray]:
+        start = time.perf_counter()
+        if "structure" not in holder:
+            holder["structure"] = factory()
+        geometry = None
+        if case.housing.model == "builtin":
+            geometry = RodGeometry(**case.housing.rod_outline(
+                case.bearing.diameter, case.engine.rod_length if case.engine else None))
+        width = case.bearing.width
+        shell = 0.5 * (case.housing.bore_diameter(case.bearing.diameter) - case.bearing.diameter)
+        head = case.housing.thicknesses(width)["head"]
+        assembled = solve_assembly(holder["structure"], section, shell, width, geometry, head)
+        return {**assembled.arrays(), "assembly_seconds": np.array(time.perf_counter() - start)}
+
+    payload = {**_cache_payload(case), "assembly": section.model_dump(
+        mode="json", exclude={"clearance_reference"})}
+    arrays, from_cache = load_or_build(cache_key(payload), build, cache_dir, use_cache)
+    info["assembly_from_cache"] = from_cache
+    info["assembly_seconds"] = arrays.pop("assembly_seconds").item()
+    return AssembledBore.from_arrays(arrays, section.clearance_reference)
 
 
 def _structure_factory(case, angles):

@@ -120,8 +120,14 @@ class Simulation:
 
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
-        """Bearing geometry with supply features from ``[bearing]``."""
-        return self._bearing.geometry()
+        """Bearing geometry with supply features from ``[bearing]``; on an elastic housing
+        with ``[housing.assembly]`` the assembled bore is part of its profile."""
+        geometry = self._bearing.geometry()
+        if self.case.housing.assembly is None or not self.case.housing.assembly.active:
+            return geometry
+        from conrod.housing.assembly import assembled_geometry
+
+        return assembled_geometry(geometry, self.housing())
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (given, engine loads or the load table)."""

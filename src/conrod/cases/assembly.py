@@ -1,0 +1,77 @@
+"""``[housing.assembly]``: the big end as assembled — bolt preload at the cap joint and the
+crush of the bearing shell, a static load case of the finite-element housing whose bore
+shape enters the film as a bore profile (docs/elastic.md, *The assembled bore*).
+
+Example::
+
+    [housing.assembly]
+    bolt_preload = 60.0e3        # [N] per bolt
+    crush_height = 40.0e-6       # [m] per half shell
+    shell_youngs_modulus = 2.1e11  # [Pa] steel back of the shell
+
+The joint between rod and cap is **bonded** (the built-in rod is one body, as for the
+compliance): the joint pressure is the normal stress across the split line, and where the
+bonded joint would carry tension over the cycle the report says the joint opens there (a
+frictionless contact joint that really separates is not built).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from conrod.cases.base import Section
+
+JointModelName = Literal["bonded"]
+"""Joint models built: ``bonded`` (rod and cap one body; opening is reported, not modelled)."""
+ClearanceReferenceName = Literal["assembled", "nominal"]
+"""What ``[bearing] radial_clearance`` is: the mean clearance of the assembled bore, or that of
+the shell in the unstressed housing bore."""
+
+
+class AssemblySection(Section):
+    """Bolt preload and shell crush of the assembled big end (module docstring)."""
+
+    bolt_preload: float = Field(default=0.0, ge=0.0, le=2.0e6, description=(
+        "Preload of each of the two cap bolts [N]"))
+    bolt_distance: float | None = Field(default=None, gt=0.0, le=5.0, description=(
+        "Distance between the two bolt axes (built-in rod); default: the bore diameter plus "
+        "the thinner head wall (bolts at mid-wall) [m]"))
+    bolt_thread_depth: float | None = Field(default=None, gt=0.0, le=1.0, description=(
+        "Distance from the split line into the rod to the centre of the thread engagement; "
+        "default half the head wall thickness [m]"))
+    crush_height: float = Field(default=0.0, ge=0.0, le=1.0e-3, description=(
+        "Crush height of each half shell: its outer circumference less half the housing bore "
+        "circumference [m]"))
+    interference: float = Field(default=0.0, ge=0.0, le=3.0e-4, description=(
+        "Radial interference of the shell in the housing bore, instead of crush_height "
+        "(crush_height = π × interference) [m]"))
+    shell_youngs_modulus: float = Field(default=2.1e11, gt=1.0e9, le=1.0e12, description=(
+        "Young's modulus of the shell (its steel back) [Pa]"))
+    joint: JointModelName = Field(default="bonded", description=(
+        "Rod/cap joint model: bonded (opening over the cycle is reported) [-]"))
+    clearance_reference: ClearanceReferenceName = Field(default="assembled", description=(
+        "bearing.radial_clearance is the mean clearance of the assembled bore (assembled: the "
+        "bore's out-of-round shape enters the film) or of the shell in the unstressed housing "
+        "(nominal: its mean expansion enters too) [-]"))
+
+    @model_validator(mode="after")
+    def _one_crush(self) -> AssemblySection:
+        if self.crush_height > 0.0 and self.interference > 0.0:
+            raise ValueError(f"housing.assembly.interference = {self.interference!r}: give "
+                             "crush_height or interference, not both (allowed: one of them 0)")
+        return self
+
+    @property
+    def active(self) -> bool:
+        """True when some preload or crush loads the housing [-]."""
+        return self.bolt_preload > 0.0 or self.shell_crush_height > 0.0
+
+    @property
+    def shell_crush_height(self) -> float:
+        """Crush height per half shell [m] (from ``interference`` when that is given)."""
+        if self.interference > 0.0:
+            return math.pi * self.interference
+        return self.crush_height

@@ -1,0 +1,98 @@
+"""The rod/cap joint of the built-in rod: points along the split line and the normal stress
+across it, a linear operator on the FE displacement field.
+
+The joint is the part of the split line inside the big end: on each side of the bore (the
+two bolt sides, ``+`` towards +y_rod), from the bore to the outline. ``JOINT_POINTS`` points
+per side at the centres of equal segments sample it. The normal stress across the joint is
+
+.. math:: σ_{nn} = \\mathbf n\\cdot σ\\,\\mathbf n, \\qquad
+          σ = λ^*\\operatorname{tr}ε\\,I + 2μ ε
+
+with n the split-line normal (towards the rod side), evaluated exactly in the element that
+holds each point (P2 gradients at the point's own reference coordinates). Negative is
+pressure (the joint pressed together); in the bonded model a positive σ_nn is tension the
+real joint cannot carry: it would open there.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+from skfem import Basis, MeshTri
+
+JOINT_POINTS = 16
+"""Sample points per joint side [-]."""
+
+
+@dataclass(frozen=True)
+class JointLine:
+    """Sample points of the joint, side ``+`` then side ``−``.
+
+    points : ndarray  (2 k, 2) rod frame [m].
+    distance : ndarray  (2 k,) distance from the bore centre along the split line [m].
+    side : ndarray  (2 k,) +1 or −1 [-].
+    normal : ndarray  (2,) split-line normal towards the rod side [-].
+    segment : ndarray  (2 k,) length of the joint each point stands for [m].
+    """
+
+    points: np.ndarray
+    distance: np.ndarray
+    side: np.ndarray
+    normal: np.ndarray
+    segment: np.ndarray
+
+
+def joint_line(geometry, n_points: int = JOINT_POINTS) -> JointLine:
+    """The joint of the built-in rod ``geometry`` (:class:`~conrod.housing.geometry.
+    RodGeometry`): from the bore to the outline on both sides of the split line."""
+    normal = geometry.split_normal()
+    tangent = np.array([-normal[1], normal[0]])
+    points, distance, side, segment = [], [], [], []
+    for sign in (1.0, -1.0):
+        outer = _outline_reach(geometry)
+        edges = np.linspace(geometry.bore_radius, outer, n_points + 1)
+        centres = 0.5 * (edges[1:] + edges[:-1])
+        points.append(sign * centres[:, None] * tangent[None, :])
+        distance.append(centres)
+        side.append(np.full(n_points, sign))
+        segment.append(np.diff(edges))
+    return JointLine(np.vstack(points), np.concatenate(distance), np.concatenate(side),
+                     normal, np.concatenate(segment))
+
+
+def _outline_reach(geometry) -> float:
+    """Reach of the joint from the bore centre [m]: both rod and cap hold material up to the
+    smaller of their outer radii (the outline's circles about the bore centre)."""
+    return float(min(geometry.head_outer_radius, geometry.cap_outer_radius))
+
+
+def normal_stress_operator(model, points: np.ndarray, normal: np.ndarray) -> sp.csr_matrix:
+    """S (k × n_dof) [Pa/m]: σ_nn at ``points`` (k, 2) [m] of an FE displacement field of
+    ``model`` (:class:`~conrod.housing.fe.ClampedModel`), n the unit normal (2,) [-]."""
+    mesh = model.fe_mesh.mesh
+    corners = int(mesh.t.max()) + 1
+    finder = MeshTri(mesh.doflocs[:, :corners], mesh.t).element_finder()
+    elements = finder(points[:, 0], points[:, 1])
+    local = mesh.mapping().invF(points.T[:, :, None], tind=elements)
+    lam, mu = model.material.plane_stress_lambda, model.material.shear_modulus
+    rows, columns, values = [], [], []
+    for k, element in enumerate(elements):
+        basis = Basis(mesh, model.basis.elem, elements=np.array([element]),
+                      quadrature=(local[:, k, :], np.array([0.5])))
+        for i, dof in enumerate(basis.element_dofs[:, 0]):
+            grad = basis.basis[i][0].grad[:, :, 0, 0]  # ∂u_a/∂x_b of shape function i
+            strain = 0.5 * (grad + grad.T)
+            stress = lam * np.trace(strain) * np.eye(2) + 2.0 * mu * strain
+            rows.append(k)
+            columns.append(dof)
+            values.append(float(normal @ stress @ normal))
+    return sp.csr_matrix((values, (rows, columns)), shape=(len(points), model.n_dofs))
+
+
+def joint_force(line: JointLine, stress: np.ndarray, thickness: float) -> np.ndarray:
+    """Normal force across each joint side (+, −) [N] of σ_nn at the points [Pa] (midpoint
+    rule over the segments, plane-stress ``thickness`` [m]); negative: pressed together."""
+    weights = line.segment * thickness
+    return np.array([np.sum((stress * weights)[line.side == sign]) for sign in (1.0, -1.0)])
