@@ -218,6 +218,30 @@ class AssembledBore:
                    float(arrays["assembly_crush_pressure"]),
                    float(arrays["assembly_bolt_preload"]), reference, joint or None)
 
+    def joint_stress(self, forces: np.ndarray, coefficients: np.ndarray | None = None
+                     ) -> np.ndarray:
+        """σ_nn along the joint [Pa], shape (m, 2k): assembled plus the running loads of m
+        crank angles, film nodal forces (m, n) [N] and inertia coefficients (m, 4) (None:
+        without the rod's inertia) (linear superposition in the bonded joint)."""
+        if self.joint is None:
+            raise CaseError("housing.assembly: the joint is known on the built-in rod only "
+                            "(allowed: model = 'builtin')")
+        stress = self.joint["stress_Pa"][None, :] + np.asarray(forces) @ self.joint[
+            "influence_Pa_per_N"].T
+        if coefficients is not None:
+            stress = stress + np.asarray(coefficients) @ self.joint["inertia_Pa"].T
+        return stress
+
+    def joint_force(self) -> np.ndarray:
+        """Normal force across each joint side (+, −) as assembled [N] (negative: pressed
+        together; −preload per side from the bolts, crush pulls it apart)."""
+        from conrod.housing.joint import JointLine, joint_force
+
+        joint = self.joint
+        line = JointLine(np.zeros((len(joint["side"]), 2)), joint["distance_m"],
+                         joint["side"], np.zeros(2), joint["segment_m"])
+        return joint_force(line, joint["stress_Pa"], joint["thickness_m"])
+
     def bore_profile(self, projector: np.ndarray) -> np.ndarray:
         """h₀(θ_j) [m] of the film: the corrected displacement (projector P), its mean
         removed for ``clearance_reference = "assembled"``."""
@@ -259,7 +283,7 @@ def joint_arrays(structure, geometry, field: np.ndarray, thickness: float | None
     from conrod.housing.joint import joint_line, normal_stress_operator
 
     model = structure.model
-    line = joint_line(geometry)
+    line = joint_line(geometry, model.fe_mesh.mesh)
     operator = normal_stress_operator(model, line.points, line.normal)
     unit_fields = model.solve(structure.film_load(np.eye(len(structure.film_angles))))
     return {"distance_m": line.distance, "side": line.side, "segment_m": line.segment,

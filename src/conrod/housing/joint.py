@@ -44,14 +44,15 @@ class JointLine:
     segment: np.ndarray
 
 
-def joint_line(geometry, n_points: int = JOINT_POINTS) -> JointLine:
+def joint_line(geometry, mesh, n_points: int = JOINT_POINTS) -> JointLine:
     """The joint of the built-in rod ``geometry`` (:class:`~conrod.housing.geometry.
-    RodGeometry`): from the bore to the outline on both sides of the split line."""
+    RodGeometry`) meshed by ``mesh`` (its MeshTri2): from the bore to the mesh's outline on
+    both sides of the split line."""
     normal = geometry.split_normal()
     tangent = np.array([-normal[1], normal[0]])
     points, distance, side, segment = [], [], [], []
     for sign in (1.0, -1.0):
-        outer = _outline_reach(geometry)
+        outer = mesh_reach(mesh, sign * tangent, geometry.bore_radius)
         edges = np.linspace(geometry.bore_radius, outer, n_points + 1)
         centres = 0.5 * (edges[1:] + edges[:-1])
         points.append(sign * centres[:, None] * tangent[None, :])
@@ -62,10 +63,22 @@ def joint_line(geometry, n_points: int = JOINT_POINTS) -> JointLine:
                      normal, np.concatenate(segment))
 
 
-def _outline_reach(geometry) -> float:
-    """Reach of the joint from the bore centre [m]: both rod and cap hold material up to the
-    smaller of their outer radii (the outline's circles about the bore centre)."""
-    return float(min(geometry.head_outer_radius, geometry.cap_outer_radius))
+def mesh_reach(mesh, direction: np.ndarray, bore_radius: float) -> float:
+    """Distance from the bore centre along ``direction`` (2,) to the first boundary edge of
+    ``mesh``'s corner triangles beyond the bore of ``bore_radius`` [m]."""
+    corners = int(mesh.t.max()) + 1
+    linear = MeshTri(mesh.doflocs[:, :corners], mesh.t)
+    facets = linear.facets[:, linear.boundary_facets()]
+    a, b = linear.p[:, facets[0]], linear.p[:, facets[1]]
+    edge = b - a
+    # ray r d = a + s (b − a): solve [d, −edge] (r, s) = a by Cramer's rule
+    det = -direction[0] * edge[1] + direction[1] * edge[0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = (-a[0] * edge[1] + a[1] * edge[0]) / det
+        share = (direction[0] * a[1] - direction[1] * a[0]) / det
+    hit = (np.abs(det) > 0.0) & (share >= 0.0) & (share <= 1.0) & (
+        reach > bore_radius * (1.0 + 1.0e-3))
+    return float(np.min(reach[hit]))
 
 
 def normal_stress_operator(model, points: np.ndarray, normal: np.ndarray) -> sp.csr_matrix:

@@ -1,0 +1,94 @@
+"""The assembled big end in the housing study: its bore profile and its joint over the cycle
+(:class:`conrod.results.housing.AssembledBoreReport`).
+
+Over the cycle the bonded joint carries its assembled normal stress plus that of the running
+loads at each crank angle of the load cycle: the film load, the bearing load of the load
+diagram spread over the bore as a cosine over ±90° about its direction (the quasi-static film
+resultant, :func:`conrod.housing.stresses.cosine_forces`), and the rod's own inertia (the
+inertia base fields). Where their sum is tension, a real joint opens.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from conrod.housing.stresses import cosine_forces
+from conrod.results.housing import AssembledBoreReport
+
+LOAD_SOURCE = ("bearing load of the load diagram as a cosine over ±90° (the quasi-static film "
+               "resultant) and the rod's own inertia, at every crank angle of the load cycle")
+
+
+def assembly_report(housing: Any, case: Any) -> AssembledBoreReport | None:
+    """The assembled bore of ``housing`` (None without ``[housing.assembly]``) and, on the
+    built-in rod with a load cycle, its joint over the cycle (module docstring)."""
+    assembled = housing.assembly
+    if assembled is None:
+        return None
+    report = {"angles": housing.angles, "raw": assembled.displacement,
+              "profile": housing.assembled_profile(),
+              "crush_pressure": assembled.crush_pressure,
+              "bolt_preload": assembled.bolt_preload,
+              "clearance_reference": assembled.clearance_reference}
+    joint = assembled.joint
+    if joint is not None:
+        report.update(joint_distance=joint["distance_m"], joint_side=joint["side"],
+                      joint_stress=joint["stress_Pa"], joint_force=assembled.joint_force())
+        if case.engine is not None or case.load is not None:
+            report.update(_over_cycle(housing, case))
+    return AssembledBoreReport(**report)
+
+
+def _over_cycle(housing: Any, case: Any) -> dict[str, Any]:
+    from conrod.simulation.simulation import Simulation
+
+    loads = Simulation(case, housing=housing).load_cycle()
+    forces = np.array([cosine_forces(housing.angles, np.array([x, y]))
+                       for x, y in zip(loads.load_x, loads.load_y, strict=True)])
+    coefficients = None
+    if housing.kinematics is not None:
+        coefficients = np.array([housing.inertia_coefficients(phi)
+                                 for phi in loads.crank_angle])
+    stress = housing.assembly.joint_stress(forces, coefficients)
+    worst = np.argmax(stress, axis=0)
+    return {"cycle_max_stress": stress.max(axis=0),
+            "cycle_worst_angle": np.asarray(loads.crank_angle)[worst],
+            "load_source": LOAD_SOURCE if coefficients is not None else LOAD_SOURCE.replace(
+                " and the rod's own inertia", "")}
+
+
+def assembly_summary(report: AssembledBoreReport | None) -> dict[str, Any] | None:
+    """The ``assembly`` entry of ``housing_summary.json`` (units in the key names)."""
+    if report is None:
+        return None
+    summary: dict[str, Any] = {
+        "bolt_preload_N": report.bolt_preload,
+        "crush_pressure_Pa": report.crush_pressure,
+        "clearance_reference": report.clearance_reference,
+        "joint_model": "bonded (opening is reported where the bonded joint carries tension)",
+        "raw_bore_displacement_range_um": [float(report.raw.min() * 1e6),
+                                           float(report.raw.max() * 1e6)],
+        "film_profile_range_um": [float(report.profile.min() * 1e6),
+                                  float(report.profile.max() * 1e6)],
+        "out_of_roundness_um": report.out_of_roundness * 1e6}
+    if report.joint_stress is not None:
+        pressure = -report.joint_stress
+        summary["joint"] = {
+            "normal_force_N": report.joint_force.tolist(),
+            "pressure_mean_Pa": [float(pressure[report.joint_side == s].mean())
+                                 for s in (1.0, -1.0)],
+            "pressure_min_Pa": [float(pressure[report.joint_side == s].min())
+                                for s in (1.0, -1.0)]}
+    if report.cycle_max_stress is not None:
+        worst = int(np.argmax(report.cycle_max_stress))
+        summary["joint"]["over_cycle"] = {
+            "opens": report.joint_opens,
+            "open_share_of_joint": float(np.mean(report.cycle_max_stress > 0.0)),
+            "smallest_pressure_Pa": float(-report.cycle_max_stress[worst]),
+            "at_crank_angle_deg": float(np.degrees(report.cycle_worst_angle[worst])),
+            "at_side": "+y" if report.joint_side[worst] > 0 else "-y",
+            "at_distance_from_bore_centre_m": float(report.joint_distance[worst]),
+            "running_loads": report.load_source}
+    return summary
