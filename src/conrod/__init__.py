@@ -12,10 +12,10 @@ The names below are imported when first used, so that ``import conrod`` (and
 
 from __future__ import annotations
 
-import importlib
 import os
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
+from conrod._lazy import lazy_getattr
 from conrod._version import __version__
 from conrod.io.numba_cache import tolerate_unreadable_cache
 
@@ -41,13 +41,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from conrod.results.cycle_results import RunResults
 
 
-def __getattr__(name: str) -> Any:
-    module = _PUBLIC.get(name)
-    if module is None:
-        raise AttributeError(f"module 'conrod' has no attribute {name!r}")
-    value = getattr(importlib.import_module(module), name)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_getattr(__name__, _PUBLIC, globals())
 
 
 def __dir__() -> list[str]:

@@ -22,8 +22,11 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+
+from conrod.film.base import FilmResult
 
 CHORD_CONTRACTION = 0.1
 """Keep a Jacobian while a step reduces max|G| to at most this share [-]."""
@@ -318,3 +321,32 @@ def semismooth_coupling(evaluate: Evaluate, respond, start: np.ndarray, inertia:
     chord.inverse = inverse
     return CouplingOutcome(u, payload, solves, residual, increment,
                            min(residual, correction) <= settings.tolerance)
+
+
+@dataclass(frozen=True)
+class SolvedPayload:
+    """A full solve of the base film (the coupling without the exact response): its result
+    with the pressure, and the base film's memory after it."""
+
+    result: FilmResult
+    memory: Any
+
+    def force(self) -> np.ndarray:
+        """Film force on the journal (F_x, F_y) [N]."""
+        return np.array([self.result.force_x, self.result.force_y])
+
+    def finish(self) -> tuple[FilmResult, Any]:
+        """(film result, base film memory)."""
+        return self.result, self.memory
+
+
+def film_closing(payload, carries_asperity: bool) -> str:
+    """h_min on the deformed film of the last trial [m] and, without asperity contact,
+    the fix for a film too thin to carry the load ('' when the payload does not say)."""
+    if isinstance(payload, SolvedPayload):
+        return ""
+    h_min = payload.min_film_thickness()
+    advice = ("" if carries_asperity else "; if the film closes, enable mixed lubrication "
+              "([contact] model = 'greenwood_tripp') so that asperity contact carries the load")
+    return f"; h_min {h_min:.3g} m on the deformed film{advice}"
+

@@ -66,7 +66,9 @@ from conrod.ehd.coupling import (
     CouplingOutcome,
     CouplingSettings,
     JacobianCache,
+    SolvedPayload,
     dominant_directions,
+    film_closing,
     fixed_point_coupling,
     solve_coupling,
 )
@@ -274,7 +276,7 @@ class ElasticFilm(FilmWrapper):
             raise ConvergenceError(
                 "elastohydrodynamic force balance did not converge (residual: film force + "
                 f"load, N; bore displacement residual {outcome.residual:.3g} m"
-                f"{_film_closing(outcome.payload, self.carries_asperity())})",
+                f"{film_closing(outcome.payload, self.carries_asperity())})",
                 where=f"crank angle {np.degrees(memory.crank_angle) % 720.0:.1f} deg",
                 residual=outcome.force_residual * (float(np.hypot(*load)) + 1.0))
         _, inner = outcome.payload.finish()
@@ -426,32 +428,4 @@ class ElasticFilm(FilmWrapper):
             self.chords["coupling"]))
         return CouplingOutcome(outcome.own, outcome.payload, outcome.solves, outcome.residual,
                                outcome.increment, outcome.residual <= self.coupling.tolerance)
-
-
-@dataclasses.dataclass(frozen=True)
-class SolvedPayload:
-    """A full solve of the base film (the coupling without the exact response): its result
-    with the pressure, and the base film's memory after it."""
-
-    result: FilmResult
-    memory: Any
-
-    def force(self) -> np.ndarray:
-        """Film force on the journal (F_x, F_y) [N]."""
-        return np.array([self.result.force_x, self.result.force_y])
-
-    def finish(self) -> tuple[FilmResult, Any]:
-        """(film result, base film memory)."""
-        return self.result, self.memory
-
-
-def _film_closing(payload, carries_asperity: bool) -> str:
-    """h_min on the deformed film of the last trial [m] and, without asperity contact,
-    the fix for a film too thin to carry the load ('' when the payload does not say)."""
-    if isinstance(payload, SolvedPayload):
-        return ""
-    h_min = payload.min_film_thickness()
-    advice = ("" if carries_asperity else "; if the film closes, enable mixed lubrication "
-              "([contact] model = 'greenwood_tripp') so that asperity contact carries the load")
-    return f"; h_min {h_min:.3g} m on the deformed film{advice}"
 

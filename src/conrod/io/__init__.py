@@ -6,8 +6,9 @@ at start-up, and that must not load NumPy (the CSV writer's).
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from conrod._lazy import lazy_getattr
 
 if TYPE_CHECKING:  # pragma: no cover
     from conrod.io.atomic import atomic_path, write_csv, write_json, write_text
@@ -17,12 +18,7 @@ _PUBLIC = dict.fromkeys(("atomic_path", "write_csv", "write_json", "write_text")
 """Public name → the module that defines it."""
 
 
-def __getattr__(name: str) -> Any:
-    if name not in _PUBLIC:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(_PUBLIC[name]), name)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_getattr(__name__, _PUBLIC, globals())
 
 
 __all__ = ["atomic_path", "write_csv", "write_json", "write_text"]

@@ -18,8 +18,9 @@ The names below are imported when first used (the kernels compile with numba).
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from conrod._lazy import lazy_getattr
 
 if TYPE_CHECKING:  # pragma: no cover
     from conrod.mechanism.model import ClearanceJoint, CrankTrain, Mechanism
@@ -38,12 +39,7 @@ _PUBLIC = {
 """Public name → the module that defines it."""
 
 
-def __getattr__(name: str) -> Any:
-    if name not in _PUBLIC:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(_PUBLIC[name]), name)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_getattr(__name__, _PUBLIC, globals())
 
 
 __all__ = [

@@ -7,8 +7,9 @@ result types in :mod:`conrod.output.figures`.
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from conrod._lazy import lazy_getattr
 
 if TYPE_CHECKING:  # pragma: no cover
     from conrod.plotting.save import save_figure
@@ -19,12 +20,7 @@ _PUBLIC = {
 """Public name → the module that defines it (imported when the name is first used)."""
 
 
-def __getattr__(name: str) -> Any:
-    if name not in _PUBLIC:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(_PUBLIC[name]), name)
-    globals()[name] = value
-    return value
+__getattr__ = lazy_getattr(__name__, _PUBLIC, globals())
 
 
 __all__ = ["save_figure"]

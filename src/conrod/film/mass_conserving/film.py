@@ -47,6 +47,7 @@ from conrod.film.mass_conserving.kernel import (
     projected_sor,
 )
 from conrod.film.mass_conserving.memory import FULL, FilmFields, MassConservingMemory
+from conrod.film.mass_conserving.results import convection, film_end_angle
 from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.profile import profile_field
 from conrod.film.rated_state import state_rate
@@ -438,21 +439,3 @@ class MassConservingFilm:
             inflows = (from_edges, from_supply)
         return film_characteristics(self, state, f, pressure, fraction, inflows)
 
-
-def convection(couette_east: np.ndarray, fraction: np.ndarray) -> np.ndarray:
-    """Upwind Couette-flux balance C_e ϑ_e − C_w ϑ_w per cell [Pa m³]."""
-    forward = couette_east[0, couette_east.shape[1] // 2] >= 0.0
-    east = couette_east * (fraction if forward else np.roll(fraction, -1, axis=0))
-    return east - np.roll(east, 1, axis=0)
-
-
-def film_end_angle(theta: np.ndarray, pressure: np.ndarray, inlet: int) -> float:
-    """First mid-plane node after the inlet where the film is ruptured [rad]."""
-    mid = pressure.shape[1] // 2
-    order = (inlet + 1 + np.arange(theta.size)) % theta.size
-    ruptured = pressure[order, mid] <= 0.0
-    peak = int(np.argmax(pressure[order, mid]))
-    after = np.nonzero(ruptured[peak:])[0]
-    if after.size == 0:
-        return float(theta[inlet])
-    return float(theta[order[peak + after[0]]])
