@@ -75,3 +75,45 @@ class AssemblySection(Section):
         if self.interference > 0.0:
             return math.pi * self.interference
         return self.crush_height
+
+
+class ThermalExpansionSection(Section):
+    """Journal and housing at their mean running temperatures: the clearance change and the
+    housing's thermal distortion (docs/elastic.md, *The warm bore*)."""
+
+    journal_temperature: float = Field(ge=-40.0, le=400.0, description=(
+        "Mean temperature of the journal (crank pin) [degC]"))
+    housing_temperature: float = Field(ge=-40.0, le=400.0, description=(
+        "Mean temperature of the housing and its shell [degC]"))
+    reference_temperature: float = Field(default=20.0, ge=-40.0, le=100.0, description=(
+        "Temperature at which bearing.radial_clearance is given (measured) [degC]"))
+    journal_expansion: float = Field(default=11.5e-6, ge=0.0, le=5.0e-5, description=(
+        "Linear expansion coefficient of the journal (steel default) [1/K]"))
+    housing_expansion: float = Field(default=11.5e-6, ge=0.0, le=5.0e-5, description=(
+        "Linear expansion coefficient of the housing (steel default; aluminium 23e-6) [1/K]"))
+    shell_expansion: float | None = Field(default=None, ge=0.0, le=5.0e-5, description=(
+        "Linear expansion coefficient of the shell through its thickness; default that of "
+        "the housing [1/K]"))
+
+    @property
+    def active(self) -> bool:
+        """True when the journal or the housing is not at the reference temperature [-]."""
+        return (self.journal_temperature != self.reference_temperature
+                or self.housing_temperature != self.reference_temperature)
+
+    @property
+    def housing_strain(self) -> float:
+        """Free thermal strain of the housing α_h (T_h − T_ref) [-]."""
+        return self.housing_expansion * (self.housing_temperature - self.reference_temperature)
+
+    @property
+    def journal_strain(self) -> float:
+        """Free thermal strain of the journal α_j (T_j − T_ref) [-]."""
+        return self.journal_expansion * (self.journal_temperature - self.reference_temperature)
+
+    @property
+    def shell_strain(self) -> float:
+        """Thermal strain of the shell through its thickness (at the housing temperature)
+        [-]."""
+        alpha = self.housing_expansion if self.shell_expansion is None else self.shell_expansion
+        return alpha * (self.housing_temperature - self.reference_temperature)

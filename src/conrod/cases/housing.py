@@ -20,7 +20,7 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
-from conrod.cases.assembly import AssemblySection
+from conrod.cases.assembly import AssemblySection, ThermalExpansionSection
 from conrod.cases.base import Section
 from conrod.errors import CaseError
 
@@ -131,6 +131,8 @@ class HousingSection(Section):
         "Film solves per coupling before the step fails [-]"))
     assembly: AssemblySection | None = Field(default=None, description=(
         "Bolt preload and shell crush of the assembled big end ([housing.assembly]) [-]"))
+    thermal: ThermalExpansionSection | None = Field(default=None, description=(
+        "Journal and housing at their running temperatures ([housing.thermal]) [-]"))
 
     @model_validator(mode="after")
     def _check_model_inputs(self) -> HousingSection:

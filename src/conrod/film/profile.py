@@ -32,8 +32,9 @@ Shapes (all optional, summed):
   barrel that is tighter at the edges);
 * out-of-round: Σ a_n cos(n(θ − φ_n)) (n = 2 ovality, 3 trilobe, ...);
 * a measured table (:class:`~conrod.film.profile_table.ProfileTable`);
-* the assembled bore of an elastic housing (bolt preload and shell crush,
-  :mod:`conrod.housing.assembly`), a table on the film nodes, uniform in z.
+* the as-built bore of an elastic housing (bolt preload, shell crush and thermal distortion,
+  :mod:`conrod.housing.assembly`, :mod:`conrod.housing.thermal`), a table on the film
+  nodes, uniform in z.
 
 A profile may not close the film of a centred journal: c + min h₀ must stay above 2 % of c.
 """
@@ -81,7 +82,7 @@ class BoreProfile:
     taper : float  Axial taper t [m].  crown : float  Crown k [m].
     out_of_round : tuple  :class:`Harmonic` terms.
     table : ProfileTable or None  Measured offsets.
-    assembled : ProfileTable or None  The assembled bore of the housing (uniform in z).
+    housing_bore : ProfileTable or None  The as-built bore of the housing (uniform in z).
     """
 
     crush_relief_depth: float = 0.0
@@ -96,7 +97,7 @@ class BoreProfile:
     crown: float = 0.0
     out_of_round: tuple[Harmonic, ...] = ()
     table: ProfileTable | None = None
-    assembled: ProfileTable | None = None
+    housing_bore: ProfileTable | None = None
 
     def __post_init__(self) -> None:
         """Ranges that keep every shape meaningful (module docstring)."""
@@ -131,8 +132,8 @@ class BoreProfile:
                   self.offset_halves, self.taper, self.crown,
                   *(h.amplitude for h in self.out_of_round))
         table = self.table is not None and bool(np.any(np.asarray(self.table.offsets)))
-        table = table or (self.assembled is not None
-                          and bool(np.any(np.asarray(self.assembled.offsets))))
+        table = table or (self.housing_bore is not None
+                          and bool(np.any(np.asarray(self.housing_bore.offsets))))
         return table or any(value != 0.0 for value in shapes)
 
     @property
@@ -155,8 +156,8 @@ class BoreProfile:
         out = around[:, None] + along[None, :]
         if self.table is not None:
             out = out + self.table.field(theta, z, width)
-        if self.assembled is not None:
-            out = out + self.assembled.field(theta, z, width)
+        if self.housing_bore is not None:
+            out = out + self.housing_bore.field(theta, z, width)
         return out
 
 

@@ -291,19 +291,3 @@ def joint_arrays(structure, geometry, field: np.ndarray, thickness: float | None
             "influence_Pa_per_N": operator @ unit_fields,
             "inertia_Pa": operator @ structure.inertia_fields(),
             "thickness_m": float(thickness if thickness is not None else 0.0)}
-
-
-def assembled_geometry(geometry, housing):
-    """``geometry`` (:class:`~conrod.film.base.BearingGeometry`) with the assembled bore of
-    ``housing`` as a bore profile h₀(θ) beside its own (itself when there is none)."""
-    profile = None if housing is None else housing.assembled_profile()
-    if profile is None:
-        return geometry
-    import dataclasses
-
-    from conrod.film.profile import BoreProfile, ProfileTable
-
-    table = ProfileTable.from_arrays(housing.angles, np.zeros(1), profile[:, None],
-                                     "assembled bore (housing.assembly)")
-    own = geometry.profile if geometry.profile is not None else BoreProfile()
-    return dataclasses.replace(geometry, profile=dataclasses.replace(own, assembled=table))

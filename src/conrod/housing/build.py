@@ -44,6 +44,10 @@ def housing_from_case(case, make: Any, *, cache_dir=None, use_cache: bool = True
     section, angles = case.housing, film_angles(case.solver.n_theta)
     radius = 0.5 * case.bearing.diameter
     common = {"correction": section.correction, "kinematics": crank_kinematics(case)}
+    if section.model not in ("builtin", "mesh"):
+        from conrod.housing.as_built import warm_bore
+
+        common["warm"] = warm_bore(case)  # no FE model: the bore grows as a free ring
     if section.model == "compliance":
         return _imported(case, make, angles, radius, common)
     if section.model in ("builtin", "mesh"):
@@ -66,7 +70,7 @@ COUPLING_FIELDS = ("coupling_tolerance", "rigid_start_deg", "increment_share",
 
 def _cache_payload(case) -> dict:
     section = case.housing
-    skip = {"stress_angles", "correction", "assembly", *COUPLING_FIELDS}
+    skip = {"stress_angles", "correction", "assembly", "thermal", *COUPLING_FIELDS}
     payload = {"housing": section.model_dump(mode="json", exclude=skip),
                "bearing": [case.bearing.diameter, case.bearing.width],
                "rod_length": case.engine.rod_length if case.engine else None,
@@ -107,8 +111,9 @@ def _finite_element(case, make, angles, radius, common, cache_dir, use_cache) ->
             **{name: arrays[name].item() for name in ("build_seconds", "n_dofs", "n_elements",
                                                        "bore_nodes")}}
     assembly = _assembly(case, factory, holder, cache_dir, use_cache, info)
+    warm = _warm(case, factory, holder, cache_dir, use_cache, info)
     housing = make(angles, radius, arrays["compliance"], arrays["inertia_base"], info=info,
-                      structure_factory=factory, assembly=assembly, **common)
+                      structure_factory=factory, assembly=assembly, warm=warm, **common)
     if "structure" in holder:
         housing.__dict__["structure"] = holder["structure"]
     return housing
@@ -142,6 +147,27 @@ def _assembly(case, factory, holder: dict, cache_dir, use_cache: bool, info: dic
     info["assembly_from_cache"] = from_cache
     info["assembly_seconds"] = arrays.pop("assembly_seconds").item()
     return AssembledBore.from_arrays(arrays, section.clearance_reference)
+
+
+def _warm(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -> Any:
+    """The warm bore of ``[housing.thermal]`` (None without it) with the FE bore
+    displacement per unit housing strain, from the cache or one solve
+    (:mod:`conrod.housing.thermal`)."""
+    from conrod.housing.as_built import warm_bore
+
+    if warm_bore(case) is None:
+        return None
+    from conrod.housing.thermal import unit_strain_bore
+
+    def build() -> dict[str, np.ndarray]:
+        if "structure" not in holder:
+            holder["structure"] = factory()
+        return {"unit_strain_bore": unit_strain_bore(holder["structure"])}
+
+    payload = {**_cache_payload(case), "thermal": "unit strain"}
+    arrays, from_cache = load_or_build(cache_key(payload), build, cache_dir, use_cache)
+    info["thermal_from_cache"] = from_cache
+    return warm_bore(case, arrays["unit_strain_bore"])
 
 
 def _structure_factory(case, angles):

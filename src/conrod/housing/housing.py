@@ -51,6 +51,8 @@ class Housing:
         the compliance has a node at every (θ_j, z_k); None: plane, uniform in z.
     assembly : AssembledBore or None  The bore and joint as assembled (bolt preload, shell
         crush; :mod:`conrod.housing.assembly`); None: round when unloaded.
+    warm : WarmBore or None  Clearance change and thermal distortion at the running
+        temperatures (:mod:`conrod.housing.thermal`); None: at the reference temperature.
     """
 
     angles: np.ndarray
@@ -63,6 +65,7 @@ class Housing:
     structure_factory: Any = field(default=None, repr=False)
     axial: np.ndarray | None = None
     assembly: Any = None
+    warm: Any = None
     projector: np.ndarray = field(init=False, repr=False)
     corrected_compliance: np.ndarray = field(init=False, repr=False)
     corrected_inertia: np.ndarray = field(init=False, repr=False)

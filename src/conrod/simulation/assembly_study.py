@@ -92,3 +92,23 @@ def assembly_summary(report: AssembledBoreReport | None) -> dict[str, Any] | Non
             "at_distance_from_bore_centre_m": float(report.joint_distance[worst]),
             "running_loads": report.load_source}
     return summary
+
+
+def warm_summary(housing: Any) -> dict[str, Any] | None:
+    """The ``thermal`` entry of ``housing_summary.json``: temperatures, the bore's thermal
+    growth and the clearance change (None without ``[housing.thermal]``)."""
+    warm = housing.warm
+    if warm is None:
+        return None
+    section = warm.section
+    bore = np.atleast_1d(warm.bore_displacement(housing.projector))
+    return {"journal_temperature_degC": section.journal_temperature,
+            "housing_temperature_degC": section.housing_temperature,
+            "reference_temperature_degC": section.reference_temperature,
+            "bore_growth_mean_um": float(bore.mean() * 1e6),
+            "bore_growth_free_ring_um": section.housing_strain * warm.bore_radius * 1e6,
+            "bore_thermal_out_of_round_um": float(np.ptp(bore) * 1e6),
+            "shell_thickness_growth_um": section.shell_strain * warm.shell_thickness * 1e6,
+            "journal_radius_growth_um": section.journal_strain * warm.journal_radius * 1e6,
+            "clearance_change_um": warm.clearance_change(housing.projector) * 1e6,
+            "housing_temperature_field": "uniform (the housing's mean temperature)"}

@@ -96,6 +96,9 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
             isinstance(film, HasContentStep) or (film.settings.deformation_rate
                                               and film.base.name == "reynolds")),
     }
+    from conrod.housing.as_built import as_built_summary
+
+    info.update(as_built_summary(film.housing))
     if not film.housing.uniform_in_z:  # a 3-D compliance: bore nodes over the width
         info["bore_nodes"] = film.housing.node_count
         info["bore_axial_nodes"] = len(film.housing.axial)

@@ -56,6 +56,10 @@ ProgressCallback = Callable[[str, int, float], None]
 """progress(stage, cycle, periodicity_error) — called after every integrated cycle."""
 
 
+GRID_FILMS = ("reynolds", "mass_conserving")
+"""Films that take a bore profile (the as-built bore) [-]."""
+
+
 class Simulation:
     """Periodic journal-centre orbit and characteristics of one case.
 
@@ -120,14 +124,12 @@ class Simulation:
 
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
-        """Bearing geometry with supply features from ``[bearing]``; on an elastic housing
-        with ``[housing.assembly]`` the assembled bore is part of its profile."""
-        geometry = self._bearing.geometry()
-        if self.case.housing.assembly is None or not self.case.housing.assembly.active:
-            return geometry
-        from conrod.housing.assembly import assembled_geometry
+        """Bearing geometry with supply features from ``[bearing]``, as built and warm
+        (``[housing.assembly]``, ``[housing.thermal]``: :mod:`conrod.housing.as_built`)."""
+        from conrod.housing.as_built import run_geometry
 
-        return assembled_geometry(geometry, self.housing())
+        return run_geometry(self._bearing.geometry(), self.case.housing, self.housing, self.case,
+                            self._film is None and self.solver.film in GRID_FILMS)
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (given, engine loads or the load table)."""
@@ -295,6 +297,8 @@ class Simulation:
         law = self._lubricant.pressure_viscosity_law()
         model = {"housing": "elastic bore (EHD)" if self.elastic() else "rigid bore",
                  "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
+        if self.case.housing.thermal is not None and self.case.housing.thermal.active:
+            model["clearance"] = f"warm: {self.geometry().radial_clearance * 1e6:.2f} µm"
         engine = self.case.engine
         if engine is not None and engine.pressure_model is not None and self.case.load is None:
             model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
