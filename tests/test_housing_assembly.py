@@ -118,10 +118,12 @@ def test_zero_assembly_is_todays_housing_and_film_bit_for_bit(tmp_path):
 
 
 def test_the_assembled_bore_is_the_films_profile(preloaded):
-    """The film of the simulation carries h₀(θ_j) = the corrected assembled bore, mean
-    removed, at every axial node; the rigid companion runs on the round bore."""
+    """The grid film of the simulation carries h₀(θ_j) = the corrected assembled bore, mean
+    removed, at every axial node; the rigid companion and a film that cannot deform (the
+    short film: the bore stays rigid and round) run on the round bore."""
     case = kamaz_case({"assembly": {"bolt_preload": 60.0e3}})
-    simulation = Simulation(case, housing=preloaded)
+    assert Simulation(case, film="short", housing=preloaded).geometry().profile is None
+    simulation = Simulation(case, film="reynolds", housing=preloaded)
     geometry = simulation.geometry()
     z = np.linspace(-0.5 * geometry.width, 0.5 * geometry.width, 5)
     field = geometry.profile.field(preloaded.angles, z, geometry.radial_clearance,
