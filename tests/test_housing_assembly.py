@@ -170,3 +170,44 @@ def test_bad_assembly_is_one_clear_line(housing, match):
 def test_preload_needs_the_built_in_rod(tmp_path):
     with pytest.raises(CaseError, match=r"bolt_preload needs the built-in rod"):
         ring_case(tmp_path, {"bolt_preload": 1e4})
+
+
+def test_conrod_housing_reports_the_assembled_bore_and_joint(tmp_path):
+    """``conrod housing`` with the example's [housing.assembly] uncommented and a warm bore:
+    the assembled bore table and figure, the joint table, and one truth between the table
+    and the summary (out-of-roundness, joint pressure, clearance change)."""
+    import csv
+    import json
+
+    from typer.testing import CliRunner
+
+    from conrod.cli.app import _register_commands, app
+    from elastic_helpers import EXAMPLES
+
+    text = (EXAMPLES / "kamaz_740_truck_diesel.toml").read_text()
+    text = text.replace("# [housing.assembly]\n# bolt_preload = 75.0e3",
+                        "[housing.assembly]\nbolt_preload = 75.0e3")
+    text = text.replace("# crush_height = 40.0e-6", "crush_height = 40.0e-6")
+    text += ("\n[housing.thermal]\njournal_temperature = 105.0\n"
+             "housing_temperature = 95.0\n")
+    case = tmp_path / "kamaz.toml"
+    case.write_text(text)
+    _register_commands()
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["housing", str(case), "--out", str(out), "--no-cache"])
+    assert result.exit_code == 0, result.output
+    assert {"assembled_bore.csv", "joint_pressure.csv", "assembled_bore.png"} <= {
+        p.name for p in out.iterdir()}
+    summary = json.loads((out / "housing_summary.json").read_text())
+    with (out / "assembled_bore.csv").open() as handle:
+        rows = [row for row in csv.DictReader(
+            line for line in handle if not line.startswith("#"))]
+    profile = np.array([float(row["film_profile_m"]) for row in rows])
+    assert summary["assembly"]["out_of_roundness_um"] == pytest.approx(np.ptp(profile) * 1e6,
+                                                                        rel=1e-6)
+    assert summary["assembly"]["bolt_preload_N"] == 75.0e3
+    joint = summary["assembly"]["joint"]
+    np.testing.assert_allclose(joint["normal_force_N"], -75.0e3 + 4.1e3, rtol=0.03)
+    assert isinstance(joint["over_cycle"]["opens"], bool)
+    assert summary["thermal"]["clearance_change_um"] == pytest.approx(
+        11.5e-6 * (75.0 * (42.5e-3 - 2.5e-3) - 85.0 * 40e-3) * 1e6, rel=1e-5)
