@@ -136,3 +136,26 @@ def joint_over_run(housing: Any, results: Any, pressures: dict[int, np.ndarray]
             "at_distance_from_bore_centre_m": float(joint["distance_m"][point]),
             "running_loads": "film pressure of this run on the deformed bore and the rod's "
                              "own inertia, at every output angle of the last cycle"}
+
+
+def as_built_lines(summary: dict[str, Any]) -> list[str]:
+    """Terminal lines of ``conrod housing`` on the assembled and warm bore (from
+    ``housing_summary.json``: the numbers the files hold)."""
+    lines = []
+    assembly = summary.get("assembly")
+    if assembly is not None:
+        lines.append(f"assembled bore: {assembly['out_of_roundness_um']:.2f} um out of round "
+                     f"(preload {assembly['bolt_preload_N'] / 1e3:.1f} kN per bolt, crush "
+                     f"pressure {assembly['crush_pressure_Pa'] / 1e6:.2f} MPa)")
+        cycle = assembly.get("joint", {}).get("over_cycle")
+        if cycle is not None:
+            verdict = (f"opens at {cycle['at_crank_angle_deg']:.0f} deg over "
+                       f"{cycle['open_share_of_joint']:.0%} of the joint" if cycle["opens"]
+                       else "stays closed over the cycle")
+            lines.append(f"bonded joint {verdict} (load diagram as a cosine + inertia)")
+    thermal = summary.get("thermal")
+    if thermal is not None:
+        lines.append(f"warm clearance change {thermal['clearance_change_um']:+.2f} um "
+                     f"(journal {thermal['journal_temperature_degC']:g} degC, housing "
+                     f"{thermal['housing_temperature_degC']:g} degC)")
+    return lines
