@@ -6,7 +6,7 @@ changes when the journal and the housing run warmer:
 .. math:: Δc = \\bar u_{th} − ε_s t_s − ε_j R, \\qquad ε = α (T − T_{ref})
 
 with ū_th the mean radial displacement of the housing bore from its thermal strain ε_h (a
-free ring: ε_h R_b exactly, Timoshenko & Goodier §150), the shell at the housing's
+free ring: ε_h R_b exactly, Timoshenko & Goodier ch. 13), the shell at the housing's
 temperature growing inwards through its thickness t_s, and the journal of radius R growing
 by ε_j R. ``[bearing] radial_clearance`` becomes c + Δc for the run.
 
