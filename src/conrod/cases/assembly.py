@@ -78,13 +78,31 @@ class AssemblySection(Section):
 
 
 class ThermalExpansionSection(Section):
-    """Journal and housing at their mean running temperatures: the clearance change and the
-    housing's thermal distortion (docs/elastic.md, *The warm bore*)."""
+    """Journal and housing at their running temperatures: the clearance change and the
+    housing's thermal distortion (docs/elastic.md, *The warm bore*). The housing is at one
+    mean temperature (``housing_temperature``) or conducts from its shell-side temperature
+    around the bore (``shell_temperatures`` at ``shell_temperature_angles``) to the
+    crankcase (FE housings)."""
 
     journal_temperature: float = Field(ge=-40.0, le=400.0, description=(
         "Mean temperature of the journal (crank pin) [degC]"))
-    housing_temperature: float = Field(ge=-40.0, le=400.0, description=(
-        "Mean temperature of the housing and its shell [degC]"))
+    housing_temperature: float | None = Field(default=None, ge=-40.0, le=400.0, description=(
+        "Mean temperature of the housing and its shell, uniform [degC]"))
+    shell_temperature_angles: list[float] = Field(default_factory=list, max_length=360,
+                                                  description=(
+        "Shell angles of shell_temperatures, film frame (0 = towards the small end) [deg]"))
+    shell_temperatures: list[float] = Field(default_factory=list, max_length=360,
+                                            description=(
+        "Shell-side temperature of the housing bore at shell_temperature_angles, "
+        "interpolated periodically [degC]"))
+    ambient_temperature: float | None = Field(default=None, ge=-40.0, le=300.0, description=(
+        "Crankcase temperature the housing's faces and outline give heat to (with "
+        "shell_temperatures) [degC]"))
+    surface_heat_transfer: float = Field(default=300.0, gt=0.0, le=1.0e5, description=(
+        "Heat-transfer coefficient of the housing's faces and outline to the crankcase "
+        "(oil splash and mist) [W/(m^2 K)]"))
+    conductivity: float = Field(default=45.0, gt=0.1, le=500.0, description=(
+        "Thermal conductivity of the housing (steel default) [W/(m K)]"))
     reference_temperature: float = Field(default=20.0, ge=-40.0, le=100.0, description=(
         "Temperature at which bearing.radial_clearance is given (measured) [degC]"))
     journal_expansion: float = Field(default=11.5e-6, ge=0.0, le=5.0e-5, description=(
@@ -95,25 +113,40 @@ class ThermalExpansionSection(Section):
         "Linear expansion coefficient of the shell through its thickness; default that of "
         "the housing [1/K]"))
 
+    @model_validator(mode="after")
+    def _one_housing_temperature(self) -> ThermalExpansionSection:
+        field = bool(self.shell_temperatures)
+        if (self.housing_temperature is None) == (not field):
+            raise ValueError("housing.thermal: give housing_temperature (uniform) or "
+                             "shell_temperatures (conduction from the bore), one of them")
+        if len(self.shell_temperatures) != len(self.shell_temperature_angles):
+            raise ValueError(f"housing.thermal.shell_temperature_angles has "
+                             f"{len(self.shell_temperature_angles)} values, "
+                             f"shell_temperatures {len(self.shell_temperatures)} (allowed: "
+                             "the same number)")
+        for name in ("shell_temperature_angles", "shell_temperatures"):
+            low, high = (0.0, 360.0) if name.endswith("angles") else (-40.0, 400.0)
+            for value in getattr(self, name):
+                if not low <= value <= high:
+                    raise ValueError(f"housing.thermal.{name} contains {value!r}: out of "
+                                     f"range (allowed: >= {low:g} and <= {high:g})")
+        if field and self.ambient_temperature is None:
+            raise ValueError("housing.thermal.ambient_temperature is required with "
+                             "shell_temperatures (the crankcase temperature [degC])")
+        return self
+
+    @property
+    def conducting(self) -> bool:
+        """True when the housing's temperature follows from its shell-side temperatures [-]."""
+        return bool(self.shell_temperatures)
+
     @property
     def active(self) -> bool:
         """True when the journal or the housing is not at the reference temperature [-]."""
-        return (self.journal_temperature != self.reference_temperature
+        return (self.conducting or self.journal_temperature != self.reference_temperature
                 or self.housing_temperature != self.reference_temperature)
-
-    @property
-    def housing_strain(self) -> float:
-        """Free thermal strain of the housing α_h (T_h − T_ref) [-]."""
-        return self.housing_expansion * (self.housing_temperature - self.reference_temperature)
 
     @property
     def journal_strain(self) -> float:
         """Free thermal strain of the journal α_j (T_j − T_ref) [-]."""
         return self.journal_expansion * (self.journal_temperature - self.reference_temperature)
-
-    @property
-    def shell_strain(self) -> float:
-        """Thermal strain of the shell through its thickness (at the housing temperature)
-        [-]."""
-        alpha = self.housing_expansion if self.shell_expansion is None else self.shell_expansion
-        return alpha * (self.housing_temperature - self.reference_temperature)

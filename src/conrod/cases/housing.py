@@ -158,6 +158,11 @@ class HousingSection(Section):
             raise ValueError("housing.assembly.bolt_preload needs the built-in rod (model = "
                              "'builtin', whose split line and bolt positions are known); an "
                              "imported mesh takes crush_height alone")
+        if (self.thermal is not None and self.thermal.conducting
+                and self.model not in ("builtin", "mesh")):
+            raise ValueError(f"housing.thermal.shell_temperatures need a finite-element "
+                             f"housing to conduct in, not model = {self.model!r} (allowed: "
+                             "builtin or mesh; or a uniform housing_temperature)")
         for angle in self.stress_angles:
             if not 0.0 <= angle <= 720.0:
                 raise ValueError(f"housing.stress_angles contains {angle!r}: out of range "

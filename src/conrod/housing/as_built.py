@@ -16,16 +16,21 @@ SMALLEST_WARM_CLEARANCE = 0.1
 """Smallest warm radial clearance, share of the given (cold) one [-]."""
 
 
-def warm_bore(case, unit_bore: np.ndarray | None = None) -> WarmBore | None:
+def warm_bore(case, bore: np.ndarray | None = None, temperatures: tuple[float, float] | None
+              = None) -> WarmBore | None:
     """The warm bore of ``[housing.thermal]`` (None without it, or at the reference
-    temperature); ``unit_bore``: the FE bore displacement per unit housing strain [m]."""
+    temperature); ``bore``: the raw FE thermal bore displacement [m] with ``temperatures``,
+    the housing's mean and the shell-side mean [degC] (default: the uniform
+    ``housing_temperature``)."""
     section = case.housing.thermal
     if section is None or not section.active:
         return None
     bearing = case.bearing
     shell = 0.5 * (case.housing.bore_diameter(bearing.diameter) - bearing.diameter)
+    if temperatures is None:
+        temperatures = (section.housing_temperature, section.housing_temperature)
     return WarmBore(section, 0.5 * bearing.diameter, 0.5 * bearing.diameter + shell, shell,
-                    unit_bore)
+                    bore, *temperatures)
 
 
 def housing_bore_profile(housing) -> np.ndarray | None:

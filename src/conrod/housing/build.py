@@ -150,24 +150,39 @@ def _assembly(case, factory, holder: dict, cache_dir, use_cache: bool, info: dic
 
 
 def _warm(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -> Any:
-    """The warm bore of ``[housing.thermal]`` (None without it) with the FE bore
-    displacement per unit housing strain, from the cache or one solve
-    (:mod:`conrod.housing.thermal`)."""
+    """The warm bore of ``[housing.thermal]`` (None without it) with the FE thermal bore
+    displacement: per unit strain for a uniform housing temperature (cached once), or of the
+    conduction field from the shell-side temperatures (cached per thermal input)
+    (:mod:`conrod.housing.thermal`, :mod:`conrod.housing.conduction`)."""
     from conrod.housing.as_built import warm_bore
 
     if warm_bore(case) is None:
         return None
-    from conrod.housing.thermal import unit_strain_bore
+    from conrod.housing.conduction import Cooling
+    from conrod.housing.thermal import field_bore, unit_strain_bore
+
+    section = case.housing.thermal
 
     def build() -> dict[str, np.ndarray]:
         if "structure" not in holder:
             holder["structure"] = factory()
-        return {"unit_strain_bore": unit_strain_bore(holder["structure"])}
+        if not section.conducting:
+            return {"unit_strain_bore": unit_strain_bore(holder["structure"])}
+        cooling = Cooling(section.conductivity, section.surface_heat_transfer,
+                          section.ambient_temperature)
+        bore, mean, shell = field_bore(holder["structure"], section, cooling)
+        return {"bore": bore, "temperatures": np.array([mean, shell])}
 
-    payload = {**_cache_payload(case), "thermal": "unit strain"}
-    arrays, from_cache = load_or_build(cache_key(payload), build, cache_dir, use_cache)
+    thermal = "unit strain" if not section.conducting else section.model_dump(
+        mode="json", exclude={"journal_temperature", "journal_expansion", "shell_expansion"})
+    arrays, from_cache = load_or_build(cache_key({**_cache_payload(case), "thermal": thermal}),
+                                       build, cache_dir, use_cache)
     info["thermal_from_cache"] = from_cache
-    return warm_bore(case, arrays["unit_strain_bore"])
+    if not section.conducting:
+        strain = section.housing_expansion * (section.housing_temperature
+                                              - section.reference_temperature)
+        return warm_bore(case, strain * arrays["unit_strain_bore"])
+    return warm_bore(case, arrays["bore"], tuple(float(t) for t in arrays["temperatures"]))
 
 
 def _structure_factory(case, angles):

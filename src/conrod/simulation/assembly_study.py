@@ -96,22 +96,26 @@ def assembly_summary(report: AssembledBoreReport | None) -> dict[str, Any] | Non
 
 def warm_summary(housing: Any) -> dict[str, Any] | None:
     """The ``thermal`` entry of ``housing_summary.json``: temperatures, the bore's thermal
-    growth and the clearance change (None without ``[housing.thermal]``)."""
+    growth and distortion, the clearance change (None without ``[housing.thermal]``)."""
     warm = housing.warm
     if warm is None:
         return None
     section = warm.section
     bore = np.atleast_1d(warm.bore_displacement(housing.projector))
+    strain = section.housing_expansion * (warm.housing_temperature
+                                          - section.reference_temperature)
     return {"journal_temperature_degC": section.journal_temperature,
-            "housing_temperature_degC": section.housing_temperature,
+            "housing_mean_temperature_degC": warm.housing_temperature,
+            "shell_temperature_degC": warm.shell_temperature,
             "reference_temperature_degC": section.reference_temperature,
+            "housing_temperature_field": ("conduction from the shell-side temperatures"
+                                          if section.conducting else "uniform"),
             "bore_growth_mean_um": float(bore.mean() * 1e6),
-            "bore_growth_free_ring_um": section.housing_strain * warm.bore_radius * 1e6,
+            "bore_growth_free_ring_at_mean_um": strain * warm.bore_radius * 1e6,
             "bore_thermal_out_of_round_um": float(np.ptp(bore) * 1e6),
-            "shell_thickness_growth_um": section.shell_strain * warm.shell_thickness * 1e6,
+            "shell_thickness_growth_um": warm.shell_strain * warm.shell_thickness * 1e6,
             "journal_radius_growth_um": section.journal_strain * warm.journal_radius * 1e6,
-            "clearance_change_um": warm.clearance_change(housing.projector) * 1e6,
-            "housing_temperature_field": "uniform (the housing's mean temperature)"}
+            "clearance_change_um": warm.clearance_change(housing.projector) * 1e6}
 
 
 def joint_over_run(housing: Any, results: Any, pressures: dict[int, np.ndarray]
@@ -157,5 +161,6 @@ def as_built_lines(summary: dict[str, Any]) -> list[str]:
     if thermal is not None:
         lines.append(f"warm clearance change {thermal['clearance_change_um']:+.2f} um "
                      f"(journal {thermal['journal_temperature_degC']:g} degC, housing "
-                     f"{thermal['housing_temperature_degC']:g} degC)")
+                     f"{thermal['housing_mean_temperature_degC']:.1f} degC), thermal "
+                     f"out-of-round {thermal['bore_thermal_out_of_round_um']:.2f} um")
     return lines
