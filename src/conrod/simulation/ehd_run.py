@@ -103,7 +103,7 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
 
     info.update(as_built_summary(film.housing))
     if joint:
-        from conrod.simulation.assembly_study import joint_over_run
+        from conrod.simulation.joint_run import joint_over_run
 
         info["joint_over_run"] = joint_over_run(film.housing, results, diagnostics.pressures)
     if not film.housing.uniform_in_z:  # a 3-D compliance: bore nodes over the width
