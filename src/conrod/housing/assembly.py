@@ -135,8 +135,9 @@ def band_load(model, start: np.ndarray, end: np.ndarray, radius: float,
         miss, total = offset(amount)
         if abs(miss) < 1.0e-9 * radius or miss == miss_before:
             break
-        previous, amount, miss_before = amount, amount - miss * (amount - previous) / (
-            miss - miss_before), miss
+        step = -miss * (amount - previous) / (miss - miss_before)
+        previous, miss_before = amount, miss
+        amount = amount + float(np.clip(step, -radius, radius))  # a clipped band: no leaps
     _, total = offset(amount)
     shift = amount * lateral
 
@@ -163,9 +164,24 @@ def bolt_load(model, layout: BoltLayout, preload: float) -> np.ndarray:
     along = layout.band_length * layout.direction
     load = np.zeros(model.n_dofs)
     for head, thread in zip(layout.heads, layout.threads, strict=True):
-        load += band_load(model, head - across, head + across, layout.spot_radius, push)
-        load += band_load(model, thread - along, thread + along, layout.spot_radius, -push)
+        radius = max(layout.spot_radius, local_element_size(model, head))
+        load += band_load(model, head - across, head + across, radius, push)
+        radius = max(layout.spot_radius, local_element_size(model, thread))
+        load += band_load(model, thread - along, thread + along, radius, -push)
     return load
+
+
+def local_element_size(model, point: np.ndarray) -> float:
+    """Edge length of an equilateral triangle of the mean area of the three elements whose
+    centroids lie nearest ``point`` [m]: a load band at least this thick holds quadrature
+    points of several elements."""
+    mesh = model.fe_mesh.mesh
+    corners = mesh.doflocs[:, mesh.t[:3]]  # (2, 3, n_elements)
+    centroids = corners.mean(axis=1)
+    nearest = np.argsort(np.hypot(centroids[0] - point[0], centroids[1] - point[1]))[:3]
+    a, b, c = (corners[:, k, nearest] for k in range(3))
+    area = 0.5 * np.abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+    return float(np.sqrt(4.0 * area.mean() / np.sqrt(3.0)))
 
 
 def crush_pressure(crush_height: float, shell_stiffness: float, opening: float) -> float:
