@@ -44,6 +44,9 @@ from skfem import LinearForm, asm
 
 from conrod.errors import CaseError
 
+ASSEMBLY_FORMAT = 2
+"""Version of the assembly load model, part of its cache key: bumped whenever the bolt,
+crush or joint model changes its answer [-]."""
 SPOT_SHARE = 1.0 / 6.0
 """Half-thickness of a bolt's load bands, share of the thinner head wall [-]."""
 BAND_SHIFTS = 8

@@ -141,8 +141,10 @@ def _assembly(case, factory, holder: dict, cache_dir, use_cache: bool, info: dic
         assembled = solve_assembly(holder["structure"], section, shell, width, geometry, head)
         return {**assembled.arrays(), "assembly_seconds": np.array(time.perf_counter() - start)}
 
-    payload = {**_cache_payload(case), "assembly": section.model_dump(
-        mode="json", exclude={"clearance_reference"})}
+    from conrod.housing.assembly import ASSEMBLY_FORMAT
+
+    payload = {**_cache_payload(case), "assembly_format": ASSEMBLY_FORMAT,
+               "assembly": section.model_dump(mode="json", exclude={"clearance_reference"})}
     arrays, from_cache = load_or_build(cache_key(payload), build, cache_dir, use_cache)
     info["assembly_from_cache"] = from_cache
     info["assembly_seconds"] = arrays.pop("assembly_seconds").item()
@@ -175,8 +177,11 @@ def _warm(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -
 
     thermal = "unit strain" if not section.conducting else section.model_dump(
         mode="json", exclude={"journal_temperature", "journal_expansion", "shell_expansion"})
-    arrays, from_cache = load_or_build(cache_key({**_cache_payload(case), "thermal": thermal}),
-                                       build, cache_dir, use_cache)
+    from conrod.housing.thermal import THERMAL_FORMAT
+
+    key = cache_key({**_cache_payload(case), "thermal_format": THERMAL_FORMAT,
+                     "thermal": thermal})
+    arrays, from_cache = load_or_build(key, build, cache_dir, use_cache)
     info["thermal_from_cache"] = from_cache
     if not section.conducting:
         strain = section.housing_expansion * (section.housing_temperature

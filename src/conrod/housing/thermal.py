@@ -32,6 +32,9 @@ from dataclasses import dataclass
 import numpy as np
 from skfem import LinearForm, asm
 
+THERMAL_FORMAT = 1
+"""Version of the thermal load and conduction model, part of their cache key [-]."""
+
 
 def thermal_load(model, strain) -> np.ndarray:
     """FE load vector [N] of the thermal strain field ε_th = α ΔT [-] on the plane-stress
