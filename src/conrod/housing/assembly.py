@@ -8,8 +8,8 @@ the thread pulls the rod towards the cap with F. Both act as smooth bands of bod
 (weight 1 − (r/r_s)² at a distance r from a segment, r_s a sixth of the thinner head wall w
 or the local element size if larger, exactly F each): the head's across the bolt just
 inside the cap's outline (the bearing face, w/2 long), the thread's along the bolt axis
-over the engagement, from ``bolt_thread_depth`` − w/4 to + w/4 past the split line. The pair is self-equilibrated: it compresses the joint
-between them with F per side.
+over the engagement, from ``bolt_thread_depth`` − w/4 to + w/4 past the split line. The
+pair is self-equilibrated: it compresses the joint between them with F per side.
 
 **Shell crush**. The two half shells are together 2Δh longer around than the housing bore
 (Δh the crush height per half shell). Pressed in, the shell is a thin ring of stiffness
