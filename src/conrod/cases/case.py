@@ -31,7 +31,8 @@ from conrod.cases.solver import SolverSection
 from conrod.errors import CaseError
 from conrod.io.text import read_utf8
 
-ADDED_LATER = (("misalignment",), ("bearing", "profile"), ("bearing", "profile_file"))
+ADDED_LATER = (("misalignment",), ("bearing", "profile"), ("bearing", "profile_file"),
+               ("housing", "assembly"), ("housing", "thermal"))
 """Optional items added to the schema after cases were hashed: left out of
 :meth:`Case.content_hash` while unset, so an existing case keeps its hash."""
 
