@@ -42,9 +42,7 @@ def assembly_report(housing: Any, case: Any) -> AssembledBoreReport | None:
 
 
 def _over_cycle(housing: Any, case: Any) -> dict[str, Any]:
-    from conrod.simulation.simulation import Simulation
-
-    loads = Simulation(case, housing=housing).load_cycle()
+    loads = _load_cycle(case)
     forces = np.array([cosine_forces(housing.angles, np.array([x, y]))
                        for x, y in zip(loads.load_x, loads.load_y, strict=True)])
     coefficients = None
@@ -57,6 +55,18 @@ def _over_cycle(housing: Any, case: Any) -> dict[str, Any]:
             "cycle_worst_angle": np.asarray(loads.crank_angle)[worst],
             "load_source": LOAD_SOURCE if coefficients is not None else LOAD_SOURCE.replace(
                 " and the rod's own inertia", "")}
+
+
+def _load_cycle(case: Any):
+    """The case's load cycle (a ``[load]`` table, else the engine's loads), as a run reads
+    it."""
+    if case.load is not None:
+        from conrod.loads.table_load import load_cycle_from_table
+
+        return load_cycle_from_table(case.load, case.resolve(case.load.table))
+    from conrod.loads.engine_loads import compute_engine_loads
+
+    return compute_engine_loads(case).to_load_cycle()
 
 
 def assembly_summary(report: AssembledBoreReport | None) -> dict[str, Any] | None:
