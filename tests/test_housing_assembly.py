@@ -238,3 +238,11 @@ def test_an_elastic_run_on_the_assembled_warm_bore():
     joint = info["joint_over_run"]
     assert isinstance(joint["opens"], bool) and 0.0 <= joint["open_share_of_joint"] <= 1.0
     assert (joint["smallest_pressure_Pa"] < 0.0) == joint["opens"]
+
+
+def test_an_assembly_that_closes_the_film_is_refused(preloaded):
+    """A preload whose bore would touch a centred journal: one line naming the as-built
+    bore, not a film with a negative gap."""
+    case = kamaz_case({"assembly": {"bolt_preload": 1.0e6}})
+    with pytest.raises(CaseError, match=r"bearing profile \(with the as-built housing bore\)"):
+        Simulation(case, film="reynolds").film_model()

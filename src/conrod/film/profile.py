@@ -209,7 +209,8 @@ def profile_field(geometry, theta: np.ndarray, z: np.ndarray) -> np.ndarray | No
     if not c + smallest > SMALLEST_OPEN_GAP * c:
         i, j = np.unravel_index(int(np.argmin(field)), field.shape)
         raise CaseError(
-            f"bearing profile: offset {smallest:.3g} m at θ = {math.degrees(theta[i]):.1f} "
+            f"bearing profile{' (with the as-built housing bore)' if profile.housing_bore else ''}"
+            f": offset {smallest:.3g} m at θ = {math.degrees(theta[i]):.1f} "
             f"deg, z = {z[j]:.4g} m leaves {c + smallest:.3g} m of the radial clearance "
             f"{c:.3g} m for a centred journal (allowed: offset > {-(1 - SMALLEST_OPEN_GAP):g}"
             " x radial_clearance)")
