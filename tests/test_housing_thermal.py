@@ -189,3 +189,20 @@ def test_bad_thermal_input_is_one_clear_line(thermal, match):
 def test_conduction_needs_a_finite_element_housing():
     with pytest.raises(CaseError, match=r"shell_temperatures need a finite-element housing"):
         kamaz_case({"model": "rigid", "thermal": hot_cap()}, n_theta=24)
+
+
+def test_conrod_housing_draws_the_housing_temperature():
+    """A conducting housing: ``conrod housing`` registers the temperature map, drawn from
+    the field the clearance change came from (its corner values between the crankcase and
+    the hottest shell-side temperature)."""
+    import conrod.output  # noqa: F401  (registers the figures)
+    from conrod.output.registry import figures
+    from conrod.simulation.housing_study import housing_study
+
+    case = kamaz_case({"thermal": hot_cap()})
+    results = housing_study(Housing.from_case(case, use_cache=False), case)
+    spec = {figure.file: figure for figure in figures(results)}["housing_temperature.png"]
+    assert spec.build().axes
+    corners = results.housing.warm.corner_temperature
+    assert corners.min() >= 90.0 - 1e-9 and corners.max() <= 130.0 + 1e-9
+    assert results.summary["thermal"]["housing_temperature_field"].startswith("conduction")

@@ -17,11 +17,11 @@ SMALLEST_WARM_CLEARANCE = 0.1
 
 
 def warm_bore(case, bore: np.ndarray | None = None, temperatures: tuple[float, float] | None
-              = None) -> WarmBore | None:
+              = None, corner_temperature: np.ndarray | None = None) -> WarmBore | None:
     """The warm bore of ``[housing.thermal]`` (None without it, or at the reference
     temperature); ``bore``: the raw FE thermal bore displacement [m] with ``temperatures``,
     the housing's mean and the shell-side mean [degC] (default: the uniform
-    ``housing_temperature``)."""
+    ``housing_temperature``), and the conduction field at the mesh corners [degC]."""
     section = case.housing.thermal
     if section is None or not section.active:
         return None
@@ -30,7 +30,7 @@ def warm_bore(case, bore: np.ndarray | None = None, temperatures: tuple[float, f
     if temperatures is None:
         temperatures = (section.housing_temperature, section.housing_temperature)
     return WarmBore(section, 0.5 * bearing.diameter, 0.5 * bearing.diameter + shell, shell,
-                    bore, *temperatures)
+                    bore, *temperatures, corner_temperature)
 
 
 def housing_bore_profile(housing) -> np.ndarray | None:

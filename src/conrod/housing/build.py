@@ -172,8 +172,9 @@ def _warm(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -
             return {"unit_strain_bore": unit_strain_bore(holder["structure"])}
         cooling = Cooling(section.conductivity, section.surface_heat_transfer,
                           section.ambient_temperature)
-        bore, mean, shell = field_bore(holder["structure"], section, cooling)
-        return {"bore": bore, "temperatures": np.array([mean, shell])}
+        bore, mean, shell, corners = field_bore(holder["structure"], section, cooling)
+        return {"bore": bore, "temperatures": np.array([mean, shell]),
+                "corner_temperature": corners}
 
     thermal = "unit strain" if not section.conducting else section.model_dump(
         mode="json", exclude={"journal_temperature", "journal_expansion", "shell_expansion"})
@@ -187,7 +188,8 @@ def _warm(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -
         strain = section.housing_expansion * (section.housing_temperature
                                               - section.reference_temperature)
         return warm_bore(case, strain * arrays["unit_strain_bore"])
-    return warm_bore(case, arrays["bore"], tuple(float(t) for t in arrays["temperatures"]))
+    return warm_bore(case, arrays["bore"], tuple(float(t) for t in arrays["temperatures"]),
+                     arrays["corner_temperature"])
 
 
 def _structure_factory(case, angles):

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from skfem import LinearForm, asm
 
-THERMAL_FORMAT = 1
+THERMAL_FORMAT = 2
 """Version of the thermal load and conduction model, part of their cache key [-]."""
 
 
@@ -61,11 +61,11 @@ def unit_strain_bore(structure) -> np.ndarray:
     return structure.film_displacement(structure.model.solve(load))
 
 
-def field_bore(structure, section, cooling) -> tuple[np.ndarray, float, float]:
+def field_bore(structure, section, cooling) -> tuple[np.ndarray, float, float, np.ndarray]:
     """Raw thermal bore displacement at the film nodes [m] of the housing's conduction field
     from the shell-side temperatures of ``section`` (:mod:`conrod.housing.conduction`), the
-    field's volume mean over the big end [degC] and the mean shell-side temperature
-    [degC]."""
+    field's volume mean over the big end [degC], the mean shell-side temperature [degC] and
+    the field at the mesh's corner nodes [degC]."""
     from conrod.housing.conduction import area_mean, periodic_temperature, temperature_field
 
     model = structure.model
@@ -78,7 +78,9 @@ def field_bore(structure, section, cooling) -> tuple[np.ndarray, float, float]:
     big_end = np.isin(fe_mesh.region, [k for k, name in enumerate(fe_mesh.region_names)
                                        if name in ("cap", "head")])
     mean = area_mean(basis, values, fe_mesh.thickness, big_end if big_end.any() else None)
-    return displacement, mean, float(np.mean(bore(structure.film_angles)))
+    corners = int(fe_mesh.mesh.t.max()) + 1
+    return (displacement, mean, float(np.mean(bore(structure.film_angles))),
+            values[basis.nodal_dofs[0][:corners]])
 
 
 @dataclass(frozen=True)
@@ -93,6 +95,8 @@ class WarmBore:
         housing without an FE model (a free ring at the housing temperature: ε_h R_b).
     housing_temperature : float  Mean temperature of the (big end of the) housing [degC].
     shell_temperature : float  Mean shell-side temperature, the shell's own [degC].
+    corner_temperature : ndarray or None  The conduction field at the mesh's corner nodes
+        [degC]; None for a uniform housing temperature.
     """
 
     section: object
@@ -102,6 +106,7 @@ class WarmBore:
     bore: np.ndarray | None = None
     housing_temperature: float = 20.0
     shell_temperature: float = 20.0
+    corner_temperature: np.ndarray | None = None
 
     @property
     def shell_strain(self) -> float:

@@ -87,6 +87,13 @@ def _housing_figures(results: HousingResults) -> tuple[FigureSpec, ...]:
                            "as the film sees it [µm]; pressure across the joint [MPa] as "
                            "assembled and its smallest over the cycle.",
                            lambda: _plots().assembled_bore_figure(results)),)
+    warm = getattr(results.housing, "warm", None)
+    if results.has_mesh and warm is not None and warm.corner_temperature is not None:
+        own += (FigureSpec("housing_temperature.png", "Housing temperature",
+                           "Temperature of the housing [°C] conducting from its shell-side "
+                           "temperature to the crankcase, on the rod [m].",
+                           lambda: _plots().housing_temperature_figure(
+                               results.housing.structure, warm)),)
     if results.inertia:
         own += (FigureSpec("inertia_deformation.png", "Bore under the rod's inertia",
                            "Radial bore displacement [µm] from the rod's own inertia at TDC "

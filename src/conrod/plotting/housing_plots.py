@@ -169,3 +169,22 @@ def _joint_panel(axes, report) -> None:
     verdict = "" if opens is None else (" — opens over the cycle" if opens
                                         else " — stays closed over the cycle")
     axes.set_title(f"Bonded rod/cap joint{verdict}", fontsize=9)
+
+
+def housing_temperature_figure(structure, warm) -> Figure:
+    """The housing's conduction temperature [°C] at the mesh corners
+    (:class:`conrod.housing.thermal.WarmBore` with ``corner_temperature``), contoured."""
+    figure = Figure(figsize=(11.0, 4.6))
+    axes = figure.subplots()
+    triangulation = _triangulation(structure)
+    image = axes.tricontourf(triangulation, warm.corner_temperature, levels=20, cmap="inferno")
+    axes.tricontour(triangulation, warm.corner_temperature, levels=10, colors="w",
+                    linewidths=0.4)
+    figure.colorbar(image, ax=axes, label="temperature [°C]")
+    axes.set_aspect("equal")
+    axes.set_xlabel("x_rod (towards the small end) [m]")
+    axes.set_ylabel("y_rod [m]")
+    axes.set_title(f"Housing temperature: big-end mean {warm.housing_temperature:.1f} °C, "
+                   f"shell side {warm.shell_temperature:.1f} °C, crankcase "
+                   f"{warm.section.ambient_temperature:g} °C")
+    return figure
