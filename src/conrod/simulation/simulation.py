@@ -298,7 +298,8 @@ class Simulation:
         model = {"housing": "elastic bore (EHD)" if self.elastic() else "rigid bore",
                  "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
         if self.case.housing.thermal is not None and self.case.housing.thermal.active:
-            model["clearance"] = f"warm: {self.geometry().radial_clearance * 1e6:.2f} µm"
+            model["housing"] += (f" (warm clearance "
+                                 f"{self.geometry().radial_clearance * 1e6:.2f} µm)")
         engine = self.case.engine
         if engine is not None and engine.pressure_model is not None and self.case.load is None:
             model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
