@@ -52,7 +52,8 @@ def test_diagnostics_are_reported_per_crank_angle(stiff_run):
     # bore displacement of the stiff rod: 1e-4 of the estimated rod's, i.e. nanometres
     assert np.max(np.abs(stiff_run.deformation)) < 1e-7
     items = elastic_summary_items(stiff_run)
-    assert set(items["comparison"]) == {"rigid", "elastic", "difference_percent", "units"}
+    assert set(items["comparison"]) == {"rigid", "elastic", "difference_percent", "units",
+                                        "firing_stroke", "bore_displacement_at_elastic_h_min"}
 
 
 def test_results_folder_holds_elastic_rigid_and_comparison(stiff_run, tmp_path):

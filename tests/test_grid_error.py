@@ -99,3 +99,35 @@ def test_estimate_within_a_factor_2_of_the_three_grid_richardson_error(example):
             continue
         reference = best + extrapolated_error(three, sizes, order) - ours.values[0]
         assert 0.5 <= ours.error / reference <= 2.0, (quantity, ours, reference)
+
+
+def test_a_coarse_orbit_that_fails_leaves_the_run_with_a_warning(monkeypatch):
+    """A coarser orbit of the estimate that does not converge (a coarse grid can close the
+    film where the run grid does not) keeps the run's answer and says the grid error is
+    missing, instead of failing the run."""
+    import dataclasses
+    from types import SimpleNamespace
+
+    from conrod.errors import ConvergenceError
+    from conrod.simulation import grid_error
+
+    def failing(simulation, grid, progress):
+        raise ConvergenceError(f"h_min = -1.2e-07 m at crank angle 20.0 deg on {grid}")
+
+    @dataclasses.dataclass(frozen=True)
+    class Summary:
+        film_model: str = "reynolds"
+        warnings: tuple = ()
+        grid_error: object = None
+
+    @dataclasses.dataclass(frozen=True)
+    class Results:
+        summary: Summary
+
+    monkeypatch.setattr(grid_error, "_coarse_run", failing)
+    simulation = SimpleNamespace(solver=SimpleNamespace(n_theta=36, n_z=8))
+    results = grid_error.with_grid_error(Results(Summary()), simulation)
+    assert results.summary.grid_error is None
+    (warning,) = results.summary.warnings
+    assert warning.startswith("grid error not estimated") and "26 × 6" in warning
+    assert "crank angle 20.0 deg" in warning

@@ -73,10 +73,10 @@ def test_jfo_orbit_is_periodic_and_agrees_with_reynolds():
 def test_pressure_map_uses_the_film_fraction_of_its_crank_angle():
     """The pressure map at the p_max angle must be the JFO field (with ϑ there): its maximum
     equals the cycle's p_max; a full film at the same velocity would overshoot (11.3 MPa)."""
-    from conrod.simulation.simulation import _pressure_map
+    from conrod.simulation.orbit_outputs import pressure_map
 
     film = MassConservingFilm(fed_bearing(), n_theta=24, n_z=4)
     result, cycle, _ = orbit(film)
     problem = OrbitProblem(film, rotating_load(), 0.02, 1.0, 1.0)
-    pressure_at_p_max, _ = _pressure_map(problem, cycle, result.last.film_memory)
+    pressure_at_p_max, _ = pressure_map(problem, cycle, result.last.film_memory)
     assert pressure_at_p_max.max() == pytest.approx(cycle.p_max.max(), rel=1e-6)

@@ -73,7 +73,7 @@ def test_whole_result_folder_with_figures_is_byte_identical(tmp_path):
     for attempt in ("first", "second"):
         write_results(Simulation(case).run(), tmp_path / attempt, figures=True)
     first = _contents(tmp_path / "first")
-    assert {"cycle.csv", "summary.json", "orbit.png", "wear_journal.csv"} <= set(first)
+    assert {"cycle.csv", "summary.json", "orbit.png", "case.toml"} <= set(first)
     assert first == _contents(tmp_path / "second")
 
 

@@ -336,6 +336,15 @@ class HasAcceptedAnswer(Protocol):
 
 
 @runtime_checkable
+class HasEccentricityRange(Protocol):
+    """A film whose values are tabulated up to a largest eccentricity ratio and extrapolated
+    beyond it (the table and mobility films): a run whose orbit goes past it says so."""
+
+    eccentricity_max: float
+    """Largest tabulated eccentricity ratio [-]."""
+
+
+@runtime_checkable
 class SupportsDeformationRate(Protocol):
     """A film that can put the bore's rate ∂u/∂t
     (``RatedFilmState.deformation_rate``, :mod:`conrod.film.rated_state`) in its squeeze

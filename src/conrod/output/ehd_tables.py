@@ -37,9 +37,9 @@ def elastic_summary_items(results: ElasticRunResults) -> dict:
     if results.rigid is not None:
         items["comparison"] = comparison(results.elastic, results.rigid)
         items["comparison"]["firing_stroke"] = results.firing_comparison()
-    if results.bore_displacement is not None:
-        items.setdefault("comparison", {})["bore_displacement_at_elastic_h_min"] = dict(
-            results.bore_displacement)
+    if results.bore_displacement is not None:  # beside the comparison, or the elastic totals
+        items["comparison" if results.rigid is not None else "elastic"][
+            "bore_displacement_at_elastic_h_min"] = dict(results.bore_displacement)
     return items
 
 

@@ -23,7 +23,9 @@ Orbit (``conrod run``):
 * heat-balance temperature above ``lubricant.max_temperature`` → warning, above
   :data:`TEMPERATURE_LIMIT` → error (no oil film exists there);
 * peak film pressure above :data:`FILM_PRESSURE_LIMIT` → warning (a rigid bore under a
-  load its film cannot carry: the lining would yield, the real bore deforms).
+  load its film cannot carry: the lining would yield, the real bore deforms);
+* a tabulated film extrapolated past its largest eccentricity ratio → warning
+  (:func:`table_range_warnings`).
 
 Mechanism (``conrod mechanism``):
 
@@ -243,3 +245,18 @@ def check_mechanism(results: Any, mechanism: Any) -> list[str]:
                             "non-convex for this worn shell; impacts may be spurious (use "
                             "clearance.contact_geometry = \"exact\")")
     return warnings
+
+
+def table_range_warnings(cycle: Any, eccentricity_max: float) -> list[str]:
+    """A warning where the orbit goes past the largest tabulated eccentricity ratio of a
+    table or mobility film (its values there are extrapolated, not tabulated) [-]."""
+    ratio = np.asarray(cycle.eccentricity_ratio)
+    past = ratio > eccentricity_max
+    if not past.any():
+        return []
+    i = int(np.argmax(ratio))
+    share = 100.0 * float(np.mean(past))
+    return [f"journal eccentricity ratio up to {ratio[i]:.5g} at {_angle(cycle.crank_angle, i)}"
+            f", past the film table's last node ({eccentricity_max:g}) at {share:.0f} % of the "
+            "output angles: values there are extrapolated, not tabulated (a finer film, e.g. "
+            "--film reynolds, or a table with a larger eccentricity_max)"]

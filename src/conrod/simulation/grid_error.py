@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from conrod.cases.solver import SolverSection
+from conrod.errors import ConvergenceError
 from conrod.results.grid_error import GridError, GridEstimate, cell_size, richardson
 from conrod.results.summary import film_minimum
 
@@ -50,7 +51,17 @@ def with_grid_error(results: Any, simulation: Any, progress: Any = None) -> Any:
     coarse = coarser_grids(grid)
     if name not in GRID_FILMS or len(coarse) < 2:
         return results
-    runs = [results] + [_coarse_run(simulation, g, progress) for g in coarse]
+    try:
+        runs = [results] + [_coarse_run(simulation, g, progress) for g in coarse]
+    except ConvergenceError as error:  # the run stands; its grid error is a doubt, said
+        text = str(error).splitlines()[0] if str(error) else type(error).__name__
+        warning = (f"grid error not estimated: the orbit on the coarser grid of the estimate "
+                   f"({' or '.join(f'{g[0]} × {g[1]}' for g in coarse)}) failed ({text}); "
+                   "the printed h_min and p_max carry no grid-error estimate "
+                   "(a finer --grid, or --no-grid-error)")
+        summary = dataclasses.replace(results.summary,
+                                      warnings=(*results.summary.warnings, warning))
+        return _with_summary(results, summary)
     grids = (grid, *coarse)
     estimate = GridError(grids, _estimate("h_min", runs, grids),
                          _estimate("p_max", runs, grids),

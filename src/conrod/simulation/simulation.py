@@ -28,7 +28,7 @@ from conrod.contact.analysis import analyse_contact, asperity_friction_power
 from conrod.contact.asperity import kernel_parameters
 from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel
-from conrod.film.capabilities import SupportsDeformation
+from conrod.film.capabilities import HasEccentricityRange, SupportsDeformation
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
@@ -39,7 +39,7 @@ from conrod.orbit.integrators import Integrator
 from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
 from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
-from conrod.results.plausibility import check_run
+from conrod.results.plausibility import check_run, table_range_warnings
 from conrod.results.summary import contact_warnings, summarise
 from conrod.simulation.orbit_outputs import (
     film_asperity_force,
@@ -285,6 +285,8 @@ class Simulation:
         warnings = (summary.warnings  # check_run: or ConvergenceError
                     + tuple(check_run(results, self.case, problem.contact_radius))
                     + tuple(contact_warnings(cycle)))
+        if isinstance(problem.film, HasEccentricityRange):
+            warnings += tuple(table_range_warnings(cycle, problem.film.eccentricity_max))
         wall_time = time.perf_counter() - start
         summary = dataclasses.replace(summary, warnings=warnings, wall_time=wall_time)
         resolved = self.case.model_copy(update={"solver": self.solver})  # with the overrides
