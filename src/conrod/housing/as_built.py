@@ -43,6 +43,15 @@ def housing_bore_profile(housing) -> np.ndarray | None:
     return None if not parts else np.sum(parts, axis=0)
 
 
+def carried_bore_shape(geometry, housing) -> np.ndarray | None:
+    """The housing's static bore shape h₀(θ_j) [m] when the film of ``geometry`` carries it
+    (its profile holds the as-built bore), else None."""
+    profile = getattr(geometry, "profile", None)
+    if profile is None or getattr(profile, "housing_bore", None) is None:
+        return None
+    return housing_bore_profile(housing)
+
+
 def as_built_geometry(geometry, housing, warm: WarmBore | None, with_profile: bool):
     """``geometry`` (:class:`~conrod.film.base.BearingGeometry`) with the clearance change
     of ``warm`` and, when ``with_profile`` (a grid film on the elastic ``housing``), the

@@ -70,7 +70,11 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
                                 pressure_rows=tuple(range(len(results.cycle.crank_angle)))
                                 if joint else tuple(rows.values()))
     film = problem.film
-    angles, thickness = diagnostics.film_thickness(results.cycle, problem.clearance)
+    from conrod.housing.as_built import carried_bore_shape
+
+    angles, thickness = diagnostics.film_thickness(
+        results.cycle, problem.clearance,
+        bore_shape=carried_bore_shape(film.base.geometry, film.housing))
     results = dataclasses.replace(results, film_thickness=thickness, film_angles=angles)
     if film.carries_asperity():  # contact columns from the asperity on the deformed film
         results = dataclasses.replace(results, contact=analyse_contact(
