@@ -272,3 +272,13 @@ def test_an_inclined_split_carries_the_preload(split_angle, bolt_distance):
     assert abs(load[0::2].sum()) < 1e-6 and abs(load[1::2].sum()) < 1e-6
     assert abs(np.sum(x * load[1::2]) - np.sum(y * load[0::2])) < 1e-5
     np.testing.assert_allclose(housing.assembly.joint_force(), -6.0e4, rtol=0.025)
+
+
+def test_crush_pulls_the_joint_apart_by_statics():
+    """Crush alone: the cap's half of the bore pressure, 2 p R_b b, pulls the cap off; each
+    joint side carries p R_b b in tension (statics of the cap; measured 0.9 %)."""
+    housing = Housing.from_case(kamaz_case({"assembly": {"crush_height": 40e-6}}),
+                                use_cache=False)
+    assembled = housing.assembly
+    pull = assembled.crush_pressure * housing.structure.bore_radius * 0.03
+    np.testing.assert_allclose(assembled.joint_force(), pull, rtol=0.025)
