@@ -37,11 +37,12 @@ class AssemblySection(Section):
     bolt_preload: float = Field(default=0.0, ge=0.0, le=2.0e6, description=(
         "Preload of each of the two cap bolts [N]"))
     bolt_distance: float | None = Field(default=None, gt=0.0, le=5.0, description=(
-        "Distance between the two bolt axes (built-in rod); default: the bore diameter plus "
-        "the thinner head wall (bolts at mid-wall) [m]"))
+        "Distance between the two bolt axes; built-in rod default: the bore diameter plus "
+        "the thinner head wall (bolts at mid-wall); required on an imported mesh [m]"))
     bolt_thread_depth: float | None = Field(default=None, gt=0.0, le=1.0, description=(
         "Distance from the split line into the rod to the centre of the thread engagement; "
-        "default half the head wall thickness [m]"))
+        "built-in rod default half the head wall thickness; required on an imported mesh "
+        "[m]"))
     crush_height: float = Field(default=0.0, ge=0.0, le=1.0e-3, description=(
         "Crush height of each half shell: its outer circumference less half the housing bore "
         "circumference [m]"))

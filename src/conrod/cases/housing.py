@@ -58,7 +58,8 @@ class HousingSection(Section):
     cap_thickness: float | None = _length("Radial thickness of the cap; default 0.16 d_b [m]",
                                           1.0)
     split_angle: float = Field(default=0.0, ge=0.0, le=60.0, description="Inclination of the "
-                               "split line from the perpendicular to the rod axis [deg]")
+                               "split line from the perpendicular to the rod axis (built-in "
+                               "rod; an imported mesh's bolted joint) [deg]")
     shank_width_big_end: float | None = _length(
         "Shank width at the big-end centre; default 0.45 d_b [m]", 2.0)
     shank_width_small_end: float | None = _length(
@@ -154,10 +155,11 @@ class HousingSection(Section):
             raise ValueError(f"housing.assembly needs a finite-element housing, not model = "
                              f"{self.model!r} (allowed: builtin or mesh)")
         if (self.assembly is not None and self.assembly.bolt_preload > 0.0
-                and self.model != "builtin"):
-            raise ValueError("housing.assembly.bolt_preload needs the built-in rod (model = "
-                             "'builtin', whose split line and bolt positions are known); an "
-                             "imported mesh takes crush_height alone")
+                and self.model == "mesh" and (self.assembly.bolt_distance is None
+                                              or self.assembly.bolt_thread_depth is None)):
+            raise ValueError("housing.assembly.bolt_preload on an imported mesh needs "
+                             "bolt_distance and bolt_thread_depth (the built-in rod knows its "
+                             "bolts; a mesh is split as housing.split_angle)")
         if (self.thermal is not None and self.thermal.conducting
                 and self.model not in ("builtin", "mesh")):
             raise ValueError(f"housing.thermal.shell_temperatures need a finite-element "

@@ -107,6 +107,43 @@ def bolt_layout(geometry, bolt_distance: float | None, thread_depth: float | Non
                       0.25 * wall)
 
 
+def mesh_bolt_layout(mesh, split, bolt_distance: float | None, thread_depth: float | None
+                     ) -> BoltLayout:
+    """The bolts of an imported mesh ``mesh`` split along ``split``
+    (:class:`~conrod.housing.joint.SplitLine`): both positions given (``bolt_distance``,
+    ``bolt_thread_depth``), the wall and the cap's depth along the bolts found by ray casts
+    on the mesh; CaseError naming the field when a bolt would not lie in the wall."""
+    from conrod.housing.joint import mesh_reach, ray_reach
+
+    if bolt_distance is None or thread_depth is None:
+        raise CaseError("housing.assembly.bolt_preload on an imported mesh needs "
+                        "bolt_distance and bolt_thread_depth (allowed: both given, in m)")
+    normal = split.split_normal()
+    tangent = np.array([-normal[1], normal[0]])
+    r_b, half = split.bore_radius, 0.5 * bolt_distance
+    joint_reach = min(mesh_reach(mesh, tangent, r_b), mesh_reach(mesh, -tangent, r_b))
+    wall = joint_reach - r_b
+    spot = SPOT_SHARE * wall
+    if not r_b + spot <= half <= joint_reach - spot:
+        raise CaseError(f"housing.assembly.bolt_distance = {bolt_distance:.6g}: the bolts do "
+                        "not lie in the wall at the split line (allowed: >= "
+                        f"{2.0 * (r_b + spot):.6g} and <= {2.0 * (joint_reach - spot):.6g} m)")
+    feet = np.array([half * tangent, -half * tangent])
+    reach = min(ray_reach(mesh, foot, -normal) for foot in feet)
+    if reach < 3.0 * spot:
+        raise CaseError(f"housing.assembly.bolt_distance = {bolt_distance:.6g}: the cap is "
+                        f"only {reach:.3g} m deep along the bolts (allowed: bolts through the "
+                        "cap)")
+    depth_room = min(ray_reach(mesh, foot, normal) for foot in feet)
+    if not 0.25 * wall + spot <= thread_depth <= depth_room - 0.25 * wall - spot:
+        raise CaseError(f"housing.assembly.bolt_thread_depth = {thread_depth:.6g}: the thread "
+                        "engagement does not lie in the rod (allowed: >= "
+                        f"{0.25 * wall + spot:.6g} and <= "
+                        f"{depth_room - 0.25 * wall - spot:.6g} m)")
+    return BoltLayout(feet - (reach - spot) * normal, feet + thread_depth * normal, normal,
+                      spot, 0.25 * wall)
+
+
 def band_load(model, start: np.ndarray, end: np.ndarray, radius: float,
               force: np.ndarray) -> np.ndarray:
     """FE load vector [N] of a smooth band of body force, weight 1 − (r/r_s)² at the
@@ -274,8 +311,10 @@ def solve_assembly(structure, section, shell_thickness: float, shell_width: floa
                    geometry=None, joint_thickness: float | None = None) -> AssembledBore:
     """The assembled bore of ``structure`` (:class:`~conrod.housing.structure.
     StructuralHousing`) under ``section`` (``[housing.assembly]``): shell of thickness t_s
-    and width [m]; ``geometry`` (the built-in rod) places the bolts and the joint, whose
-    plane-stress thickness is ``joint_thickness`` [m]."""
+    and width [m]; ``geometry`` (the built-in rod's outline, or the
+    :class:`~conrod.housing.joint.SplitLine` of an imported mesh; None: crush only, no
+    joint) places the bolts and the joint, whose plane-stress thickness is
+    ``joint_thickness`` [m]."""
     model = structure.model
     unit = structure.film_load(uniform_pressure_forces(structure.film_angles,
                                                        structure.bore_radius, shell_width))
@@ -286,7 +325,11 @@ def solve_assembly(structure, section, shell_thickness: float, shell_width: floa
         pressure = crush_pressure(section.shell_crush_height, stiffness, opening)
         load += pressure * unit
     if section.bolt_preload > 0.0:
-        layout = bolt_layout(geometry, section.bolt_distance, section.bolt_thread_depth)
+        if hasattr(geometry, "head_outer_radius"):  # the built-in rod: its own outline
+            layout = bolt_layout(geometry, section.bolt_distance, section.bolt_thread_depth)
+        else:
+            layout = mesh_bolt_layout(model.fe_mesh.mesh, geometry, section.bolt_distance,
+                                      section.bolt_thread_depth)
         load += bolt_load(model, layout, section.bolt_preload)
     field = model.solve(load)
     joint = None if geometry is None else joint_arrays(structure, geometry, field,

@@ -131,13 +131,18 @@ def _assembly(case, factory, holder: dict, cache_dir, use_cache: bool, info: dic
         start = time.perf_counter()
         if "structure" not in holder:
             holder["structure"] = factory()
-        geometry = None
+        geometry, width = None, case.bearing.width
+        head = case.housing.thicknesses(width)["head"]
         if case.housing.model == "builtin":
             geometry = RodGeometry(**case.housing.rod_outline(
                 case.bearing.diameter, case.engine.rod_length if case.engine else None))
-        width = case.bearing.width
+        elif section.bolt_preload > 0.0:  # an imported mesh split as [housing] split_angle
+            from conrod.housing.joint import SplitLine
+
+            geometry = SplitLine(np.radians(case.housing.split_angle),
+                                 holder["structure"].bore_radius)
+            head = case.housing.thickness if case.housing.thickness is not None else width
         shell = 0.5 * (case.housing.bore_diameter(case.bearing.diameter) - case.bearing.diameter)
-        head = case.housing.thicknesses(width)["head"]
         assembled = solve_assembly(holder["structure"], section, shell, width, geometry, head)
         return {**assembled.arrays(), "assembly_seconds": np.array(time.perf_counter() - start)}
 

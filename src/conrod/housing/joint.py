@@ -66,19 +66,40 @@ def joint_line(geometry, mesh, n_points: int = JOINT_POINTS) -> JointLine:
 def mesh_reach(mesh, direction: np.ndarray, bore_radius: float) -> float:
     """Distance from the bore centre along ``direction`` (2,) to the first boundary edge of
     ``mesh``'s corner triangles beyond the bore of ``bore_radius`` [m]."""
+    return ray_reach(mesh, np.zeros(2), direction, bore_radius * (1.0 + 1.0e-3))
+
+
+def ray_reach(mesh, origin: np.ndarray, direction: np.ndarray, skip: float = 0.0) -> float:
+    """Distance from ``origin`` (2,) [m] along the unit ``direction`` (2,) to the first
+    boundary edge of ``mesh``'s corner triangles farther than ``skip`` [m]; inf when none."""
     corners = int(mesh.t.max()) + 1
     linear = MeshTri(mesh.doflocs[:, :corners], mesh.t)
     facets = linear.facets[:, linear.boundary_facets()]
-    a, b = linear.p[:, facets[0]], linear.p[:, facets[1]]
-    edge = b - a
+    a = linear.p[:, facets[0]] - np.asarray(origin, dtype=float)[:, None]
+    edge = linear.p[:, facets[1]] - linear.p[:, facets[0]]
     # ray r d = a + s (b − a): solve [d, −edge] (r, s) = a by Cramer's rule
     det = -direction[0] * edge[1] + direction[1] * edge[0]
     with np.errstate(divide="ignore", invalid="ignore"):
         reach = (-a[0] * edge[1] + a[1] * edge[0]) / det
         share = (direction[0] * a[1] - direction[1] * a[0]) / det
-    hit = (np.abs(det) > 0.0) & (share >= 0.0) & (share <= 1.0) & (
-        reach > bore_radius * (1.0 + 1.0e-3))
-    return float(np.min(reach[hit]))
+    hit = (np.abs(det) > 0.0) & (share >= 0.0) & (share <= 1.0) & (reach > skip)
+    return float(np.min(reach[hit])) if hit.any() else float("inf")
+
+
+@dataclass(frozen=True)
+class SplitLine:
+    """The split line of an imported mesh: through the bore centre, inclined by
+    ``split_angle`` [rad] from the perpendicular to the rod axis (as the built-in rod's).
+
+    split_angle : float  [rad].  bore_radius : float  [m].
+    """
+
+    split_angle: float
+    bore_radius: float
+
+    def split_normal(self) -> np.ndarray:
+        """Unit normal of the split line pointing to the rod side [-]."""
+        return np.array([np.cos(self.split_angle), np.sin(self.split_angle)])
 
 
 def normal_stress_operator(model, points: np.ndarray, normal: np.ndarray) -> sp.csr_matrix:
