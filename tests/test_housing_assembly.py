@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from conrod.cases.case import Case
 from conrod.errors import CaseError
@@ -319,3 +321,26 @@ def test_bolts_outside_an_imported_wall_are_refused(tmp_path):
     with pytest.raises(CaseError, match=r"bolt_distance = 0.3: the bolts do not lie in the "
                                         r"wall at the split line"):
         Housing.from_case(case, use_cache=False)
+
+
+@settings(max_examples=15, deadline=None)
+@given(share=st.floats(0.2, 0.8), depth_share=st.floats(0.45, 0.8))
+def test_bolt_loads_make_no_force_and_no_moment_anywhere_in_the_wall(preloaded, share,
+                                                                     depth_share):
+    """Bolts anywhere across the wall, threads at any depth in the head: the two bands of
+    each bolt sit on its axis (the secant shift converges), so the pair makes no force and
+    no moment (to 1e-5 N m for 60 kN)."""
+    from conrod.housing.assembly import bolt_layout, bolt_load
+    from conrod.housing.geometry import RodGeometry
+
+    case = kamaz_case()
+    geometry = RodGeometry(**case.housing.rod_outline(case.bearing.diameter,
+                                                      case.engine.rod_length))
+    wall = min(geometry.head_outer_radius, geometry.cap_outer_radius) - geometry.bore_radius
+    distance = 2.0 * (geometry.bore_radius + share * wall)
+    depth = depth_share * (geometry.head_outer_radius - geometry.bore_radius)
+    model = preloaded.structure.model
+    load = bolt_load(model, bolt_layout(geometry, distance, depth), 6.0e4)
+    x, y = model.basis.doflocs[:, 0::2]
+    assert abs(load[0::2].sum()) < 1e-6 and abs(load[1::2].sum()) < 1e-6
+    assert abs(np.sum(x * load[1::2]) - np.sum(y * load[0::2])) < 1e-5
