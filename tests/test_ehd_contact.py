@@ -266,17 +266,20 @@ def test_orbit_with_mass_runs_into_mixed_lubrication_on_the_deformed_bore(tmp_pa
     runner = CliRunner()
     out = tmp_path / "mixed"
     result = runner.invoke(app, ["run", _thin_oil_case_file(tmp_path, True), "--out",
-                                 str(out), "--no-rigid", "--no-figures", "--accept-warnings"])
+                                 str(out), "--no-rigid", "--no-figures", "--accept-warnings",
+                                 "--no-grid-error"])
     assert result.exit_code == 0, result.output
     # this rod's cap opens by ~0.65 c at the gas-exchange TDC (inertia): that warning
-    # stays; the one about asperities touching without a contact model does not
-    assert "roughness" not in result.output
+    # stays, and h/σ < 1 is boundary lubrication resting on the asperity model; the one
+    # about asperities touching without a contact model does not
+    assert "boundary lubrication" in result.output
+    assert "consider [contact] model" not in result.output
     summary = json.loads((out / "summary.json").read_text())
     assert summary["periodic"]
     cycle = pd.read_csv(out / "cycle.csv")
     c = 50e-6
     assert cycle["asperity_force_N"].max() > 500.0  # measured 2.8 kN
-    np.testing.assert_allclose(cycle["contact_force_N"], cycle["asperity_force_N"])
+    assert cycle["contact_force_N"].max() == 0.0  # the asperities carry it, no hard contact
     load = np.hypot(cycle["load_x_N"], cycle["load_y_N"])
     assert np.all(cycle["force_residual_N"] <= 1e-6 * (load + 1.0))
     e = np.hypot(cycle["eccentricity_x_m"], cycle["eccentricity_y_m"])
