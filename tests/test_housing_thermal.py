@@ -206,3 +206,15 @@ def test_conrod_housing_draws_the_housing_temperature():
     corners = results.housing.warm.corner_temperature
     assert corners.min() >= 90.0 - 1e-9 and corners.max() <= 130.0 + 1e-9
     assert results.summary["thermal"]["housing_temperature_field"].startswith("conduction")
+
+
+def test_the_rigid_companion_of_a_conducting_housing_has_its_warm_clearance():
+    """A housing conducting from its shell side: the rigid companion run (no FE model of
+    its own) gets the elastic run's warm clearance, to round-off."""
+    case = kamaz_case({"thermal": hot_cap()}, n_theta=24)
+    housing = Housing.from_case(case)
+    elastic = Simulation(case, film="reynolds", housing=housing)
+    rigid = elastic.rigid_companion()
+    assert rigid.geometry().radial_clearance == pytest.approx(
+        elastic.geometry().radial_clearance, rel=1e-12)
+    assert rigid.geometry().profile is None

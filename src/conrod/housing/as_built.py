@@ -78,15 +78,19 @@ def as_built_geometry(geometry, housing, warm: WarmBore | None, with_profile: bo
     return dataclasses.replace(geometry, profile=dataclasses.replace(own, housing_bore=table))
 
 
-def run_geometry(geometry, section, housing_of, case, grid_film: bool):
+def run_geometry(geometry, section, housing_of, case, grid_film: bool, fe_warm_of=None):
     """The run's geometry (:func:`as_built_geometry`): ``geometry`` itself without an active
     ``[housing.assembly]`` or ``[housing.thermal]`` (``section``: ``[housing]``), else as
-    built and warm on the housing ``housing_of()`` (None for a rigid bore)."""
+    built and warm on the housing ``housing_of()`` (None for a rigid bore, whose clearance
+    change is that of ``fe_warm_of()``, the FE housing's warm bore, for a housing that
+    conducts from its shell side — the elastic run's — else a free ring's)."""
     if not any(part is not None and part.active for part in (section.assembly,
                                                              section.thermal)):
         return geometry
     housing = housing_of()
     warm = warm_bore(case) if housing is None else housing.warm
+    if housing is None and section.thermal is not None and section.thermal.conducting:
+        warm = fe_warm_of()
     return as_built_geometry(geometry, housing, warm, grid_film)
 
 

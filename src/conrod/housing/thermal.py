@@ -116,13 +116,14 @@ class WarmBore:
         return alpha * (self.shell_temperature - self.section.reference_temperature)
 
     def bore_displacement(self, projector: np.ndarray | None = None) -> np.ndarray | float:
-        """Corrected thermal bore displacement at the film nodes [m] (a number, ε_h R_b,
-        without an FE model)."""
+        """Corrected thermal bore displacement at the film nodes [m] (raw without a
+        ``projector``: the same mean on the uniform film nodes; a number, ε_h R_b, without an
+        FE model)."""
         if self.bore is None:
             strain = self.section.housing_expansion * (
                 self.housing_temperature - self.section.reference_temperature)
             return strain * self.bore_radius
-        return projector @ self.bore
+        return self.bore if projector is None else projector @ self.bore
 
     def clearance_change(self, projector: np.ndarray | None = None) -> float:
         """Δc = ū_th − ε_s t_s − ε_j R [m] (module docstring)."""

@@ -127,9 +127,12 @@ class Simulation:
         """Bearing geometry with supply features from ``[bearing]``, as built and warm
         (``[housing.assembly]``, ``[housing.thermal]``: :mod:`conrod.housing.as_built`)."""
         from conrod.housing.as_built import run_geometry
+        from conrod.housing.housing import Housing
 
-        return run_geometry(self._bearing.geometry(), self.case.housing, self.housing, self.case,
-                            self._film is None and self.solver.film in GRID_FILMS)
+        case = self.case.model_copy(update={"solver": self.solver})
+        return run_geometry(self._bearing.geometry(), self.case.housing, self.housing, case,
+                            self._film is None and self.solver.film in GRID_FILMS,
+                            lambda: Housing.from_case(case).warm)
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (given, engine loads or the load table)."""
