@@ -2,10 +2,22 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
-import matplotlib
-import pytest
+# Dense linear algebra on one thread, as `conrod run` does, before anything imports NumPy:
+# with one test worker per core (pytest-xdist), OpenBLAS' thread pools of the two workers
+# spin against each other (an in-process elastic run of the solid KamAZ big end took 723 s
+# under -n 2 with them, 46 s in one process).
+for _variable in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_variable, "1")
+# No background compilation in the suite: its workers already take the cores, and a run's
+# behaviour must not depend on the load average (tests/test_background_compile.py turns it
+# on where it tests it).
+os.environ.setdefault("CONROD_BACKGROUND_COMPILE", "0")
+
+import matplotlib  # noqa: E402
+import pytest  # noqa: E402
 
 matplotlib.use("Agg")
 

@@ -40,6 +40,7 @@ from pathlib import Path
 from pydantic import Field, PrivateAttr, model_validator
 
 from conrod.cases.base import Section, range_error, slip_hint, unit_slips
+from conrod.cases.feed import JournalHoleSection, check_journal_holes
 from conrod.cases.profile import ProfileSection
 from conrod.film.base import GEOMETRY_LIMITS, BearingGeometry, FeedHole, Groove
 from conrod.film.profile import BoreProfile, ProfileTable
@@ -67,11 +68,14 @@ class GrooveSection(Section):
     width: float = Field(gt=0.0, le=1.0, description="Axial width of the groove [m]")
     axial_position: float = Field(default=0.0, ge=-2.5, le=2.5,
                                   description="Axial position of the groove centre, 0 = mid [m]")
+    fed_by_journal_holes: bool = Field(
+        default=False, description="Fed by the crank-pin holes (half groove): at their "
+        "pressure while one opens into it, else at the supply pressure [-]")
 
     def to_groove(self) -> Groove:
         """SI :class:`Groove` (angles in rad)."""
         return Groove(math.radians(self.start_angle), math.radians(self.extent),
-                      self.width, self.axial_position)
+                      self.width, self.axial_position, self.fed_by_journal_holes)
 
 
 class FeedHoleSection(Section):
@@ -125,6 +129,8 @@ class BearingSection(Section):
                                               description="Oil-feed holes in the shell [-]")
     axial_grooves: list[AxialGrooveSection] = Field(
         default_factory=list, description="Axial oil grooves in the shell [-]")
+    journal_holes: list[JournalHoleSection] = Field(
+        default_factory=list, description="Oil holes in the crank pin, fed from the gallery [-]")
     profile: ProfileSection | None = Field(
         default=None, description="Parametric bore/shell profile [-]")
     profile_file: str | None = Field(
@@ -154,8 +160,9 @@ class BearingSection(Section):
                                   f"journal radius = {largest:g}", "m", hint)
         return self
 
-    def geometry(self) -> BearingGeometry:
-        """SI :class:`BearingGeometry` with the supply features (needs the clearance)."""
+    def geometry(self, wear_angle: float | None = None) -> BearingGeometry:
+        """SI :class:`BearingGeometry` with the supply features (needs the clearance);
+        ``wear_angle`` [rad]: the journal angle of a hole at ``angle = "wear_diagram"``."""
         if self.radial_clearance is None:
             raise range_error("bearing.radial_clearance", None, "> 0", "m")
         self.check_features_inside_width()
@@ -164,6 +171,7 @@ class BearingSection(Section):
             grooves=tuple(g.to_groove() for g in self.grooves) + tuple(
                 g.to_groove(0.5 * self.diameter, self.width) for g in self.axial_grooves),
             feed_holes=tuple(h.to_feed_hole() for h in self.feed_holes),
+            journal_holes=tuple(h.to_journal_hole(wear_angle) for h in self.journal_holes),
             supply_pressure=self.supply_pressure,
             cavitation_pressure=self.cavitation_pressure,
             profile=self.bore_profile(),
@@ -205,6 +213,7 @@ class BearingSection(Section):
                 raise range_error(f"bearing.feed_holes[{k}].diameter", hole.diameter,
                                   f"< half the journal circumference "
                                   f"{0.5 * math.pi * self.diameter:g}", "m")
+        check_journal_holes(self.journal_holes, self.diameter, self.width)
         for k, groove in enumerate(self.axial_grooves):
             if groove.length is not None and groove.length > self.width:
                 raise range_error(f"bearing.axial_grooves[{k}].length", groove.length,

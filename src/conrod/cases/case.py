@@ -32,9 +32,13 @@ from conrod.errors import CaseError
 from conrod.io.text import read_utf8
 
 ADDED_LATER = (("misalignment",), ("bearing", "profile"), ("bearing", "profile_file"),
-               ("housing", "assembly"), ("housing", "thermal"))
+               ("housing", "assembly"), ("housing", "thermal"), ("bearing", "journal_holes"))
 """Optional items added to the schema after cases were hashed: left out of
-:meth:`Case.content_hash` while unset, so an existing case keeps its hash."""
+:meth:`Case.content_hash` while unset (None or an empty list), so an existing case keeps
+its hash."""
+ADDED_LATER_IN_ITEMS = (("bearing", "grooves", "fed_by_journal_holes", False),)
+"""(section, list, key, default) of keys added later to the items of a list: left out of
+the hash while at their default."""
 
 
 class Case(Section):
@@ -127,8 +131,12 @@ class Case(Section):
             owner = data
             for key in path[:-1]:
                 owner = owner.get(key) or {}
-            if path[-1] in owner and owner[path[-1]] is None:
+            if path[-1] in owner and owner[path[-1]] in (None, []):
                 del owner[path[-1]]
+        for section, items, key, default in ADDED_LATER_IN_ITEMS:
+            for item in (data.get(section) or {}).get(items) or ():
+                if item.get(key, default) == default:
+                    item.pop(key, None)
         text = json.dumps(data, sort_keys=True, default=str)
         return hashlib.sha256(text.encode("utf-8")).hexdigest()
 

@@ -67,12 +67,16 @@ class Groove:
     extent : float  Angular extent, 2π for a full groove [rad].
     width : float  Axial width [m].
     axial_position : float  Axial position of the groove centre, 0 = mid-width [m].
+    fed_by_journal_holes : bool  The groove is fed by the journal's oil holes (the common
+        half groove): held at the pressure of a journal hole while one opens into it, at
+        the supply pressure otherwise; False: always at the supply pressure.
     """
 
     start_angle: float = 0.0
     extent: float = 2.0 * np.pi
     width: float = 0.0
     axial_position: float = 0.0
+    fed_by_journal_holes: bool = False
 
 
 @dataclass(frozen=True)
@@ -87,6 +91,63 @@ class FeedHole:
     angle: float
     diameter: float
     axial_position: float = 0.0
+
+
+@dataclass(frozen=True)
+class JournalHole:
+    """Oil hole drilled in the journal (crank pin): it turns with the journal, so it sweeps
+    the shell at the relative speed ω_j − ω_b (docs/conventions.md, "Oil holes").
+
+    angle : float  Angle of the hole centre on the journal [rad], from the journal's
+        reference direction (for a crank pin the outward crank radius) towards the
+        direction of rotation; its shell angle is θ = angle + ``JournalFeed.journal_angle``.
+    diameter : float  Hole diameter at the journal surface [m].
+    axial_position : float  Axial position of the hole centre, 0 = mid-width [m].
+    """
+
+    angle: float
+    diameter: float
+    axial_position: float = 0.0
+
+
+@dataclass(frozen=True)
+class JournalFeed:
+    """Where the journal's oil holes are and what they deliver at one instant.
+
+    journal_angle : float  Angle θ of the journal's reference direction in the film frame
+        [rad] (a crank pin: φ + β, the crank angle plus the rod obliquity).
+    pressures : tuple  Gauge pressure at the mouth of each journal hole [Pa], one per
+        :attr:`BearingGeometry.journal_holes` (gallery pressure plus centrifugal head less
+        losses, :mod:`conrod.loads.oil_feed`).
+    """
+
+    journal_angle: float
+    pressures: tuple[float, ...]
+
+    def __post_init__(self) -> None:
+        """Finite angle; finite pressures ≥ 0 [Pa] (gauge: ambient at the bearing edges)."""
+        if not (_is_number(self.journal_angle) and math.isfinite(self.journal_angle)):
+            raise CaseError(f"JournalFeed journal_angle = {self.journal_angle!r}: out of range "
+                            "(allowed: a finite number of rad)")
+        for k, value in enumerate(self.pressures):
+            check_range("JournalFeed", f"pressures[{k}]", value, 0.0, 1.0e9, "Pa")
+
+
+def check_journal_hole(owner: str, hole: JournalHole, diameter: float, width: float) -> None:
+    """:class:`CaseError` unless ``hole`` fits a journal of ``diameter`` [m] in a bearing of
+    ``width`` [m]: smaller than the width (a land on both sides), inside it, and smaller
+    than half the journal circumference."""
+    if not (_is_number(hole.angle) and math.isfinite(hole.angle)):
+        raise CaseError(f"{owner} angle = {hole.angle!r}: out of range (allowed: a finite "
+                        "number of rad)")
+    largest = min(width, 0.5 * math.pi * diameter)
+    if not (_is_number(hole.diameter) and 0.0 < hole.diameter < largest):
+        raise CaseError(f"{owner} diameter = {hole.diameter!r}: out of range (allowed: > 0 "
+                        f"and < {largest:g} m, the smaller of the bearing width and half the "
+                        "journal circumference)")
+    reach = 0.5 * (width - hole.diameter)
+    check_range(owner, "axial_position", hole.axial_position, -reach, reach,
+                f"m, the hole of {hole.diameter:g} m inside the bearing width {width:g} m")
 
 
 def check_range(owner: str, name: str, value: Any, low: float, high: float, unit: str, *,
@@ -127,6 +188,8 @@ class BearingGeometry:
     radial_clearance : float  Radial clearance c [m].
     grooves : tuple  Circumferential grooves held at ``supply_pressure``.
     feed_holes : tuple  Feed holes held at ``supply_pressure``.
+    journal_holes : tuple  Oil holes in the journal (:class:`JournalHole`): they turn with
+        it, where and at what pressure at each instant is ``FilmState.journal_feed``.
     supply_pressure : float  Gauge supply pressure [Pa].
     cavitation_pressure : float  Gauge cavitation pressure [Pa] (≤ 0 ≤ supply).
     profile : BoreProfile or None  Bore/shell profile h₀(θ, z) added to the film thickness,
@@ -139,6 +202,7 @@ class BearingGeometry:
     radial_clearance: float
     grooves: tuple[Groove, ...] = ()
     feed_holes: tuple[FeedHole, ...] = ()
+    journal_holes: tuple[JournalHole, ...] = ()
     supply_pressure: float = 0.0
     cavitation_pressure: float = 0.0
     profile: Any = None
@@ -164,11 +228,14 @@ class BearingGeometry:
         if not (_is_number(cavitation) and math.isfinite(cavitation) and cavitation <= 0.0):
             raise CaseError(f"{owner} cavitation_pressure = {cavitation!r}: out of range "
                             "(allowed: finite and <= 0 Pa; very negative: no cavitation)")
-        for name, kind in (("grooves", Groove), ("feed_holes", FeedHole)):
+        for name, kind in (("grooves", Groove), ("feed_holes", FeedHole),
+                           ("journal_holes", JournalHole)):
             items = getattr(self, name)
             if not isinstance(items, tuple) or not all(isinstance(i, kind) for i in items):
                 raise CaseError(f"{owner} {name} = {items!r}: a tuple of {kind.__name__} is "
                                 "required")
+        for k, hole in enumerate(self.journal_holes):
+            check_journal_hole(f"{owner} journal_holes[{k}]", hole, self.diameter, self.width)
         if self.profile is not None and not callable(getattr(self.profile, "field", None)):
             raise CaseError(f"{owner} profile = {self.profile!r}: a BoreProfile "
                             "(conrod.film.profile) or None is required")
@@ -203,6 +270,8 @@ class FilmState:
     tilt_x, tilt_y : float  Journal tilt γ_x, γ_y about the film's x and y axes [rad]
         (module docstring); 0: aligned.
     tilt_rate_x, tilt_rate_y : float  Their rates γ̇_x, γ̇_y [rad/s] (squeeze term).
+    journal_feed : JournalFeed or None  Position and pressures of the journal's oil holes
+        at this instant (required when the geometry has journal holes); None: none.
     """
 
     eccentricity_x: float
@@ -218,6 +287,7 @@ class FilmState:
     tilt_y: float = 0.0
     tilt_rate_x: float = 0.0
     tilt_rate_y: float = 0.0
+    journal_feed: JournalFeed | None = None
 
     def __new__(cls, *args: object, **kwargs: object) -> FilmState:
         _refuse_positional(cls, args, "eccentricities are in metres, not ratios to the "

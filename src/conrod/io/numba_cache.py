@@ -14,6 +14,9 @@ good cache; the results are the same as with a good cache. A cache that cannot b
 .. code-block:: python
 
     tolerate_unreadable_cache()   # done by ``import conrod``; numba need not be loaded yet
+
+Compile time: :func:`default_optimisation_level` (also done by ``import conrod``) compiles
+conrod's kernels at LLVM level :data:`OPTIMISATION_LEVEL` unless ``NUMBA_OPT`` is set.
 """
 
 from __future__ import annotations
@@ -31,11 +34,24 @@ from conrod.errors import CacheWarning
 if TYPE_CHECKING:  # pragma: no cover
     from importlib.abc import Loader
 
+OPTIMISATION_LEVEL = "2"
+"""LLVM optimisation level of conrod's kernels (``NUMBA_OPT``; numba's own default is 3):
+measured on the Reynolds film and its compiled orbit (``benchmarks/compile_benchmarks.md``),
+level 2 compiles in about 3/4 of level 3's time and the kernels run as fast, with
+bit-identical results."""
 CACHING_MODULE = "numba.core.caching"
 """The numba module whose ``Cache`` loads and saves compiled kernels."""
 OWN_PREFIX = "conrod."
 """Kernels of modules below this prefix are guarded; numba's other users are left alone."""
 _state = {"warned": False}
+
+
+def default_optimisation_level() -> None:
+    """``NUMBA_OPT`` = :data:`OPTIMISATION_LEVEL` unless the environment sets it; only
+    before numba is imported (numba reads it once), so a program that loaded numba first
+    keeps numba's setting."""
+    if "numba" not in sys.modules:
+        os.environ.setdefault("NUMBA_OPT", OPTIMISATION_LEVEL)
 
 
 def tolerate_unreadable_cache() -> None:

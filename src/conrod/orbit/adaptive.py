@@ -109,7 +109,7 @@ class Phases:
     def forces(self, phi: float, x: float, y: float, vx: float, vy: float):
         """X = W + F [N] and the surface speed (ω_j − ω_b) R [m/s] at φ."""
         wx, wy, wj, wb = periodic_sample(phi, self.angles, self.table, self.loads.cycle)
-        fx, fy = self.force(x, y, vx, vy, wj, wb)
+        fx, fy = self.force(x, y, vx, vy, wj, wb, phi)
         return wx + fx, wy + fy, (wj - wb) * self.radius
 
     def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:

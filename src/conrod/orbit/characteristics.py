@@ -48,6 +48,7 @@ def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[Fi
         FilmState(eccentricity_x=float(traj.x[i]), eccentricity_y=float(traj.y[i]),
                   velocity_x=float(traj.vx[i]), velocity_y=float(traj.vy[i]),
                   journal_speed=float(wj[i]), shell_speed=float(wb[i]), viscosity=problem.viscosity,
+                  journal_feed=problem.journal_feed(float(traj.crank_angle[i])),
                   **tilt_items(traj.tilt, i))
         for i in range(traj.crank_angle.size)
     ]
@@ -109,5 +110,26 @@ def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory) -> Cycle
         contact_force=traj.contact_force, friction_force=traj.friction_force,
         contact_angle=contact_angle, journal_rotation=rotation,
         sliding_speed=tangential_speed + relative * problem.film.geometry.radius,
-        in_contact=traj.in_contact, **film,
+        in_contact=traj.in_contact, feed=feed_columns(problem, phi, results), **film,
 )
+
+
+def feed_columns(problem: OrbitProblem, phi: np.ndarray,
+                 results: list[FilmResult]) -> dict[str, np.ndarray] | None:
+    """Per-angle flow through the journal's oil holes (signed, into the bearing) [m³/s], the
+    first hole's shell angle [rad] and feed pressure [Pa], and the film's inlet film
+    fraction where it reports one [-] (:mod:`conrod.results.feed`); None without holes."""
+    if problem.feed is None:
+        return None
+    feeds = [problem.feed.at(float(angle)) for angle in phi]
+    first = problem.film.geometry.journal_holes[0].angle
+    columns = {
+        "journal_hole_flow": np.array([r.extra.get("journal_hole_flow_m3_per_s", np.nan)
+                                       for r in results]),
+        "journal_hole_angle_shell": np.array([(first + f.journal_angle) % TWO_PI
+                                              for f in feeds]),
+        "journal_hole_pressure": np.array([f.pressures[0] for f in feeds])}
+    if all("inlet_film_fraction" in r.extra for r in results):
+        columns["inlet_film_fraction"] = np.array([r.extra["inlet_film_fraction"]
+                                                   for r in results])
+    return columns

@@ -94,7 +94,8 @@ class ContentSteps:
             result, _ = problem.film.solve_with_memory(
                 FilmState(eccentricity_x=state.x, eccentricity_y=state.y, velocity_x=state.vx,
                           velocity_y=state.vy, journal_speed=wj, shell_speed=wb,
-                          viscosity=problem.viscosity), memory)
+                          viscosity=problem.viscosity, journal_feed=problem.journal_feed(0.0)),
+                memory)
         except (CaseError, ConvergenceError):
             return 0.0
         e = math.hypot(state.x, state.y)
@@ -152,7 +153,8 @@ class ContentSteps:
         load, speeds = at.load, at.speeds
         state = FilmState(eccentricity_x=x1, eccentricity_y=y1, velocity_x=v[0], velocity_y=v[1],
                           journal_speed=speeds[0], shell_speed=speeds[1],
-                          viscosity=self.problem.viscosity)
+                          viscosity=self.problem.viscosity,
+                          journal_feed=self.problem.journal_feed(at.phi))
         previous = start.before.memory if start.before is not None else None
         fx, fy, after = self.film.content_step(state, start.memory, at.dt, warm, previous)
         if self.problem.asperity is not None:

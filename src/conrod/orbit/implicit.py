@@ -218,7 +218,7 @@ def _film_jacobian(problem: OrbitProblem, phases: Phases, phi, u, f0, params, da
     _, _, wj, wb = periodic_sample(phi, phases.angles, phases.table, problem.loads.cycle)
     state = FilmState(eccentricity_x=u[0] * c, eccentricity_y=u[1] * c, velocity_x=u[2] * c * w,
                       velocity_y=u[3] * c * w, journal_speed=wj, shell_speed=wb,
-                      viscosity=problem.viscosity)
+                      viscosity=problem.viscosity, journal_feed=problem.journal_feed(phi))
     _, film, _ = problem.film.force_jacobian(state, phases.session.memory)
     out = np.zeros((4, 4))
     out[0, 2] = out[1, 3] = 1.0

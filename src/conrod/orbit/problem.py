@@ -28,7 +28,9 @@ from conrod.film.capabilities import CarriesAsperityContact, CompiledKernel, Has
 from conrod.loads.cycle import LoadCycle
 from conrod.orbit.memory import FilmSession
 
-ForceFunction = Callable[[float, float, float, float, float, float], tuple[float, float]]
+ForceFunction = Callable[..., tuple[float, float]]
+"""(x, y, v_x, v_y, ω_j, ω_b[, φ]) → film force (F_x, F_y) [N]; the crank angle φ [rad]
+places the journal's oil holes (required when the film has some)."""
 
 
 @dataclass(frozen=True)
@@ -71,6 +73,8 @@ class OrbitProblem:
     tilt : JournalTilt or None  The journal's tilt, prescribed or solved as two more degrees
         of freedom (:mod:`conrod.loads.tilt`, :mod:`conrod.orbit.tilt_steps`); None:
         aligned.
+    feed : FeedSchedule or None  Position and pressure of the journal's oil holes over the
+        cycle (:class:`conrod.loads.oil_feed.FeedSchedule`); None: no journal hole.
     """
 
     film: FilmModel
@@ -82,6 +86,12 @@ class OrbitProblem:
     contact_film_thickness: float = 0.0
     asperity: tuple[float, float, float, float] | None = None
     tilt: Any = None
+    feed: Any = None
+
+    def journal_feed(self, crank_angle: float) -> Any:
+        """The :class:`~conrod.film.base.JournalFeed` at ``crank_angle`` [rad] (None without
+        journal holes)."""
+        return None if self.feed is None else self.feed.at(crank_angle)
 
     @property
     def clearance(self) -> float:
@@ -127,6 +137,7 @@ class OrbitProblem:
         return OrbitProblem(
             self.film, self.loads, viscosity, self.mass_x, self.mass_y,
             self.dry_friction, self.contact_film_thickness, self.asperity, self.tilt,
+            self.feed,
 )
 
     @property
@@ -152,16 +163,19 @@ class OrbitProblem:
         if kernel is not None:
             force = bound_force(kernel.force, kernel.params)
 
-            def compiled(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
+            def compiled(x: float, y: float, vx: float, vy: float, wj: float, wb: float,
+                         phi: float | None = None):
                 return force(x, y, vx, vy, wj + wb, mu)
 
             return compiled
         held = session if session is not None else self.session()
 
-        def generic(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
+        def generic(x: float, y: float, vx: float, vy: float, wj: float, wb: float,
+                    phi: float | None = None):
+            feed = None if phi is None else self.journal_feed(phi)
             fx, fy = held.force(FilmState(eccentricity_x=x, eccentricity_y=y, velocity_x=vx,
                                           velocity_y=vy, journal_speed=wj, shell_speed=wb,
-                                          viscosity=mu))
+                                          viscosity=mu, journal_feed=feed))
             return float(fx), float(fy)
 
         return generic
@@ -196,8 +210,9 @@ def _with_asperity(film_force: ForceFunction, clearance: float, params) -> Force
     its deformed film does not get it (:attr:`OrbitProblem.rigid_asperity`)."""
     from conrod.contact.asperity import asperity_force
 
-    def total(x: float, y: float, vx: float, vy: float, wj: float, wb: float):
-        fx, fy = film_force(x, y, vx, vy, wj, wb)
+    def total(x: float, y: float, vx: float, vy: float, wj: float, wb: float,
+              phi: float | None = None):
+        fx, fy = film_force(x, y, vx, vy, wj, wb, phi)
         ax, ay = asperity_force(x, y, clearance, params)
         return fx + ax, fy + ay
 

@@ -86,22 +86,22 @@ def _generic_newton(problem: OrbitProblem, scale: float, session: FilmSession | 
     session = session if session is not None else problem.session()
     force = problem.force_function(session)
 
-    def residual(x, y, v, wx, wy, wj, wb):
-        fx, fy = force(x, y, v[0], v[1], wj, wb)
+    def residual(x, y, v, wx, wy, wj, wb, phi=None):
+        fx, fy = force(x, y, v[0], v[1], wj, wb, phi)
         return np.array([fx + wx, fy + wy])
 
-    def jacobian(x, y, v, r, wx, wy, wj, wb, central: bool):
+    def jacobian(x, y, v, r, wx, wy, wj, wb, central: bool, phi=None):
         delta = (JACOBIAN_STEPS[1] if central else JACOBIAN_STEPS[0]) * scale
         jac = np.empty((2, 2))
         base = session.snapshot()
         for i in range(2):
             dv = v.copy()
             dv[i] += delta
-            plus = residual(x, y, dv, wx, wy, wj, wb)
+            plus = residual(x, y, dv, wx, wy, wj, wb, phi)
             session.restore(base)
             if central:
                 dv[i] -= 2.0 * delta
-                jac[:, i] = (plus - residual(x, y, dv, wx, wy, wj, wb)) / (2.0 * delta)
+                jac[:, i] = (plus - residual(x, y, dv, wx, wy, wj, wb, phi)) / (2.0 * delta)
                 session.restore(base)
             else:
                 jac[:, i] = (plus - r) / delta
@@ -110,13 +110,13 @@ def _generic_newton(problem: OrbitProblem, scale: float, session: FilmSession | 
     def solve(x, y, wx, wy, wj, wb, guess, angle=0.0):
         v = np.array(guess, dtype=float)
         load = math.hypot(wx, wy) + 1.0
-        r = residual(x, y, v, wx, wy, wj, wb)
+        r = residual(x, y, v, wx, wy, wj, wb, angle)
         norm = float(np.hypot(*r))
         central = False
         for _ in range(NEWTON_ITERATIONS):
             if norm <= 1e-8 * load:
                 break
-            jac = jacobian(x, y, v, r, wx, wy, wj, wb, central)
+            jac = jacobian(x, y, v, r, wx, wy, wj, wb, central, angle)
             step = -np.linalg.lstsq(jac, r, rcond=None)[0]
             length = float(np.hypot(*step))
             limit = max(10.0 * scale, 2.0 * float(np.hypot(*v)))  # grows geometrically
@@ -125,7 +125,7 @@ def _generic_newton(problem: OrbitProblem, scale: float, session: FilmSession | 
             lam, found = 1.0, None
             while lam >= 1e-4:
                 trial = v + lam * step
-                r_trial = residual(x, y, trial, wx, wy, wj, wb)
+                r_trial = residual(x, y, trial, wx, wy, wj, wb, angle)
                 if np.hypot(*r_trial) < norm:
                     found = trial, r_trial
                     break
@@ -186,7 +186,7 @@ def quasi_static_cycle(
             "quasi-static velocity solve failed (relative force residual; try a smaller "
             "solver.quasi_static_step_deg or the integrator 'implicit')",
             where=f"crank angle {math.degrees(float(phi[worst_k])):.1f} deg", residual=worst)
-    sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb)]
+    sampled = [a[::record_every][:n_out] for a in (load_x, load_y, wj, wb, phi)]
     _contact_forces(problem, table, *sampled)
     end = OrbitState(x, y, guess[0], guess[1], False, session.snapshot())
     traj = CycleTrajectory.from_table(phi[::record_every][:n_out], table, end,
@@ -257,7 +257,8 @@ class _HeunSteps:
                           y + 0.5 * dt * (v[1] + vy2), self.rc)
         session.advance(FilmState(eccentricity_x=xp, eccentricity_y=yp, velocity_x=v[0],
                                   velocity_y=v[1], journal_speed=wj, shell_speed=wb,
-                                  viscosity=problem.viscosity), dt)
+                                  viscosity=problem.viscosity,
+                                  journal_feed=problem.journal_feed(phi0)), dt)
         return x1, y1, (vx2, vy2), r2
 
 
@@ -382,12 +383,13 @@ def _inward_only(x: float, y: float, vx: float, vy: float) -> tuple[float, float
     return vx, vy
 
 
-def _contact_forces(problem, table, load_x, load_y, wj, wb) -> None:
+def _contact_forces(problem, table, load_x, load_y, wj, wb, angles=None) -> None:
     """P_c = (W + F)·n̂ ≥ 0 where the massless journal sits on the contact circle."""
     force = problem.force_function()
     for i in np.flatnonzero(table[:, 6] > 0.5):
         x, y, vx, vy = table[i, :4]
-        fx, fy = force(x, y, vx, vy, wj[i], wb[i])
+        fx, fy = force(x, y, vx, vy, wj[i], wb[i],
+                       None if angles is None else float(angles[i]))
         e = math.hypot(x, y)
         p_c = max(((load_x[i] + fx) * x + (load_y[i] + fy) * y) / e, 0.0)
         table[i, 4], table[i, 5] = p_c, problem.dry_friction * p_c

@@ -219,12 +219,14 @@ def _damping(problem: OrbitProblem, cycle: CycleTrajectory, row: int) -> float:
     memory = cycle.film_memory[row] if cycle.film_memory else None
     wj, wb = (float(a[0]) for a in problem.loads.speeds(cycle.crank_angle[row:row + 1]))
     x, y, vx, vy = (float(a[row]) for a in (cycle.x, cycle.y, cycle.vx, cycle.vy))
+    phi = float(cycle.crank_angle[row])
     delta = 1e-4 * problem.clearance * problem.crank_speed
     columns = []
     for dvx, dvy in ((delta, 0.0), (0.0, delta)):
-        plus = problem.force_function(problem.session(memory))(x, y, vx + dvx, vy + dvy, wj, wb)
+        plus = problem.force_function(problem.session(memory))(x, y, vx + dvx, vy + dvy, wj, wb,
+                                                               phi)
         minus = problem.force_function(problem.session(memory))(x, y, vx - dvx, vy - dvy,
-                                                                wj, wb)
+                                                                wj, wb, phi)
         columns.append([(minus[0] - plus[0]) / (2 * delta), (minus[1] - plus[1]) / (2 * delta)])
     return float(np.max(np.abs(np.linalg.eigvals(np.array(columns).T))))
 
@@ -295,7 +297,7 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
     memory = [None] * out.shape[0]
 
     def acceleration(k, x, y, vx, vy):
-        fx, fy = force(x, y, vx, vy, wj[k], wb[k])
+        fx, fy = force(x, y, vx, vy, wj[k], wb[k], k * dt * problem.crank_speed)
         return contact_acceleration(
             x, y, vx, vy, load_x[k] + fx, load_y[k] + fy, problem.mass_x, problem.mass_y,
             problem.dry_friction, problem.contact_radius, (wj[k] - wb[k]) * radius, contact,
@@ -312,7 +314,9 @@ def _rk2_generic_cycle(problem, start, dt, load_x, load_y, wj, wb, record_every,
         ax2, ay2, _, _ = acceleration(k + 1, xp, yp, vxp, vyp)
         session.advance(FilmState(eccentricity_x=x, eccentricity_y=y, velocity_x=vx, velocity_y=vy,
                                   journal_speed=wj[k], shell_speed=wb[k],
-                                  viscosity=problem.viscosity), dt)
+                                  viscosity=problem.viscosity,
+                                  journal_feed=problem.journal_feed(k * dt * problem.crank_speed)),
+                        dt)
         x, y = x + 0.5 * dt * (vx + vxp), y + 0.5 * dt * (vy + vyp)
         vx, vy = vx + 0.5 * dt * (ax + ax2), vy + 0.5 * dt * (ay + ay2)
         x, y, vx, vy, contact = _settle_contact(x, y, vx, vy, problem.contact_radius, pc > 0.0)

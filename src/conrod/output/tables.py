@@ -16,8 +16,9 @@ from conrod.mechanism.results import JOINT_NAMES, MechanismResults, MechanismRun
 from conrod.output.registry import TableSpec, result_kind, tables
 from conrod.results.axial import axial_summary_items
 from conrod.results.case_record import CASE_FILE
-from conrod.results.columns import CYCLE_COLUMNS, axial_table
+from conrod.results.columns import CYCLE_COLUMNS, axial_table, feed_table
 from conrod.results.cycle_results import RunResults
+from conrod.results.feed import feed_summary_items
 
 LOADS_COLUMNS = (
     ("crank_angle_deg", lambda r: r.crank_angle_deg),
@@ -54,6 +55,7 @@ def cycle_table(results: RunResults) -> dict[str, np.ndarray]:
     if results.contact is not None:
         table.update(results.contact.cycle_columns())
     table.update(axial_table(results.cycle.axial))  # tilt, moments, edge h_min (if any)
+    table.update(feed_table(results.cycle.feed))  # crank-pin oil holes (if any)
     return table
 
 
@@ -69,6 +71,7 @@ def summary_items(results: RunResults) -> dict:
     items.update(results.summary.as_json_items())
     if results.cycle.axial is not None:  # edge h_min and moments of a tilt or a profile
         items.update(axial_summary_items(results.cycle.crank_angle, results.cycle.axial))
+    items.update(feed_summary_items(results.cycle.feed))  # crank-pin oil holes (if any)
     if results.contact is not None:
         items.update(results.contact.summary_items())
     return items

@@ -55,6 +55,26 @@ AXIAL_COLUMNS = {
 conversion) (:mod:`conrod.results.axial`); absent for an aligned cylindrical bearing."""
 
 
+FEED_COLUMNS = {
+    "journal_hole_flow_m3_s": ("journal_hole_flow", None),
+    "journal_hole_angle_shell_deg": ("journal_hole_angle_shell", np.degrees),
+    "journal_hole_pressure_Pa": ("journal_hole_pressure", None),
+    "inlet_film_fraction": ("inlet_film_fraction", None),
+}
+"""cycle.csv columns of the crank-pin oil holes → (key of ``CycleResults.feed``,
+conversion) (:mod:`conrod.results.feed`); absent without journal holes, the inlet film
+fraction only with the mass-conserving film."""
+
+
+def feed_table(feed: dict | None) -> dict[str, np.ndarray]:
+    """The :data:`FEED_COLUMNS` of ``CycleResults.feed`` present in it; {} when None."""
+    if feed is None:
+        return {}
+    return {column: (convert(np.asarray(feed[key])) if convert is not None
+                     else np.asarray(feed[key]))
+            for column, (key, convert) in FEED_COLUMNS.items() if key in feed}
+
+
 def axial_table(axial: dict | None) -> dict[str, np.ndarray]:
     """The :data:`AXIAL_COLUMNS` of ``CycleResults.axial`` (bools as 0/1); {} when None."""
     if axial is None:

@@ -72,6 +72,9 @@ class CycleResults:
     axial: dict[str, np.ndarray] | None = None
     """Tilt [rad, rad/s], moments [N m], h_min axial position and edge h_min [m] per angle
     of a tilted journal or a profiled bore (:mod:`conrod.results.axial`); None: aligned."""
+    feed: dict[str, np.ndarray] | None = None
+    """Flow [m³/s], shell angle [rad] and pressure [Pa] of the crank-pin oil holes, inlet
+    film fraction [-] (:mod:`conrod.results.feed`); None: no journal hole."""
 
     def __len__(self) -> int:
         return int(self.crank_angle.size)
@@ -88,13 +91,14 @@ class CycleResults:
         ``in_contact`` as booleans where ``cycle.csv`` writes 0/1)."""
         import pandas as pd
 
-        from conrod.results.columns import CYCLE_COLUMNS, axial_table
+        from conrod.results.columns import CYCLE_COLUMNS, axial_table, feed_table
 
         columns = {}
         for column, (name, convert) in CYCLE_COLUMNS.items():
             values = np.asarray(getattr(self, name))
             columns[column] = convert(values) if convert is not None else values
         columns.update(axial_table(self.axial))
+        columns.update(feed_table(self.feed))
         return pd.DataFrame(columns)
 
 

@@ -9,6 +9,7 @@ import numpy as np
 from conrod.contact.analysis import contact_runs
 from conrod.results.axial import axial_headline
 from conrod.results.cycle_results import CycleResults, RunResults, RunSummary
+from conrod.results.feed import feed_headline
 
 CONTACT_SHARE_WARNING = 0.25
 """Share of the load carried by hard contact above which a run is flagged: the film does
@@ -133,6 +134,7 @@ def headline(results: RunResults) -> dict[str, str]:
     lines["film h_min"] = _film_h_min_text(s)
     if cycle.axial is not None:  # a tilted journal or a profiled bore: edge h_min, moments
         lines.update(axial_headline(cycle.crank_angle, cycle.axial))
+    lines.update(feed_headline(cycle.feed))  # crank-pin oil holes (if any)
     lines["contact"] = _contact_text(cycle, results.contact)
     lines["p_max"] = (f"{s.p_max / 1e6:.2f} MPa at {math.degrees(s.p_max_crank_angle):.0f}°"
                       + _grid_error_text(s, "p_max") + _peak_step_text(cycle))

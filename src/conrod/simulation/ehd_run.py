@@ -17,6 +17,7 @@ from conrod.orbit.implicit_step import needs_journal_step
 from conrod.orbit.integrators import declared, resolved
 from conrod.results.ehd import ElasticRunResults
 from conrod.results.summary import film_minimum
+from conrod.simulation import background_compile
 
 
 def check_integrator(simulation) -> None:
@@ -55,7 +56,12 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     """Elastic answer, diagnostics and (unless skipped) the rigid companion run."""
     check_integrator(simulation)
     start = time.perf_counter()
-    results, thermal = simulation.run_orbit(progress)
+    compiling = background_compile.start(simulation)  # the companion's kernels, meanwhile
+    try:
+        results, thermal = simulation.run_orbit(progress)
+    except BaseException:
+        background_compile.stop(compiling)
+        raise
     problem, orbit = thermal.problem, thermal.orbit
     integrator = simulation.integrator()
     if isinstance(integrator, str):
@@ -89,6 +95,7 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     elastic_seconds = time.perf_counter() - start
     companion = simulation.rigid_companion(integrator=name)  # same journal model as above
     rigid = None
+    background_compile.finish(compiling)
     if companion is not None:
         rigid = companion.run_orbit(_staged(progress, "rigid "))[0]
     info = {

@@ -42,6 +42,7 @@ def pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
         velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
         journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
         viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i),
+        journal_feed=problem.journal_feed(float(cycle.crank_angle[i])),
     )
     session = problem.session(film_memory[i] if film_memory else None)
     field = session.accepted(state, with_pressure=True).pressure

@@ -32,6 +32,7 @@ from conrod.film.capabilities import HasEccentricityRange, SupportsDeformation
 from conrod.film.factory import build_film_model
 from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
+from conrod.loads.oil_feed import feed_schedule, wear_diagram_angle
 from conrod.loads.tilt import journal_tilt
 from conrod.orbit.characteristics import cycle_characteristics
 from conrod.orbit.heat_balance import relaxed_update
@@ -39,8 +40,11 @@ from conrod.orbit.integrators import Integrator
 from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
 from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults, RunResults
+from conrod.results.feed import starvation_warnings
 from conrod.results.plausibility import check_run, table_range_warnings
 from conrod.results.summary import contact_warnings, summarise
+from conrod.simulation.as_built_run import as_built, warm_note
+from conrod.simulation.feed_checks import check_journal_holes
 from conrod.simulation.orbit_outputs import (
     film_asperity_force,
     heat_balance_temperature,
@@ -54,10 +58,6 @@ DEFAULT_TABLE_LOAD_MASS = 1.0
 
 ProgressCallback = Callable[[str, int, float], None]
 """progress(stage, cycle, periodicity_error) — called after every integrated cycle."""
-
-
-GRID_FILMS = ("reynolds", "mass_conserving")
-"""Films that take a bore profile (the as-built bore) [-]."""
 
 
 class Simulation:
@@ -118,21 +118,16 @@ class Simulation:
         self._film = None if film is None or isinstance(film, str) else film
         self._integrator = None if integrator is None or isinstance(integrator, str) else integrator
         self._names = names
+        self._wear_angle = wear_diagram_angle(case)  # of a crank-pin hole at "wear_diagram"
         if self._film is None:
-            check_oil_feed(bearing.geometry(), self.solver.film)
+            check_oil_feed(bearing.geometry(self._wear_angle), self.solver.film)
         self._loads = loads if loads is not None else self._read_loads()  # bad tables fail here
 
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
         """Bearing geometry with supply features from ``[bearing]``, as built and warm
-        (``[housing.assembly]``, ``[housing.thermal]``: :mod:`conrod.housing.as_built`)."""
-        from conrod.housing.as_built import run_geometry
-        from conrod.housing.housing import Housing
-
-        case = self.case.model_copy(update={"solver": self.solver})
-        return run_geometry(self._bearing.geometry(), self.case.housing, self.housing, case,
-                            self._film is None and self.solver.film in GRID_FILMS,
-                            lambda: Housing.from_case(case).warm)
+        (:func:`conrod.simulation.as_built_run.as_built`)."""
+        return as_built(self, self._bearing.geometry(self._wear_angle), self._film is None)
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (given, engine loads or the load table)."""
@@ -181,6 +176,10 @@ class Simulation:
         return elastic_film(film, housing, loads.crank_speed, settings,
                             _asperity_parameters(self.case))
 
+    def _film_name(self) -> str:
+        """Name of the film model: the given object's, else ``[solver] film``."""
+        return self._film.name if self._film is not None else self.solver.film
+
     def _named_film(self) -> FilmModel:
         """The film of ``[solver] film`` with the case's pressure–viscosity law."""
         return build_film_model(self.solver, self.geometry(),
@@ -219,11 +218,15 @@ class Simulation:
         lubricant = self._lubricant
         mu = viscosity or lubricant.viscosity_at(lubricant.supply_temperature)
         mass_x, mass_y = self.masses()
+        tilt = journal_tilt(self.case, self.load_cycle())
+        check_journal_holes(self.geometry(), self._film_name(), tilt)
         film = self.film_model()
         return OrbitProblem(
             film, self.load_cycle(), mu, mass_x, mass_y,
             self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
-            _asperity_parameters(self.case), journal_tilt(self.case, self.load_cycle()),
+            _asperity_parameters(self.case), tilt,
+            feed_schedule(self.case, self.load_cycle(),
+                          lubricant.density_at(lubricant.supply_temperature), self._wear_angle),
         )
 
     # -- run --------------------------------------------------------------------------
@@ -241,14 +244,17 @@ class Simulation:
             summary = dataclasses.replace(results.summary,
                                           warnings=(*results.summary.warnings, note))
             return dataclasses.replace(results, summary=summary)
+        check_journal_holes(self.geometry(), self._film_name(), None, elastic=True)
         from conrod.simulation.ehd_run import elastic_run
 
         return elastic_run(self, progress)
 
-    def rigid_companion(self, integrator: str | None = None) -> Simulation | None:
+    def rigid_companion(self, integrator: str | None = None,
+                        **overrides: Any) -> Simulation | None:
         """The same simulation on a rigid bore (None when not asked for); ``integrator``:
         the one the elastic run used (so that ``auto`` cannot choose a journal with mass
-        for the rigid run and a massless one for the elastic run)."""
+        for the rigid run and a massless one for the elastic run); ``overrides``: other
+        ``[solver]`` fields replaced (as in :class:`Simulation`)."""
         if not self._rigid_companion:
             return None
         film = self._film if self._film is not None else self._names["film"]
@@ -256,7 +262,7 @@ class Simulation:
             integrator = (self._integrator if self._integrator is not None
                           else self._names["integrator"])
         return Simulation(self.case, film=film, loads=self._loads, integrator=integrator,
-                          housing="rigid", **self._overrides)
+                          housing="rigid", **{**self._overrides, **overrides})
 
     def run_orbit(self, progress: ProgressCallback | None = None
                   ) -> tuple[RunResults, ThermalOrbit]:
@@ -287,7 +293,8 @@ class Simulation:
         )
         warnings = (summary.warnings  # check_run: or ConvergenceError
                     + tuple(check_run(results, self.case, problem.contact_radius))
-                    + tuple(contact_warnings(cycle)))
+                    + tuple(contact_warnings(cycle))
+                    + tuple(starvation_warnings(cycle.feed, cycle.crank_angle_deg)))
         if isinstance(problem.film, HasEccentricityRange):
             warnings += tuple(table_range_warnings(cycle, problem.film.eccentricity_max))
         wall_time = time.perf_counter() - start
@@ -302,9 +309,7 @@ class Simulation:
         law = self._lubricant.pressure_viscosity_law()
         model = {"housing": "elastic bore (EHD)" if self.elastic() else "rigid bore",
                  "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
-        if self.case.housing.thermal is not None and self.case.housing.thermal.active:
-            model["housing"] += (f" (warm clearance "
-                                 f"{self.geometry().radial_clearance * 1e6:.2f} µm)")
+        model["housing"] += warm_note(self)
         engine = self.case.engine
         if engine is not None and engine.pressure_model is not None and self.case.load is None:
             model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
@@ -376,7 +381,7 @@ def check_oil_feed(geometry: BearingGeometry, film: str) -> None:
     through a groove or a hole: without it the lands starve over the cycle and the orbit
     cannot converge (a steady film solve does not need it)."""
     fed = (geometry.grooves or geometry.feed_holes) and (
-        geometry.supply_pressure > geometry.cavitation_pressure)
+        geometry.supply_pressure > geometry.cavitation_pressure) or geometry.journal_holes
     if film == "mass_conserving" and not fed:
         raise CaseError(
             "solver.film = 'mass_conserving': needs an oil feed above the cavitation pressure "

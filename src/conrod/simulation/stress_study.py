@@ -70,6 +70,7 @@ def _rigid_pressures(simulation: Simulation, results, crank_angles_deg: list[flo
     again at the output angle nearest to each requested one."""
     cycle = results.cycle
     film = simulation.film_model()
+    feed = simulation.problem().journal_feed  # the crank-pin holes at a crank angle (if any)
     theta, z = film.grid()
     fields = {}
     for angle in crank_angles_deg:
@@ -80,7 +81,8 @@ def _rigid_pressures(simulation: Simulation, results, crank_angles_deg: list[flo
                           velocity_y=float(cycle.velocity_y[k]),
                           journal_speed=float(cycle.journal_speed[k]),
                           shell_speed=float(cycle.shell_speed[k]),
-                          viscosity=results.summary.viscosity, **cycle_tilt(cycle.axial, k))
+                          viscosity=results.summary.viscosity, **cycle_tilt(cycle.axial, k),
+                          journal_feed=feed(float(cycle.crank_angle[k])))
         fields[angle] = film.solve(state, with_pressure=True).pressure
     return np.asarray(theta), np.asarray(z), fields
 

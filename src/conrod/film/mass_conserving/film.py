@@ -51,7 +51,7 @@ from conrod.film.mass_conserving.results import convection, film_end_angle
 from conrod.film.piezoviscosity import PressureViscosity
 from conrod.film.profile import profile_field
 from conrod.film.rated_state import state_rate
-from conrod.film.supply import nearest_theta_index, supply_mask
+from conrod.film.supply import instant_supply, nearest_theta_index, supply_mask
 from conrod.film.tilt import axial_gap, tilt_fields
 
 __all__ = ["FULL", "FilmFields", "MassConservingFilm", "MassConservingMemory"]
@@ -258,10 +258,14 @@ class MassConservingFilm:
                 f"film thickness min = {float(h.min()):.3g} m (must stay > 0 m): the journal "
                 "touches the shell; the load is beyond what the film and the contact model "
                 "carry at this step (try a contact model, a finer step or a larger clearance)")
+        law, offset = self.pressure_viscosity, self.reduced_cavitation(state)
+        supply, fixed, fed = instant_supply(  # the journal's holes turn: a mask update
+            g, self.film_grid, state.journal_feed, self._supply, self._fixed_values(state),
+            lambda p: (p if law is None else float(law.to_reduced(p, mu))) - offset)
         return FilmFields(
             h=h, a_east=a_east, a_north=a_north, couette_east=couette, squeeze=squeeze,
-            edge=self._edge, supply=self._supply.copy(), fixed_pressure=self._fixed_values(state),
-            has_deformation=added is not None,
+            edge=self._edge, supply=supply.copy(), fixed_pressure=fixed,
+            has_deformation=added is not None, fed=fed,
 )
 
     # ------------------------------------------------------------------ transient

@@ -20,11 +20,16 @@ class MassConservingMemory:
         next solve [Pa]; None: start from p̃ = −p_cav.
     thickness : ndarray or None  Film thickness h at the instant of ``fraction`` [m], set by
         an implicit content step (:meth:`MassConservingFilm.content_step`); None otherwise.
+    hole_fill, held_fill : float  Content change over that step of the nodes the
+        journal's holes (all supply features) hold at its end, per second [m³/s]: oil they
+        gave besides their flux (:func:`conrod.film.mass_conserving.step.content_step`).
     """
 
     fraction: np.ndarray
     pressure: np.ndarray | None = None
     thickness: np.ndarray | None = None
+    hole_fill: float = 0.0
+    held_fill: float = 0.0
 
 
 @dataclass
@@ -33,7 +38,8 @@ class FilmFields:
 
     h : film thickness at the nodes [m];  a_east, a_north : face conductances [m³];
     couette_east : 6μ U h_e Δz [Pa m³];  squeeze : 12μ Δx Δz ∂h/∂t [Pa m³];
-    edge, supply : Dirichlet masks;  fixed_pressure : p̃ on Dirichlet nodes [Pa].
+    edge, supply : Dirichlet masks;  fixed_pressure : p̃ on Dirichlet nodes [Pa];
+    fed : nodes fed by the journal's oil holes at this instant (in ``supply``), or None.
     """
 
     h: np.ndarray
@@ -45,6 +51,7 @@ class FilmFields:
     supply: np.ndarray
     fixed_pressure: np.ndarray
     has_deformation: bool = False
+    fed: np.ndarray | None = None
 
     @property
     def free(self) -> np.ndarray:

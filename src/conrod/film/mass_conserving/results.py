@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from conrod.film.base import FilmResult, FilmState
+from conrod.film.mass_conserving.kernel import cell_balance
 from conrod.film.mass_conserving.memory import FilmFields
 from conrod.film.tilt import axial_summary, moment_weights
 
@@ -63,6 +64,12 @@ def film_characteristics(
     if law is not None:
         extra.update(law.diagnostics(pressure + model.reduced_cavitation(state), gauge,
                                      state.viscosity))
+    if f.fed is not None:  # the journal's oil holes: their inflow, signed
+        _, _, hole_in = cell_balance(pressure, fraction, free, f.edge | (f.supply & ~f.fed),
+                                     f.a_east, f.a_north, f.couette_east, f.squeeze)
+        extra["journal_hole_flow_m3_per_s"] = hole_in / (12.0 * state.viscosity)
+    extra["inlet_film_fraction"] = inlet_film_fraction(  # upstream: against the transport
+        gauge, fraction, free, state.journal_speed + state.shell_speed)
     return FilmResult(
         force_x=force_x, force_y=force_y,
         friction_torque_journal=wedge_part - couette,
@@ -76,6 +83,32 @@ def film_characteristics(
         friction_power=abs((wedge_part - couette) * sliding),
         extra=extra, **axial,
     )
+
+
+LOAD_ZONE_SHARE = 0.1
+"""The loaded zone: the columns upstream of p_max whose pressure exceeds this share of
+p_max; its inlet is the first column below it [-]."""
+
+
+def inlet_film_fraction(gauge: np.ndarray, fraction: np.ndarray, free: np.ndarray,
+                        transport: float) -> float:
+    """Film fraction ϑ [-] where oil enters the loaded zone: mean over the free interior
+    nodes of the first θ column upstream of p_max (against the oil's transport, the sign
+    of ``transport`` = ω_j + ω_b [rad/s]) whose largest pressure is at most
+    :data:`LOAD_ZONE_SHARE` × p_max (1: the load zone is fed by a full film; below 1 it
+    runs partially filled). 1 when no pressure builds up."""
+    column_max = gauge.max(axis=1)
+    peak = int(np.argmax(column_max))
+    if not column_max[peak] > 0.0:
+        return 1.0
+    step = -1 if transport >= 0.0 else 1
+    n = column_max.size
+    for k in range(1, n):
+        i = (peak + step * k) % n
+        if column_max[i] <= LOAD_ZONE_SHARE * column_max[peak]:
+            nodes = free[i, 1:-1]
+            return float(np.mean(fraction[i, 1:-1][nodes])) if nodes.any() else 1.0
+    return 1.0
 
 
 def convection(couette_east: np.ndarray, fraction: np.ndarray) -> np.ndarray:

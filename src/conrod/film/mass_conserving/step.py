@@ -73,8 +73,9 @@ def content_step(
     dx, dz = film.spacing()
     cell = 12.0 * state.viscosity * dx * dz / dt
     content = _content(film, f, memory, cell, dt)
-    if (previous is not None and memory.thickness is not None
-            and previous.thickness is not None):
+    bdf2 = (previous is not None and memory.thickness is not None
+            and previous.thickness is not None)
+    if bdf2:
         capacity = 1.5 * cell * f.h
         known = 2.0 * content - 0.5 * _content(film, f, previous, cell, dt)
     else:
@@ -93,7 +94,8 @@ def content_step(
             where=f"e = ({state.eccentricity_x:.3e}, {state.eccentricity_y:.3e}) m",
             residual=change)
     fx, fy = shifted_pressure_force(film, pressure, state)
-    return fx, fy, MassConservingMemory(fraction, pressure, f.h)
+    fills = _hole_fill(film, f, memory, previous if bdf2 else None, cell, dt, state.viscosity)
+    return fx, fy, MassConservingMemory(fraction, pressure, f.h, *fills)
 
 
 def accepted_result(film: Any, state: FilmState, memory: MassConservingMemory | None,
@@ -111,16 +113,44 @@ def accepted_result(film: Any, state: FilmState, memory: MassConservingMemory | 
         return None
     result = film.characteristics(state, f, memory.pressure,
                                   film.fraction_field(memory.fraction, f))
+    if f.fed is not None:  # the oil the turning holes poured into the nodes they came over
+        result.supply_flow += memory.held_fill
+        result.extra["journal_hole_flow_m3_per_s"] += memory.hole_fill
     if with_pressure:
         result.pressure = film.gauge_pressure(memory.pressure, state)
     return result
 
 
+def _hole_fill(film: Any, f, memory: MassConservingMemory,
+               previous: MassConservingMemory | None, cell: float, dt: float,
+               viscosity: float) -> tuple[float, float]:
+    """Oil the journal's holes (all supply features) put into the nodes they hold at the
+    end of a step besides their flux into the free nodes [m³/s]: the step's content change
+    of those nodes, full
+    at its end, from their stored contents ϑh before (backward Euler, or BDF2 with
+    ``previous``; ``cell`` = 12μΔxΔz/Δt [Pa m/s]) — the filling of the partly filled nodes
+    a turning hole comes over and the squeeze of the nodes it holds; 0 without journal
+    holes. With the flux this is all the oil through the holes: summed over a periodic
+    cycle the content of the whole film, held nodes included, balances supply and side
+    flow (the shell's fixed features held by a fed hole part of the cycle included)."""
+    if f.fed is None:
+        return 0.0, 0.0
+    before = _content(film, f, memory, cell, dt, held=False)
+    if previous is None:
+        change = cell * f.h - before
+    else:
+        change = (1.5 * cell * f.h - 2.0 * before
+                  + 0.5 * _content(film, f, previous, cell, dt, held=False))
+    scale = 1.0 / (12.0 * viscosity)
+    return float(np.sum(change[f.fed])) * scale, float(np.sum(change[f.supply])) * scale
+
+
 def _content(film: Any, f, memory: MassConservingMemory, cell: float,
-             dt: float) -> np.ndarray:
+             dt: float, held: bool = True) -> np.ndarray:
     """12μΔxΔz ϑh/Δt of ``memory`` [Pa m³]; without its thickness, h^n = h − Δt ∂h/∂t
     (the backward Euler position of a rigid film)."""
-    fraction = film.fraction_field(memory.fraction, f)
+    fraction = (film.fraction_field(memory.fraction, f) if held  # full where now held
+                else np.clip(np.asarray(memory.fraction, dtype=float), 0.0, 1.0))
     if memory.thickness is not None:
         return cell * fraction * memory.thickness
     return fraction * (cell * f.h - f.squeeze)

@@ -4,7 +4,8 @@ The pressure solves the Reynolds equation of :mod:`conrod.film.base` on a
 ``n_theta × (n_z + 1)``-node grid (:class:`~conrod.film.characteristics.FilmGrid`) with
 
 * p = 0 (ambient, gauge) on the edges z = ±L/2,
-* p = supply pressure on grooves and feed holes (:mod:`conrod.film.supply`),
+* p = supply pressure on grooves and feed holes, the feed pressure on the journal's oil
+  holes where ``FilmState.journal_feed`` puts them (:func:`~conrod.film.supply.instant_supply`),
 * optionally p = 0 on an axial inlet line at the largest gap θ = ψ + π (Raimondi &
   Boyd's full-bearing condition, ``ambient_line_at_max_gap=True``),
 * cavitation by projection p := max(p, p_cav) inside projected SOR
@@ -19,7 +20,6 @@ orbit cheap. The memory is explicit: the orbit integrator holds it
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, replace
 from typing import Any, Literal
 
@@ -37,9 +37,9 @@ from conrod.film.reynolds import kernel as kernel
 from conrod.film.reynolds import multigrid as multigrid
 from conrod.film.reynolds.memory import ReynoldsMemory, scaled_state
 from conrod.film.reynolds.problem import DiscreteProblem as _Problem
-from conrod.film.reynolds.problem import optimal_relaxation
+from conrod.film.reynolds.problem import dirichlet_regions, optimal_relaxation
 from conrod.film.reynolds.results import reynolds_characteristics
-from conrod.film.supply import edge_mask, nearest_theta_index, supply_mask
+from conrod.film.supply import edge_mask, journal_holes_symmetric, supply_mask
 from conrod.film.tilt import axial_gap, moment_weights, tilt_fields
 
 FrictionConvention = Literal["full_film", "film_fraction"]
@@ -125,6 +125,7 @@ class ReynoldsFilm:
         self._profile = profile_field(g, self.film_grid.theta, self.film_grid.z)
         self._symmetric = (self.use_symmetry and self.method == "multigrid"
                            and np.array_equal(self._supply, self._supply[:, ::-1])
+                           and journal_holes_symmetric(g)
                            and (self._profile is None
                                 or np.array_equal(self._profile, self._profile[:, ::-1])))
 
@@ -207,13 +208,15 @@ class ReynoldsFilm:
         for this configuration)."""
         from conrod.film.reynolds.flight import flight_kernel
 
-        return flight_kernel(self, memory, newton_tolerance)
+        return None if self.geometry.journal_holes else flight_kernel(  # fixed supply mask
+            self, memory, newton_tolerance)
 
     def tilt_flight_kernel(self, memory: Any, newton_tolerance: float, free: bool = True):
         """Compiled forces and moments of a tilted journal (or None, ``tilt_flight``)."""
         from conrod.film.reynolds.tilt_flight import tilt_flight_kernel
 
-        return tilt_flight_kernel(self, memory, newton_tolerance, free)
+        return None if self.geometry.journal_holes else tilt_flight_kernel(  # a fixed mask
+            self, memory, newton_tolerance, free)
 
     def with_deformation_rate(self) -> ReynoldsFilm:
         """This film with the bore's rate in its squeeze term
@@ -307,7 +310,8 @@ class ReynoldsFilm:
         exact = (self.method == "multigrid" and not self.ambient_line_at_max_gap
                  and g.supply_pressure == 0.0 and g.cavitation_pressure == 0.0
                  and self.pressure_viscosity is None  # homogeneous in v_s only if isoviscous
-                 and self._profile is None)  # and on a circular bore
+                 and self._profile is None  # and on a circular bore
+                 and not g.journal_holes)  # the supply mask does not move
         return CompiledKernel(None, (), self._squeeze_cycle) if exact else None
 
     def _squeeze_cycle(self, request: QuasiStaticRequest) -> Any:
@@ -356,17 +360,13 @@ class ReynoldsFilm:
                 f"film thickness min = {smallest:.3g} m (must stay > 0 m): the journal "
                 "touches the shell; the load is beyond what the film and the contact model "
                 "carry at this step (try a contact model, a finer step or a larger clearance)")
-        fixed = self._fixed
         values = (self._supply_values if self.pressure_viscosity is None
                   else np.where(self._supply, self._reduced(g.supply_pressure, state), 0.0))
-        if self.ambient_line_at_max_gap:
-            fixed, values = fixed.copy(), values.copy()
-            psi = math.atan2(state.eccentricity_y, state.eccentricity_x)
-            column = nearest_theta_index(psi + math.pi, self.film_grid)
-            fixed[column, :] = True
-            values[column, :] = 0.0
+        fixed, values, fed = dirichlet_regions(
+            self.film_grid, state, g, (self._fixed, values),
+            lambda p: self._reduced(p, state), self.ambient_line_at_max_gap)
         return _Problem(self.film_grid, h, h_rate, fixed, values,
-                        self._reduced(g.cavitation_pressure, state))
+                        self._reduced(g.cavitation_pressure, state), journal_holes=fed)
 
     def _levels(self, problem: _Problem) -> list[_Problem]:
         """Coarse-to-fine problems: up to three nested grids for a cold start, none

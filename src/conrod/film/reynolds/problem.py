@@ -7,7 +7,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from conrod.film.base import BearingGeometry, FilmState
 from conrod.film.characteristics import FilmGrid
+from conrod.film.supply import instant_supply, nearest_theta_index
 
 
 def optimal_relaxation(grid: FilmGrid) -> float:
@@ -35,6 +37,8 @@ class DiscreteProblem:
     """Cavitation bound of the solved variable (reduced pressure when piezoviscous) [Pa]."""
     coefficients: tuple | None = None
     """(a_E, a_N, b) of the last solve on this level (reused by the characteristics)."""
+    journal_holes: np.ndarray | None = None
+    """Nodes fed by the journal's oil holes at this instant, bool (None: no journal hole)."""
 
     def coarsened(self) -> DiscreteProblem:
         """The same problem on every other node (coinciding nodes, exact subsampling)."""
@@ -43,3 +47,21 @@ class DiscreteProblem:
         return DiscreteProblem(coarse, self.h[::2, ::2].copy(), self.h_rate[::2, ::2].copy(),
                                self.fixed[::2, ::2].copy(), self.fixed_values[::2, ::2].copy(),
                                self.cavitation)
+
+
+def dirichlet_regions(grid: FilmGrid, state: FilmState, geometry: BearingGeometry,
+                      shell: tuple[np.ndarray, np.ndarray], solved,
+                      inlet_line: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """(Dirichlet mask, values, nodes fed by the journal holes) of ``state``: the ``shell``
+    mask and values (edges, grooves, shell holes; not modified), the journal's oil holes
+    where ``state.journal_feed`` puts them (:func:`~conrod.film.supply.instant_supply`,
+    ``solved(p)`` the solved variable of a pressure [Pa]) and with ``inlet_line`` p = 0 on
+    the axial line at the largest gap θ = ψ + π."""
+    fixed, values, fed = instant_supply(geometry, grid, state.journal_feed, *shell, solved)
+    if inlet_line:
+        fixed, values = fixed.copy(), values.copy()
+        psi = math.atan2(state.eccentricity_y, state.eccentricity_x)
+        column = nearest_theta_index(psi + math.pi, grid)
+        fixed[column, :] = True
+        values[column, :] = 0.0
+    return fixed, values, fed

@@ -50,6 +50,9 @@ def reynolds_characteristics(film: Any, problem: Any, reduced, pressure, state: 
     p_max, p_angle = chars.peak_pressure_at(pressure, grid, i_p, j_p)
     info = dict(info)
     info["cavitation_flow_m3_per_s"] = lost * to_flow
+    if problem.journal_holes is not None:  # signed: positive into the bearing
+        imbalance = kernel.node_imbalance(reduced, a_east, a_north, source)
+        info["journal_hole_flow_m3_per_s"] = float(imbalance[problem.journal_holes].sum()) * to_flow
     info["friction_full_film"] = float(film.friction == "full_film")
     if law is not None:
         info.update(law.diagnostics(reduced, pressure, state.viscosity))
