@@ -33,7 +33,8 @@ from conrod.errors import CaseError
 from conrod.io.text import read_utf8
 
 ADDED_LATER = (("misalignment",), ("bearing", "profile"), ("bearing", "profile_file"),
-               ("bearing", "journal_holes"), ("limits",))
+               ("housing", "assembly"), ("housing", "thermal"), ("bearing", "journal_holes"),
+               ("limits",))
 """Optional items added to the schema after cases were hashed: left out of
 :meth:`Case.content_hash` while unset (None or an empty list), so an existing case keeps
 its hash."""

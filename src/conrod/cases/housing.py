@@ -20,6 +20,7 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
+from conrod.cases.assembly import AssemblySection, ThermalExpansionSection
 from conrod.cases.base import Section
 from conrod.errors import CaseError
 
@@ -57,7 +58,8 @@ class HousingSection(Section):
     cap_thickness: float | None = _length("Radial thickness of the cap; default 0.16 d_b [m]",
                                           1.0)
     split_angle: float = Field(default=0.0, ge=0.0, le=60.0, description="Inclination of the "
-                               "split line from the perpendicular to the rod axis [deg]")
+                               "split line from the perpendicular to the rod axis (built-in "
+                               "rod; an imported mesh's bolted joint) [deg]")
     shank_width_big_end: float | None = _length(
         "Shank width at the big-end centre; default 0.45 d_b [m]", 2.0)
     shank_width_small_end: float | None = _length(
@@ -128,6 +130,10 @@ class HousingSection(Section):
         "Largest bore-deformation increment per coupling update, share of h_min [-]"))
     coupling_iterations: int = Field(default=40, ge=2, le=1000, description=(
         "Film solves per coupling before the step fails [-]"))
+    assembly: AssemblySection | None = Field(default=None, description=(
+        "Bolt preload and shell crush of the assembled big end ([housing.assembly]) [-]"))
+    thermal: ThermalExpansionSection | None = Field(default=None, description=(
+        "Journal and housing at their running temperatures ([housing.thermal]) [-]"))
 
     @model_validator(mode="after")
     def _check_model_inputs(self) -> HousingSection:
@@ -144,6 +150,21 @@ class HousingSection(Section):
             raise ValueError(f"housing.node_file is required with compliance_file = "
                              f"{str(self.compliance_file)!r} (CSV of node_id with angle_deg, "
                              "axial_position_m or with x_m, y_m, z_m)")
+        if self.assembly is not None and self.assembly.active and self.model not in (
+                "builtin", "mesh"):
+            raise ValueError(f"housing.assembly needs a finite-element housing, not model = "
+                             f"{self.model!r} (allowed: builtin or mesh)")
+        if (self.assembly is not None and self.assembly.bolt_preload > 0.0
+                and self.model == "mesh" and (self.assembly.bolt_distance is None
+                                              or self.assembly.bolt_thread_depth is None)):
+            raise ValueError("housing.assembly.bolt_preload on an imported mesh needs "
+                             "bolt_distance and bolt_thread_depth (the built-in rod knows its "
+                             "bolts; a mesh is split as housing.split_angle)")
+        if (self.thermal is not None and self.thermal.conducting
+                and self.model not in ("builtin", "mesh")):
+            raise ValueError(f"housing.thermal.shell_temperatures need a finite-element "
+                             f"housing to conduct in, not model = {self.model!r} (allowed: "
+                             "builtin or mesh; or a uniform housing_temperature)")
         for angle in self.stress_angles:
             if not 0.0 <= angle <= 720.0:
                 raise ValueError(f"housing.stress_angles contains {angle!r}: out of range "

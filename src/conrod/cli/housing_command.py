@@ -6,7 +6,9 @@ after every input check passed), the tables and figures registered for
 :class:`conrod.results.housing.HousingResults`: ``compliance.npz`` (the import format of
 ``[housing] compliance_file``), ``inertia.npz`` (``inertia_file`` format),
 ``housing_summary.json`` and the figures ``housing_mesh.png`` (finite-element models),
-``bore_deformation.png`` and ``inertia_deformation.png`` (with ``[engine]``).
+``bore_deformation.png`` and ``inertia_deformation.png`` (with ``[engine]``); with
+``[housing.assembly]`` ``assembled_bore.csv``, ``joint_pressure.csv`` and
+``assembled_bore.png``.
 """
 
 from __future__ import annotations
@@ -42,6 +44,7 @@ def register(app: typer.Typer) -> None:
             from conrod.cases.case import Case
             from conrod.housing.housing import Housing
             from conrod.output.registry import write_results
+            from conrod.simulation.assembly_study import as_built_lines
             from conrod.simulation.housing_study import MICRO_PER_KILO, housing_study
 
             case = Case.from_toml(case_file)
@@ -50,10 +53,13 @@ def register(app: typer.Typer) -> None:
             raise CaseError("housing.model = 'rigid': nothing to compute (allowed: builtin, "
                             "mesh or compliance)")
         housing = Housing.from_case(case, use_cache=cache)
-        write_results(housing_study(housing, case), out)
+        study = housing_study(housing, case)
+        write_results(study, out)
         diagonal = np.diag(housing.corrected_compliance) * MICRO_PER_KILO
         with printing_after_results(out):
             typer.echo(f"{case.housing.model} housing, {len(housing.angles)} film nodes, "
                        f"corrected compliance diagonal {diagonal.min():.2f}.."
                        f"{diagonal.max():.2f} um/kN ({housing.info.get('seconds', 0.0):.2f} s) "
                        f"-> {out}")
+            for line in as_built_lines(study.summary):
+                typer.echo(line)

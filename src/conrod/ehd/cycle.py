@@ -58,15 +58,16 @@ class ElasticCycle:
     pressures: dict[int, np.ndarray] | None = None
     """Film pressure p(θ, z) [Pa] at the output rows asked for (row → field)."""
 
-    def film_thickness(self, cycle, clearance: float, points: int = 361
-                       ) -> tuple[np.ndarray, np.ndarray]:
+    def film_thickness(self, cycle, clearance: float, points: int = 361,
+                       bore_shape: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
         """(shell angles θ, 0 … 2π, ``points`` of them [rad]; film thickness on the deformed
         bore h(φ, θ) = c − e_x cos θ − e_y sin θ + u(θ) at each output angle (n_out,
         ``points``) [m]; the width-mean u of a bore that deforms along the width),
-        u interpolated linearly (periodically) between the bore nodes."""
+        u interpolated linearly (periodically) between the bore nodes; ``bore_shape``: the
+        housing's static bore shape h₀ at the bore nodes [m] (assembled, warm) added to u."""
         theta = np.linspace(0.0, 2.0 * np.pi, points)
-        u = np.array([np.interp(theta, self.angles, row, period=2.0 * np.pi)
-                      for row in self.deformation])
+        rows = self.deformation if bore_shape is None else self.deformation + bore_shape
+        u = np.array([np.interp(theta, self.angles, row, period=2.0 * np.pi) for row in rows])
         h = (clearance - np.asarray(cycle.eccentricity_x)[:, None] * np.cos(theta)[None, :]
              - np.asarray(cycle.eccentricity_y)[:, None] * np.sin(theta)[None, :] + u)
         return theta, h

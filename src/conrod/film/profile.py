@@ -31,7 +31,10 @@ Shapes (all optional, summed):
 * crown k: h₀ = k (2z/L)² (k more clearance at both edges than at mid-width; negative: a
   barrel that is tighter at the edges);
 * out-of-round: Σ a_n cos(n(θ − φ_n)) (n = 2 ovality, 3 trilobe, ...);
-* a measured table (:class:`~conrod.film.profile_table.ProfileTable`).
+* a measured table (:class:`~conrod.film.profile_table.ProfileTable`);
+* the as-built bore of an elastic housing (bolt preload, shell crush and thermal distortion,
+  :mod:`conrod.housing.assembly`, :mod:`conrod.housing.thermal`), a table on the film
+  nodes, uniform in z.
 
 A profile may not close the film of a centred journal: c + min h₀ must stay above 2 % of c.
 """
@@ -79,6 +82,7 @@ class BoreProfile:
     taper : float  Axial taper t [m].  crown : float  Crown k [m].
     out_of_round : tuple  :class:`Harmonic` terms.
     table : ProfileTable or None  Measured offsets.
+    housing_bore : ProfileTable or None  The as-built bore of the housing (uniform in z).
     """
 
     crush_relief_depth: float = 0.0
@@ -93,6 +97,7 @@ class BoreProfile:
     crown: float = 0.0
     out_of_round: tuple[Harmonic, ...] = ()
     table: ProfileTable | None = None
+    housing_bore: ProfileTable | None = None
 
     def __post_init__(self) -> None:
         """Ranges that keep every shape meaningful (module docstring)."""
@@ -127,6 +132,8 @@ class BoreProfile:
                   self.offset_halves, self.taper, self.crown,
                   *(h.amplitude for h in self.out_of_round))
         table = self.table is not None and bool(np.any(np.asarray(self.table.offsets)))
+        table = table or (self.housing_bore is not None
+                          and bool(np.any(np.asarray(self.housing_bore.offsets))))
         return table or any(value != 0.0 for value in shapes)
 
     @property
@@ -149,6 +156,8 @@ class BoreProfile:
         out = around[:, None] + along[None, :]
         if self.table is not None:
             out = out + self.table.field(theta, z, width)
+        if self.housing_bore is not None:
+            out = out + self.housing_bore.field(theta, z, width)
         return out
 
 
@@ -200,7 +209,8 @@ def profile_field(geometry, theta: np.ndarray, z: np.ndarray) -> np.ndarray | No
     if not c + smallest > SMALLEST_OPEN_GAP * c:
         i, j = np.unravel_index(int(np.argmin(field)), field.shape)
         raise CaseError(
-            f"bearing profile: offset {smallest:.3g} m at θ = {math.degrees(theta[i]):.1f} "
+            f"bearing profile{' (with the as-built housing bore)' if profile.housing_bore else ''}"
+            f": offset {smallest:.3g} m at θ = {math.degrees(theta[i]):.1f} "
             f"deg, z = {z[j]:.4g} m leaves {c + smallest:.3g} m of the radial clearance "
             f"{c:.3g} m for a centred journal (allowed: offset > {-(1 - SMALLEST_OPEN_GAP):g}"
             " x radial_clearance)")
@@ -215,4 +225,5 @@ def refuse_profile(geometry, name: str) -> None:
     if geometry.profile is not None:
         raise CaseError(
             f"film = {name!r} cannot take a bore profile (bearing.profile / "
-            "bearing.profile_file; allowed: a grid film, 'reynolds' or 'mass_conserving')")
+            "bearing.profile_file / housing.assembly; allowed: a grid film, 'reynolds' or "
+            "'mass_conserving')")

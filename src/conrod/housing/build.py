@@ -44,6 +44,10 @@ def housing_from_case(case, make: Any, *, cache_dir=None, use_cache: bool = True
     section, angles = case.housing, film_angles(case.solver.n_theta)
     radius = 0.5 * case.bearing.diameter
     common = {"correction": section.correction, "kinematics": crank_kinematics(case)}
+    if section.model not in ("builtin", "mesh"):
+        from conrod.housing.as_built import warm_bore
+
+        common["warm"] = warm_bore(case)  # no FE model: the bore grows as a free ring
     if section.model == "compliance":
         return _imported(case, make, angles, radius, common)
     if section.model in ("builtin", "mesh"):
@@ -66,7 +70,7 @@ COUPLING_FIELDS = ("coupling_tolerance", "rigid_start_deg", "increment_share",
 
 def _cache_payload(case) -> dict:
     section = case.housing
-    skip = {"stress_angles", "correction", *COUPLING_FIELDS}
+    skip = {"stress_angles", "correction", "assembly", "thermal", *COUPLING_FIELDS}
     payload = {"housing": section.model_dump(mode="json", exclude=skip),
                "bearing": [case.bearing.diameter, case.bearing.width],
                "rod_length": case.engine.rod_length if case.engine else None,
@@ -106,11 +110,91 @@ def _finite_element(case, make, angles, radius, common, cache_dir, use_cache) ->
             "seconds": time.perf_counter() - start,
             **{name: arrays[name].item() for name in ("build_seconds", "n_dofs", "n_elements",
                                                        "bore_nodes")}}
+    assembly = _assembly(case, factory, holder, cache_dir, use_cache, info)
+    warm = _warm(case, factory, holder, cache_dir, use_cache, info)
     housing = make(angles, radius, arrays["compliance"], arrays["inertia_base"], info=info,
-                      structure_factory=factory, **common)
+                      structure_factory=factory, assembly=assembly, warm=warm, **common)
     if "structure" in holder:
         housing.__dict__["structure"] = holder["structure"]
     return housing
+
+
+def _assembly(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -> Any:
+    """The assembled bore of ``[housing.assembly]`` (None without preload and crush), from
+    the cache or one static FE solve (:mod:`conrod.housing.assembly`)."""
+    section = case.housing.assembly
+    if section is None or not section.active:
+        return None
+    from conrod.housing.assembly import AssembledBore, solve_assembly
+
+    def build() -> dict[str, np.ndarray]:
+        start = time.perf_counter()
+        if "structure" not in holder:
+            holder["structure"] = factory()
+        geometry, width = None, case.bearing.width
+        head = case.housing.thicknesses(width)["head"]
+        if case.housing.model == "builtin":
+            geometry = RodGeometry(**case.housing.rod_outline(
+                case.bearing.diameter, case.engine.rod_length if case.engine else None))
+        elif section.bolt_preload > 0.0:  # an imported mesh split as [housing] split_angle
+            from conrod.housing.joint import SplitLine
+
+            geometry = SplitLine(np.radians(case.housing.split_angle),
+                                 holder["structure"].bore_radius)
+            head = case.housing.thickness if case.housing.thickness is not None else width
+        shell = 0.5 * (case.housing.bore_diameter(case.bearing.diameter) - case.bearing.diameter)
+        assembled = solve_assembly(holder["structure"], section, shell, width, geometry, head)
+        return {**assembled.arrays(), "assembly_seconds": np.array(time.perf_counter() - start)}
+
+    from conrod.housing.assembly import ASSEMBLY_FORMAT
+
+    payload = {**_cache_payload(case), "assembly_format": ASSEMBLY_FORMAT,
+               "assembly": section.model_dump(mode="json", exclude={"clearance_reference"})}
+    arrays, from_cache = load_or_build(cache_key(payload), build, cache_dir, use_cache)
+    info["assembly_from_cache"] = from_cache
+    info["assembly_seconds"] = arrays.pop("assembly_seconds").item()
+    return AssembledBore.from_arrays(arrays, section.clearance_reference)
+
+
+def _warm(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -> Any:
+    """The warm bore of ``[housing.thermal]`` (None without it) with the FE thermal bore
+    displacement: per unit strain for a uniform housing temperature (cached once), or of the
+    conduction field from the shell-side temperatures (cached per thermal input)
+    (:mod:`conrod.housing.thermal`, :mod:`conrod.housing.conduction`)."""
+    from conrod.housing.as_built import warm_bore
+
+    if warm_bore(case) is None:
+        return None
+    from conrod.housing.conduction import Cooling
+    from conrod.housing.thermal import field_bore, unit_strain_bore
+
+    section = case.housing.thermal
+
+    def build() -> dict[str, np.ndarray]:
+        if "structure" not in holder:
+            holder["structure"] = factory()
+        if not section.conducting:
+            return {"unit_strain_bore": unit_strain_bore(holder["structure"])}
+        cooling = Cooling(section.conductivity, section.surface_heat_transfer,
+                          section.ambient_temperature)
+        bore, mean, shell, corners = field_bore(holder["structure"], section, cooling)
+        return {"bore": bore, "temperatures": np.array([mean, shell]),
+                "corner_temperature": corners}
+
+    thermal = "unit strain" if not section.conducting else section.model_dump(
+        mode="json", exclude={"journal_temperature", "journal_expansion", "shell_expansion"})
+    from conrod.housing.thermal import THERMAL_FORMAT
+
+    key = cache_key({**_cache_payload(case), "thermal_format": THERMAL_FORMAT,
+                     "thermal": thermal})
+    arrays, from_cache = load_or_build(key, build, cache_dir, use_cache)
+    info["thermal_from_cache"] = from_cache
+    if not section.conducting:
+        strain = section.housing_expansion * (section.housing_temperature
+                                              - section.reference_temperature)
+        return warm_bore(case, strain * arrays["unit_strain_bore"])
+    return warm_bore(case, arrays["bore"], tuple(float(t) for t in arrays["temperatures"]),
+                     arrays["corner_temperature"])
 
 
 def _structure_factory(case, angles):

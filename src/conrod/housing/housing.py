@@ -49,6 +49,10 @@ class Housing:
     info : dict  Build diagnostics (model, sizes, times, cache use).
     axial : ndarray or None  Axial positions z_k of the film nodes [m] (from mid-width) when
         the compliance has a node at every (θ_j, z_k); None: plane, uniform in z.
+    assembly : AssembledBore or None  The bore and joint as assembled (bolt preload, shell
+        crush; :mod:`conrod.housing.assembly`); None: round when unloaded.
+    warm : WarmBore or None  Clearance change and thermal distortion at the running
+        temperatures (:mod:`conrod.housing.thermal`); None: at the reference temperature.
     """
 
     angles: np.ndarray
@@ -60,6 +64,8 @@ class Housing:
     info: dict[str, Any] = field(default_factory=dict)
     structure_factory: Any = field(default=None, repr=False)
     axial: np.ndarray | None = None
+    assembly: Any = None
+    warm: Any = None
     projector: np.ndarray = field(init=False, repr=False)
     corrected_compliance: np.ndarray = field(init=False, repr=False)
     corrected_inertia: np.ndarray = field(init=False, repr=False)
@@ -135,6 +141,13 @@ class Housing:
         return housing_from_case(case, cls, cache_dir=cache_dir, use_cache=use_cache)
 
     # ------------------------------------------------------------------ film side
+    def assembled_profile(self) -> np.ndarray | None:
+        """The assembled bore as the film's profile h₀(θ_j) [m] (corrected; its mean
+        removed when the clearance is the assembled one), None without an assembly."""
+        if self.assembly is None:
+            return None
+        return self.assembly.bore_profile(self.projector)
+
     def nodal_forces(self, pressure: np.ndarray, z: np.ndarray,
                      theta: np.ndarray | None = None) -> np.ndarray:
         """Film nodal forces f_j [N] from p(θ, z) (n_θ, n_z + 1) [Pa] on z [m]; θ [rad] of

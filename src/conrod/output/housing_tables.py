@@ -38,7 +38,35 @@ def _housing_tables(results: HousingResults) -> tuple[TableSpec, ...]:
                   "Compliance diagonal range [µm/kN], inertia fields [µm], finite-element "
                   "mass properties [kg, m] and the build information.",
                   lambda: results.summary),
-    ) + case_tables(results)
+    ) + _assembly_tables(results.assembly) + case_tables(results)
+
+
+def _assembly_tables(report) -> tuple[TableSpec, ...]:
+    if report is None:
+        return ()
+    own = (TableSpec("assembled_bore.csv", "Assembled bore",
+                     "Bore as assembled (bolt preload, shell crush) against the shell angle "
+                     "[deg]: raw radial displacement of the clamped model and the bore profile "
+                     "the film sees [m] (outward + = more clearance).",
+                     lambda: {"angle_deg": np.degrees(report.angles),
+                              "raw_displacement_m": report.raw,
+                              "film_profile_m": report.profile}),)
+    if report.joint_stress is not None:
+        def joint() -> dict[str, np.ndarray]:
+            columns = {"side": report.joint_side,
+                       "distance_from_bore_centre_m": report.joint_distance,
+                       "assembled_pressure_Pa": -report.joint_stress}
+            if report.cycle_max_stress is not None:
+                columns["cycle_min_pressure_Pa"] = -report.cycle_max_stress
+                columns["cycle_min_at_crank_angle_deg"] = np.degrees(report.cycle_worst_angle)
+            return columns
+
+        own += (TableSpec("joint_pressure.csv", "Joint pressure",
+                          "Normal pressure across the bonded rod/cap joint [Pa] along each side "
+                          "(+1 towards +y_rod) against the distance from the bore centre [m]: "
+                          "as assembled and its smallest over the cycle with the crank angle "
+                          "[deg] (negative: the joint opens there).", joint),)
+    return own
 
 
 @figures.register
@@ -53,6 +81,19 @@ def _housing_figures(results: HousingResults) -> tuple[FigureSpec, ...]:
                           "Mesh of the rod [m] by region, with the bore nodes.",
                           lambda: _plots().housing_mesh_figure(results.housing.structure)),
                *own)
+    if results.assembly is not None:
+        own += (FigureSpec("assembled_bore.png", "Assembled bore",
+                           "Magnified bore as assembled (bolt preload, shell crush): raw and "
+                           "as the film sees it [µm]; pressure across the joint [MPa] as "
+                           "assembled and its smallest over the cycle.",
+                           lambda: _plots().assembled_bore_figure(results)),)
+    warm = getattr(results.housing, "warm", None)
+    if results.has_mesh and warm is not None and warm.corner_temperature is not None:
+        own += (FigureSpec("housing_temperature.png", "Housing temperature",
+                           "Temperature of the housing [°C] conducting from its shell-side "
+                           "temperature to the crankcase, on the rod [m].",
+                           lambda: _plots().housing_temperature_figure(
+                               results.housing.structure, warm)),)
     if results.inertia:
         own += (FigureSpec("inertia_deformation.png", "Bore under the rod's inertia",
                            "Radial bore displacement [µm] from the rod's own inertia at TDC "

@@ -120,3 +120,71 @@ def von_mises_figure(structure, field: StressField, title: str) -> Figure:
     axes.set_title(title)
     axes.legend(loc="upper right", fontsize=8)
     return figure
+
+
+def assembled_bore_figure(results) -> Figure:
+    """The assembled bore, magnified (raw and as the film sees it), and the pressure across
+    the joint as assembled and its smallest over the cycle
+    (:class:`conrod.results.housing.HousingResults` with an ``assembly``)."""
+    report, housing = results.assembly, results.housing
+    joint = report.joint_stress is not None
+    figure = Figure(figsize=(12.0 if joint else 6.5, 5.6))
+    panels = figure.subplots(1, 2 if joint else 1, squeeze=False).ravel()
+    axes = panels[0]
+    scale = _magnification(housing.radius, [report.raw, report.profile])
+    _bore_outline(axes, report.angles, housing.radius, np.zeros_like(report.raw), 0.0,
+                  color="0.7", lw=1.0, label="round")
+    _bore_outline(axes, report.angles, housing.radius, report.raw, scale, color="tab:orange",
+                  label=f"raw (clamped) × {scale:.0f}")
+    _bore_outline(axes, report.angles, housing.radius, report.profile, scale,
+                  color="tab:blue", label=f"film profile h₀ × {scale:.0f}")
+    axes.set_aspect("equal")
+    axes.set_xticks([])
+    axes.set_yticks([])
+    axes.legend(fontsize=7, loc="lower left")
+    axes.set_title(f"Assembled bore: preload {report.bolt_preload / 1e3:.0f} kN per bolt, crush "
+                   f"pressure {report.crush_pressure / 1e6:.1f} MPa\nout-of-round "
+                   f"{report.out_of_roundness * MICRO:.1f} µm (x_rod to the right)", fontsize=9)
+    if joint:
+        _joint_panel(panels[1], report)
+    return figure
+
+
+def _joint_panel(axes, report) -> None:
+    for side, color in ((1.0, "tab:blue"), (-1.0, "tab:red")):
+        on = report.joint_side == side
+        name = "+y" if side > 0 else "−y"
+        distance = report.joint_distance[on] * 1e3
+        axes.plot(distance, -report.joint_stress[on] / 1e6, color=color,
+                  label=f"side {name}, assembled")
+        if report.cycle_max_stress is not None:
+            axes.plot(distance, -report.cycle_max_stress[on] / 1e6, "--", color=color,
+                      label=f"side {name}, smallest over the cycle")
+    axes.axhline(0.0, color="k", lw=0.8)
+    axes.set_xlabel("distance from the bore centre along the split line [mm]")
+    axes.set_ylabel("pressure across the joint [MPa] (< 0: opens)")
+    axes.grid(alpha=0.3)
+    axes.legend(fontsize=7)
+    opens = report.joint_opens
+    verdict = "" if opens is None else (" — opens over the cycle" if opens
+                                        else " — stays closed over the cycle")
+    axes.set_title(f"Bonded rod/cap joint{verdict}", fontsize=9)
+
+
+def housing_temperature_figure(structure, warm) -> Figure:
+    """The housing's conduction temperature [°C] at the mesh corners
+    (:class:`conrod.housing.thermal.WarmBore` with ``corner_temperature``), contoured."""
+    figure = Figure(figsize=(11.0, 4.6))
+    axes = figure.subplots()
+    triangulation = _triangulation(structure)
+    image = axes.tricontourf(triangulation, warm.corner_temperature, levels=20, cmap="inferno")
+    axes.tricontour(triangulation, warm.corner_temperature, levels=10, colors="w",
+                    linewidths=0.4)
+    figure.colorbar(image, ax=axes, label="temperature [°C]")
+    axes.set_aspect("equal")
+    axes.set_xlabel("x_rod (towards the small end) [m]")
+    axes.set_ylabel("y_rod [m]")
+    axes.set_title(f"Housing temperature: big-end mean {warm.housing_temperature:.1f} °C, "
+                   f"shell side {warm.shell_temperature:.1f} °C, crankcase "
+                   f"{warm.section.ambient_temperature:g} °C")
+    return figure

@@ -71,11 +71,18 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     integrator = resolved(integrator, problem)  # an automatic integrator: the one it chose
     name = integrator.name
     rows = stress_rows(results.cycle, simulation.case)
+    assembly = problem.film.housing.assembly
+    joint = assembly is not None and assembly.joint is not None  # pressures at every row
     diagnostics = elastic_cycle(problem, results.cycle, orbit.last.film_memory,
                                 massless=not declared(integrator, "with_mass"),
-                                pressure_rows=tuple(rows.values()))
+                                pressure_rows=tuple(range(len(results.cycle.crank_angle)))
+                                if joint else tuple(rows.values()))
     film = problem.film
-    angles, thickness = diagnostics.film_thickness(results.cycle, problem.clearance)
+    from conrod.housing.as_built import carried_bore_shape
+
+    angles, thickness = diagnostics.film_thickness(
+        results.cycle, problem.clearance,
+        bore_shape=carried_bore_shape(film.base.geometry, film.housing))
     results = dataclasses.replace(results, film_thickness=thickness, film_angles=angles)
     if film.carries_asperity():  # contact columns from the asperity on the deformed film
         results = dataclasses.replace(results, contact=analyse_contact(
@@ -105,6 +112,13 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
             isinstance(film, HasContentStep) or (film.settings.deformation_rate
                                               and film.base.name == "reynolds")),
     }
+    from conrod.housing.as_built import as_built_summary
+
+    info.update(as_built_summary(film.housing))
+    if joint:
+        from conrod.simulation.joint_run import joint_over_run
+
+        info["joint_over_run"] = joint_over_run(film.housing, results, diagnostics.pressures)
     if not film.housing.uniform_in_z:  # a 3-D compliance: bore nodes over the width
         info["bore_nodes"] = film.housing.node_count
         info["bore_axial_nodes"] = len(film.housing.axial)

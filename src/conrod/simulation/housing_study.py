@@ -31,11 +31,20 @@ def housing_study(housing: Any, case: Case) -> HousingResults:
         raise CaseError(f"housing.compliance_file: a 3-D compliance ({housing.node_count} "
                         "film nodes over the width) is not summarised by conrod housing "
                         "(allowed: a plane housing); conrod run draws its u(θ, z)")
+    from conrod.simulation.assembly_study import (
+        assembly_report,
+        assembly_summary,
+        warm_summary,
+    )
     from conrod.simulation.recording import record_case
 
-    return HousingResults(housing, housing_summary(housing, case), TEST_LOAD,
-                          _test_loads(housing), _inertia_cases(housing),
-                          record_case(case, case.solver))
+    summary, assembly = housing_summary(housing, case), assembly_report(housing, case)
+    if assembly is not None:
+        summary["assembly"] = assembly_summary(assembly)
+    if housing.warm is not None:
+        summary["thermal"] = warm_summary(housing)
+    return HousingResults(housing, summary, TEST_LOAD, _test_loads(housing),
+                          _inertia_cases(housing), record_case(case, case.solver), assembly)
 
 
 def _test_loads(housing: Any) -> tuple[BoreDeformation, ...]:

@@ -43,6 +43,7 @@ from conrod.results.cycle_results import CycleResults, RunResults
 from conrod.results.feed import starvation_warnings
 from conrod.results.plausibility import check_run, table_range_warnings
 from conrod.results.summary import contact_warnings, summarise
+from conrod.simulation.as_built_run import as_built, warm_note
 from conrod.simulation.feed_checks import check_journal_holes
 from conrod.simulation.fields import signed_off, signoff_request
 from conrod.simulation.orbit_outputs import (
@@ -126,8 +127,9 @@ class Simulation:
 
     # -- components -------------------------------------------------------------------
     def geometry(self) -> BearingGeometry:
-        """Bearing geometry with supply features from ``[bearing]``."""
-        return self._bearing.geometry(self._wear_angle)
+        """Bearing geometry with supply features from ``[bearing]``, as built and warm
+        (:func:`conrod.simulation.as_built_run.as_built`)."""
+        return as_built(self, self._bearing.geometry(self._wear_angle), self._film is None)
 
     def load_cycle(self) -> LoadCycle:
         """Load and surface speeds over the cycle (given, engine loads or the load table)."""
@@ -309,6 +311,7 @@ class Simulation:
         law = self._lubricant.pressure_viscosity_law()
         model = {"housing": "elastic bore (EHD)" if self.elastic() else "rigid bore",
                  "viscosity": "isoviscous" if law is None else f"piezoviscous ({law.law})"}
+        model["housing"] += warm_note(self)
         engine = self.case.engine
         if engine is not None and engine.pressure_model is not None and self.case.load is None:
             model["exhaust_opening_deg"] = "170"  # step of the [D3] gas-pressure model
@@ -333,8 +336,7 @@ class Simulation:
             target = heat_balance_temperature(cycle, lubricant, float(boundary.mean()))
             if (target is None or iteration == iterations
                     or abs(target - temperature) <= s.thermal_tolerance):
-                return ThermalOrbit(orbit, current, cycle, target, cycles, iteration,
-                                    asperity)
+                return ThermalOrbit(orbit, current, cycle, target, cycles, iteration, asperity)
             temperature = relaxed_update(temperature, target)
             viscosity = lubricant.viscosity_at(temperature)
             state = orbit.last.end_state
@@ -413,8 +415,7 @@ def coupling_settings(case: Case):
     h = case.housing
     return ElasticSettings(tolerance=h.coupling_tolerance,
                            rigid_start=float(np.radians(h.rigid_start_deg)),
-                           increment_share=h.increment_share,
-                           max_iterations=h.coupling_iterations)
+                           increment_share=h.increment_share, max_iterations=h.coupling_iterations)
 
 
 def _name(choice: Integrator | str, problem: OrbitProblem | None = None) -> str:
