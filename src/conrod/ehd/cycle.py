@@ -31,9 +31,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from conrod.film.base import FilmState
-from conrod.loads.tilt import cycle_tilt
-
 
 @dataclass(frozen=True)
 class ElasticCycle:
@@ -89,7 +86,7 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool,
     wanted = {peak, *pressure_rows}
     pressures = {}
     for i, memory in enumerate(film_memory):
-        state = _state(problem, cycle, i)
+        state = problem.row_state(cycle, i)
         result, after = film.solve_with_memory(state, memory, with_pressure=i in wanted)
         if i in wanted:
             pressures[i] = result.pressure
@@ -115,15 +112,6 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool,
                         pressures)
 
 
-def _state(problem, cycle, i: int) -> FilmState:
-    return FilmState(eccentricity_x=float(cycle.eccentricity_x[i]),
-                     eccentricity_y=float(cycle.eccentricity_y[i]),
-                     velocity_x=float(cycle.velocity_x[i]),
-                     velocity_y=float(cycle.velocity_y[i]),
-                     journal_speed=float(cycle.journal_speed[i]),
-                     shell_speed=float(cycle.shell_speed[i]), viscosity=problem.viscosity,
-                     **cycle_tilt(cycle.axial, i))
-
 
 def asperity_forces(problem, cycle, film_memory: list) -> np.ndarray:
     """The Greenwood–Tripp asperity force on the deformed film at each output angle [N]:
@@ -132,7 +120,7 @@ def asperity_forces(problem, cycle, film_memory: list) -> np.ndarray:
     film = problem.film
     forces = np.zeros(len(cycle.crank_angle))
     for i, memory in enumerate(film_memory):
-        result, _ = film.solve_with_memory(_state(problem, cycle, i), memory)
+        result, _ = film.solve_with_memory(problem.row_state(cycle, i), memory)
         forces[i] = float(result.extra.get("asperity_force_N", 0.0))
     return forces
 

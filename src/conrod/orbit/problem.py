@@ -26,6 +26,7 @@ from conrod.errors import CaseError
 from conrod.film.base import FilmModel, FilmState
 from conrod.film.capabilities import CarriesAsperityContact, CompiledKernel, HasCompiledKernel
 from conrod.loads.cycle import LoadCycle
+from conrod.loads.tilt import cycle_tilt
 from conrod.orbit.memory import FilmSession
 
 ForceFunction = Callable[..., tuple[float, float]]
@@ -92,6 +93,21 @@ class OrbitProblem:
         """The :class:`~conrod.film.base.JournalFeed` at ``crank_angle`` [rad] (None without
         journal holes)."""
         return None if self.feed is None else self.feed.at(crank_angle)
+
+    def row_state(self, cycle: Any, i: int, viscosity: float | None = None) -> FilmState:
+        """The film state of output row ``i`` of ``cycle`` (CycleResults): position,
+        velocity, speeds, tilt and the crank-pin holes of that crank angle, the problem's
+        viscosity unless ``viscosity`` [Pa s] is given — the one state every output that
+        solves the film again at a row uses."""
+        return FilmState(
+            eccentricity_x=float(cycle.eccentricity_x[i]),
+            eccentricity_y=float(cycle.eccentricity_y[i]),
+            velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
+            journal_speed=float(cycle.journal_speed[i]),
+            shell_speed=float(cycle.shell_speed[i]),
+            viscosity=self.viscosity if viscosity is None else viscosity,
+            **cycle_tilt(cycle.axial, i),
+            journal_feed=self.journal_feed(float(cycle.crank_angle[i])))
 
     @property
     def clearance(self) -> float:

@@ -27,7 +27,6 @@ from conrod.errors import CaseError
 from conrod.film.base import FilmState
 from conrod.film.capabilities import HasFilmFields, HasMixableContent
 from conrod.film.profile import profile_field
-from conrod.loads.tilt import cycle_tilt
 from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults
 from conrod.results.erosion import erosion_map
@@ -47,7 +46,7 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
     specs: dict[str, FieldSpec] = {}
     extremes: list[tuple[float, float, float, float]] = []
     for i in range(len(cycle.crank_angle)):
-        state = _state(problem, cycle, i)
+        state = problem.row_state(cycle, i)
         if film_memory:
             session.restore(film_memory[i])
             result = session.accepted(state, with_pressure=True)
@@ -106,14 +105,6 @@ def film_thickness_field(geometry, state: FilmState, theta: np.ndarray, z: np.nd
         h = h + deformation
     return h
 
-
-def _state(problem: OrbitProblem, cycle: CycleResults, i: int) -> FilmState:
-    return FilmState(
-        eccentricity_x=float(cycle.eccentricity_x[i]),
-        eccentricity_y=float(cycle.eccentricity_y[i]),
-        velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
-        journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
-        viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i))
 
 
 def sign_off(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None, summary,

@@ -7,9 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from conrod.film.base import FilmState
 from conrod.film.capabilities import CarriesAsperityContact
-from conrod.loads.tilt import cycle_tilt
 from conrod.orbit.heat_balance import effective_temperature
 from conrod.orbit.periodic import PeriodicOrbit
 from conrod.orbit.problem import OrbitProblem
@@ -36,14 +34,7 @@ def pressure_map(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
     largest p_max, with the film memory sampled there (film fraction ϑ of a
     mass-conserving film); (None, None) for a film without a pressure field."""
     i = int(cycle.p_max.argmax())
-    state = FilmState(
-        eccentricity_x=float(cycle.eccentricity_x[i]),
-        eccentricity_y=float(cycle.eccentricity_y[i]),
-        velocity_x=float(cycle.velocity_x[i]), velocity_y=float(cycle.velocity_y[i]),
-        journal_speed=float(cycle.journal_speed[i]), shell_speed=float(cycle.shell_speed[i]),
-        viscosity=problem.viscosity, **cycle_tilt(cycle.axial, i),
-        journal_feed=problem.journal_feed(float(cycle.crank_angle[i])),
-    )
+    state = problem.row_state(cycle, i)
     session = problem.session(film_memory[i] if film_memory else None)
     field = session.accepted(state, with_pressure=True).pressure
     if field is None:

@@ -13,8 +13,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from conrod.film.base import FilmState
-from conrod.loads.tilt import cycle_tilt
 from conrod.results.housing import StressResults
 from conrod.simulation.simulation import Simulation
 
@@ -70,19 +68,12 @@ def _rigid_pressures(simulation: Simulation, results, crank_angles_deg: list[flo
     again at the output angle nearest to each requested one."""
     cycle = results.cycle
     film = simulation.film_model()
-    feed = simulation.problem().journal_feed  # the crank-pin holes at a crank angle (if any)
+    problem = simulation.problem()  # its row state: tilt and crank-pin holes of the row
     theta, z = film.grid()
     fields = {}
     for angle in crank_angles_deg:
         k = int(np.argmin(np.abs(np.mod(cycle.crank_angle_deg - angle + 360.0, 720.0) - 360.0)))
-        state = FilmState(eccentricity_x=float(cycle.eccentricity_x[k]),
-                          eccentricity_y=float(cycle.eccentricity_y[k]),
-                          velocity_x=float(cycle.velocity_x[k]),
-                          velocity_y=float(cycle.velocity_y[k]),
-                          journal_speed=float(cycle.journal_speed[k]),
-                          shell_speed=float(cycle.shell_speed[k]),
-                          viscosity=results.summary.viscosity, **cycle_tilt(cycle.axial, k),
-                          journal_feed=feed(float(cycle.crank_angle[k])))
+        state = problem.row_state(cycle, k, viscosity=results.summary.viscosity)
         fields[angle] = film.solve(state, with_pressure=True).pressure
     return np.asarray(theta), np.asarray(z), fields
 
