@@ -98,13 +98,7 @@ class ElasticMassConservingFilm(ElasticFilm):
         result, inner = solve_film(self.base, deformed, memory.inner, with_pressure=True)
         result = dataclasses.replace(result, pressure=result.pressure if with_pressure
                                      else None, extra=dict(result.extra))
-        result.extra.update({
-            "coupling_iterations": float(memory.iterations),
-            "coupling_residual_m": memory.residual,
-            "deformation_increment_m": memory.increment,
-            "bore_displacement_min_m": float(memory.deformation.min()),
-            "bore_displacement_max_m": float(memory.deformation.max()),
-            "deformation_rate_m_per_s": memory.deformation_rate})
+        result.extra.update(_coupling_diagnostics(memory))
         return result, dataclasses.replace(memory, inner=inner)
 
     def accepted_result(self, state: FilmState, memory: ElasticMemory, *,
@@ -119,13 +113,7 @@ class ElasticMassConservingFilm(ElasticFilm):
         result = self.base.accepted_result(deformed, memory.inner, with_pressure=with_pressure)
         if result is None:
             return None
-        result.extra.update({
-            "coupling_iterations": float(memory.iterations),
-            "coupling_residual_m": memory.residual,
-            "deformation_increment_m": memory.increment,
-            "bore_displacement_min_m": float(memory.deformation.min()),
-            "bore_displacement_max_m": float(memory.deformation.max()),
-            "deformation_rate_m_per_s": memory.deformation_rate})
+        result.extra.update(_coupling_diagnostics(memory))
         return result
 
     def content_step(self, state: FilmState, memory: ElasticMemory, dt: float,
@@ -244,3 +232,15 @@ def elastic_film(base: Any, housing: Any, crank_speed: float,
             and base.exact_thickness_response()):
         return ElasticMassConservingFilm(base, housing, crank_speed, settings)
     return ElasticFilm(base, housing, crank_speed, settings, asperity)
+
+
+def _coupling_diagnostics(memory) -> dict[str, float]:
+    """The coupling's diagnostics of a solved ``memory`` (ElasticMemory) for
+    ``FilmResult.extra`` [-, m, m/s]."""
+    return {
+        "coupling_iterations": float(memory.iterations),
+        "coupling_residual_m": memory.residual,
+        "deformation_increment_m": memory.increment,
+        "bore_displacement_min_m": float(memory.deformation.min()),
+        "bore_displacement_max_m": float(memory.deformation.max()),
+        "deformation_rate_m_per_s": memory.deformation_rate}

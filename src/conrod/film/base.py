@@ -299,7 +299,7 @@ class FilmState:
         """A viscosity every film can use: finite and > 0 [Pa s]; finite tilt angles
         (|γ| ≤ 0.1 rad) and rates."""
         viscosity = self.viscosity
-        if not (type(viscosity) is float and 0.0 < viscosity < math.inf):  # the fast path
+        if not (isinstance(viscosity, float) and 0.0 < viscosity < math.inf):  # the fast path
             check_range("FilmState", "viscosity", viscosity, 0.0, MAX_FILM_VISCOSITY, "Pa s",
                         low_open=True)
         if self.tilt_x or self.tilt_y or self.tilt_rate_x or self.tilt_rate_y:

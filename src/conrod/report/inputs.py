@@ -16,6 +16,7 @@ from pydantic import BaseModel
 
 from conrod.cases.base import field_unit
 from conrod.cases.case import Case
+from conrod.sweep.columns import model_in
 
 _SECTION = re.compile(r"^\s*\[\[?\s*([A-Za-z0-9_.\-\" ]+?)\s*\]\]?")
 _KEY = re.compile(r"^\s*([A-Za-z0-9_\-]+)\s*=")
@@ -64,21 +65,12 @@ def unit_of(dotted: str) -> str:
     parts = dotted.split(".")
     for part in parts[:-1]:
         info = model.model_fields.get(part)
-        nested = _model_in(getattr(info, "annotation", None)) if info else None
+        nested = model_in(getattr(info, "annotation", None)) if info else None
         if nested is None:
             return ""
         model = nested
     return field_unit(model, parts[-1])
 
-
-def _model_in(annotation: Any) -> type[BaseModel] | None:
-    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
-        return annotation
-    for arg in getattr(annotation, "__args__", ()) or ():
-        found = _model_in(arg)
-        if found is not None:
-            return found
-    return None
 
 
 def flatten(data: dict[str, Any], prefix: str = "") -> dict[str, Any]:

@@ -28,7 +28,7 @@ def key_field(key: str) -> tuple[type[BaseModel], str] | None:
     parts = key.split(".")
     for part in parts[:-1]:
         info = model.model_fields.get(part)
-        nested = _model_in(info.annotation) if info is not None else None
+        nested = model_in(info.annotation) if info is not None else None
         if nested is None:
             return None
         model = nested
@@ -63,11 +63,13 @@ def axis_column(key: str) -> str:
     return f"{key}_{suffix}" if suffix else key
 
 
-def _model_in(annotation: Any) -> type[BaseModel] | None:
+def model_in(annotation: Any) -> type[BaseModel] | None:
+    """The pydantic model inside a field annotation (``Model``, ``Model | None``, ...),
+    None when there is none."""
     if isinstance(annotation, type) and issubclass(annotation, BaseModel):
         return annotation
     for arg in getattr(annotation, "__args__", ()) or ():
-        found = _model_in(arg)
+        found = model_in(arg)
         if found is not None:
             return found
     return None

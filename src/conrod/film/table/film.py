@@ -122,7 +122,8 @@ class TabulatedFilm:
         if getattr(self.base, "pressure_viscosity", None) is not None:
             raise CaseError("table film over a piezoviscous base: not allowed (the table "
                             "assumes force ∝ μω); use the base film directly")
-        if not all(type(n) is int for n in (self.n_eps, self.n_direction)) or (
+        if not all(isinstance(n, int) and not isinstance(n, bool)
+                   for n in (self.n_eps, self.n_direction)) or (
                 self.n_eps < 3 or self.n_direction < 8 or self.n_direction % 2):
             raise CaseError(f"table grid n_eps = {self.n_eps}, n_direction = {self.n_direction}: "
                             "allowed n_eps >= 3, n_direction even >= 8")
