@@ -118,6 +118,7 @@ def test_a_run_whose_table_cache_folder_is_a_file_exits_0_with_one_warning(tmp_p
 class _CacheFile:
     def __init__(self):
         self._index_name = "short_bearing.kernel_force-30.py311.nbi"
+        self._source_stamp = (1.0, 30)
 
 
 class _Cache:
@@ -171,3 +172,45 @@ def test_the_guard_turns_unreadable_and_unwritable_caches_into_one_warning_each(
     assert [p.name for p in tmp_path.iterdir()] == ["other.kernel-9.py311.nbi"]
     with pytest.raises(pickle.UnpicklingError):  # numba's other users: as numba does
         caching.Cache(tmp_path, "someone.else").load_overload(None, None)
+
+
+def test_the_package_stamp_changes_with_any_module_of_the_package(tmp_path):
+    import os
+
+    from conrod.io.numba_cache import package_stamp
+
+    (tmp_path / "sub").mkdir()
+    for name in ("a.py", "sub/b.py"):
+        (tmp_path / name).write_text("x = 1\n")
+    before = package_stamp.__wrapped__(str(tmp_path))
+    assert package_stamp.__wrapped__(str(tmp_path)) == before
+    stat = (tmp_path / "sub" / "b.py").stat()
+    os.utime(tmp_path / "sub" / "b.py", ns=(stat.st_atime_ns, stat.st_mtime_ns + 1))
+    assert package_stamp.__wrapped__(str(tmp_path)) != before
+    (tmp_path / "notes.txt").write_text("not a module")
+    os.utime(tmp_path / "sub" / "b.py", ns=(stat.st_atime_ns, stat.st_mtime_ns))
+    assert package_stamp.__wrapped__(str(tmp_path)) == before
+
+
+def test_own_kernels_are_stamped_with_the_package_and_others_as_numba_does(tmp_path):
+    import types
+
+    from conrod.io import numba_cache
+
+    caching = types.SimpleNamespace(Cache=type("Cache", (_Cache,), {}))
+    numba_cache.guard(caching)
+    own = numba_cache.numba_attribute(caching.Cache(tmp_path, "conrod.film.short.film"),
+                                      "_cache_file")
+    other = numba_cache.numba_attribute(caching.Cache(tmp_path, "someone.else"), "_cache_file")
+    assert numba_cache.numba_attribute(own, "_source_stamp") == ((1.0, 30),
+                                                                 numba_cache.package_stamp())
+    assert numba_cache.numba_attribute(other, "_source_stamp") == (1.0, 30)
+
+
+def test_a_real_kernel_of_conrod_carries_the_package_stamp():
+    from conrod.film.short import kernel
+    from conrod.io.numba_cache import numba_attribute, package_stamp
+
+    dispatcher = kernel.sommerfeld_angle
+    cache_file = numba_attribute(numba_attribute(dispatcher, "_cache"), "_cache_file")
+    assert numba_attribute(cache_file, "_source_stamp")[1] == package_stamp()

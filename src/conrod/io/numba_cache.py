@@ -11,6 +11,13 @@ discards that kernel's cache files instead, warns once per process
 good cache; the results are the same as with a good cache. A cache that cannot be written
 (a full disk) is one warning too: the kernel is simply not cached.
 
+numba judges a cached kernel fresh by its own source file only; a kernel that calls a
+compiled function of another module keeps that function's old code when only the other
+module changed (an edited checkout, a partial update), and gives old answers without a
+word. conrod's kernels are therefore stamped with :func:`package_stamp` as well (size and
+modification time of every module of the package): any change to conrod's sources compiles
+them all again.
+
 .. code-block:: python
 
     tolerate_unreadable_cache()   # done by ``import conrod``; numba need not be loaded yet
@@ -22,10 +29,13 @@ conrod's kernels at LLVM level :data:`OPTIMISATION_LEVEL` unless ``NUMBA_OPT`` i
 from __future__ import annotations
 
 import contextlib
+import functools
+import hashlib
 import importlib.machinery
 import os
 import sys
 import warnings
+from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING, Any, cast
 
@@ -69,7 +79,15 @@ def guard(caching: ModuleType) -> None:
     cache_class = caching.Cache
     if getattr(cache_class.load_overload, "conrod_guarded", False):
         return
-    load, save = cache_class.load_overload, cache_class.save_overload
+    load, save, init = (cache_class.load_overload, cache_class.save_overload,
+                        cache_class.__init__)
+
+    def stamped_init(self: Any, *args: Any, **kwargs: Any) -> None:
+        init(self, *args, **kwargs)
+        if _own(self):
+            cache_file = numba_attribute(self, "_cache_file")
+            vars(cache_file)["_source_stamp"] = (numba_attribute(cache_file, "_source_stamp"),
+                                                 package_stamp())
 
     def load_overload(self: Any, sig: Any, target_context: Any) -> Any:
         if not _own(self):
@@ -94,8 +112,21 @@ def guard(caching: ModuleType) -> None:
             discard(self, error)
 
     load_overload.conrod_guarded = True  # type: ignore[attr-defined]
+    cache_class.__init__ = stamped_init
     cache_class.load_overload = load_overload
     cache_class.save_overload = save_overload
+
+
+@functools.cache
+def package_stamp(root: str | None = None) -> str:
+    """A digest of the size and modification time [ns] of every ``.py`` file below
+    ``root`` (default: conrod's package folder), computed once per process."""
+    folder = Path(root) if root is not None else Path(__file__).resolve().parents[1]
+    digest = hashlib.sha256()
+    for path in sorted(folder.rglob("*.py")):
+        stat = path.stat()
+        digest.update(f"{path.relative_to(folder)}:{stat.st_size}:{stat.st_mtime_ns};".encode())
+    return digest.hexdigest()
 
 
 def numba_attribute(instance: Any, name: str) -> Any:
