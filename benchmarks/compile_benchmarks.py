@@ -16,10 +16,10 @@ the CPU time much less. Variants differ only in the environment of the run:
 * ``before`` — numba's LLVM optimisation level 3 and no background compilation (as
   conrod compiled before);
 * ``level 2`` — conrod's default level 2 (:mod:`conrod.io.numba_cache`), no background
-  compilation (``CONROD_BACKGROUND_COMPILE=0``);
-* ``level 2 + background`` — as shipped: level 2, and the rigid companion's kernels
-  compiled in a forked process while the elastic orbit runs
-  (:mod:`conrod.simulation.background_compile`);
+  compilation (``CONROD_SIDE_RUNS=0``);
+* ``level 2 + background`` — as shipped: level 2, and the rigid companion (and the
+  coarser orbits of the grid-error estimate) computed in a forked process while the
+  elastic orbit runs, compiling their kernels there (:mod:`conrod.simulation.side_runs`);
 * ``level 1 + background`` — ``NUMBA_OPT=1``.
 
 ``--kernels`` lists numba's compile events (``numba:compile``) of one cold run in this
@@ -47,8 +47,8 @@ REPO = Path(__file__).resolve().parents[1]
 OUT = REPO / "benchmarks" / "compile_benchmarks.md"
 CLI = "from conrod.cli.app import main; main()"
 VARIANTS = {
-    "before": {"NUMBA_OPT": "3", "CONROD_BACKGROUND_COMPILE": "0"},
-    "level 2": {"CONROD_BACKGROUND_COMPILE": "0"},
+    "before": {"NUMBA_OPT": "3", "CONROD_SIDE_RUNS": "0"},
+    "level 2": {"CONROD_SIDE_RUNS": "0"},
     "level 2 + background": {},
     "level 1 + background": {"NUMBA_OPT": "1"},
 }

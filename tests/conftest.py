@@ -11,10 +11,10 @@ from pathlib import Path
 # under -n 2 with them, 46 s in one process).
 for _variable in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_variable, "1")
-# No background compilation in the suite: its workers already take the cores, and a run's
-# behaviour must not depend on the load average (tests/test_background_compile.py turns it
-# on where it tests it).
-os.environ.setdefault("CONROD_BACKGROUND_COMPILE", "0")
+# No second process beside an elastic run in the suite (conrod.simulation.side_runs): its
+# workers already take the cores, and a run's behaviour must not depend on the load average
+# (tests/test_side_runs.py turns it on where it tests it).
+os.environ.setdefault("CONROD_SIDE_RUNS", "0")
 
 import matplotlib  # noqa: E402
 import pytest  # noqa: E402

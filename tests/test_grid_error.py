@@ -123,9 +123,10 @@ def test_a_coarse_orbit_that_fails_leaves_the_run_with_a_warning(monkeypatch):
     @dataclasses.dataclass(frozen=True)
     class Results:
         summary: Summary
+        cycle: object = None
 
-    monkeypatch.setattr(grid_error, "_coarse_run", failing)
-    simulation = SimpleNamespace(solver=SimpleNamespace(n_theta=36, n_z=8))
+    monkeypatch.setattr(grid_error, "coarse_cycle", failing)
+    simulation = SimpleNamespace(solver=SimpleNamespace(n_theta=36, n_z=8, film="reynolds"))
     results = grid_error.with_grid_error(Results(Summary()), simulation)
     assert results.summary.grid_error is None
     (warning,) = results.summary.warnings

@@ -174,25 +174,11 @@ def register(app: typer.Typer) -> None:
                                 integrator=integrator and integrator.value, max_cycles=max_cycles,
                                 step_deg=step_deg, n_theta=n_theta, n_z=n_z,
                                 rigid_companion=rigid, fields=fields)
-        progress = _Progress(simulation.solver.max_cycles,
-                             simulation.solver.periodicity_tolerance)
-        try:
-            results = simulation.run(progress=progress)
-        finally:
-            progress.close()
-        if step_check and simulation.solver.integrator == "rk2":
-            from conrod.simulation.step_check import with_step_check
+        from conrod.simulation.grid_error import coarse_jobs
+        from conrod.simulation.side_runs import beside
 
-            results = with_step_check(results, simulation)
-        if grid_error:
-            from conrod.simulation.grid_error import with_grid_error
-
-            progress = _Progress(simulation.solver.max_cycles,
-                                 simulation.solver.periodicity_tolerance)
-            try:
-                results = with_grid_error(results, simulation, progress)
-            finally:
-                progress.close()
+        with beside(simulation, coarse_jobs(simulation) if grid_error else ()):
+            results = _computed(simulation, step_check, grid_error)
         write_results(results, out, figures=figures)
         note = _renew_report(out) if had_report else None
         with printing_after_results(out):
@@ -200,6 +186,29 @@ def register(app: typer.Typer) -> None:
             if note:
                 typer.echo(note)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
+
+
+def _computed(simulation: Any, step_check: bool, grid_error: bool) -> Any:
+    """The run's results with the step check and the grid-error estimate asked for."""
+    progress = _Progress(simulation.solver.max_cycles, simulation.solver.periodicity_tolerance)
+    try:
+        results = simulation.run(progress=progress)
+    finally:
+        progress.close()
+    if step_check and simulation.solver.integrator == "rk2":
+        from conrod.simulation.step_check import with_step_check
+
+        results = with_step_check(results, simulation)
+    if grid_error:
+        from conrod.simulation.grid_error import with_grid_error
+
+        progress = _Progress(simulation.solver.max_cycles,
+                             simulation.solver.periodicity_tolerance)
+        try:
+            results = with_grid_error(results, simulation, progress)
+        finally:
+            progress.close()
+    return results
 
 
 def _renew_report(out: Path) -> str:

@@ -17,7 +17,7 @@ from conrod.orbit.implicit_step import needs_journal_step
 from conrod.orbit.integrators import declared, resolved
 from conrod.results.ehd import ElasticRunResults
 from conrod.results.summary import film_minimum
-from conrod.simulation import background_compile
+from conrod.simulation import side_runs
 from conrod.simulation.fields import signed_off
 
 
@@ -54,16 +54,17 @@ def check_integrator(simulation) -> None:
 
 
 def elastic_run(simulation, progress=None) -> ElasticRunResults:
-    """Elastic answer, diagnostics and (unless skipped) the rigid companion run."""
+    """Elastic answer, diagnostics and (unless skipped) the rigid companion run (computed
+    on a second core meanwhile where one is idle: :mod:`conrod.simulation.side_runs`)."""
     check_integrator(simulation)
+    with side_runs.beside(simulation):
+        return _elastic_run(simulation, progress)
+
+
+def _elastic_run(simulation, progress) -> ElasticRunResults:
     start = time.perf_counter()
-    compiling = background_compile.start(simulation)  # the companion's kernels, meanwhile
-    try:
-        results, thermal = simulation.run_orbit(progress)
-        results = signed_off(results, thermal, simulation.case, simulation.signoff)
-    except BaseException:
-        background_compile.stop(compiling)
-        raise
+    results, thermal = simulation.run_orbit(progress)
+    results = signed_off(results, thermal, simulation.case, simulation.signoff)
     problem, orbit = thermal.problem, thermal.orbit
     integrator = simulation.integrator()
     if isinstance(integrator, str):
@@ -95,11 +96,11 @@ def elastic_run(simulation, progress=None) -> ElasticRunResults:
     fields = {angle: diagnostics.pressures[row] for angle, row in rows.items()}
     stresses = _peak_load_stresses(film.housing, results, diagnostics)
     elastic_seconds = time.perf_counter() - start
-    companion = simulation.rigid_companion(integrator=name)  # same journal model as above
-    rigid = None
-    background_compile.finish(compiling)
-    if companion is not None:
-        rigid = companion.run_orbit(_staged(progress, "rigid "))[0]
+    rigid = side_runs.take(side_runs.RIGID)
+    if rigid is side_runs.MISSING:
+        companion = simulation.rigid_companion(integrator=name)  # same journal model as above
+        rigid = None if companion is None else companion.run_orbit(
+            _staged(progress, "rigid "))[0]
     info = {
         "housing_model": simulation.case.housing.model,
         "bore_nodes": int(len(film.housing.angles)),

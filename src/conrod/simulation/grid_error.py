@@ -7,6 +7,7 @@ with the observed order."""
 from __future__ import annotations
 
 import dataclasses
+import functools
 from typing import Any
 
 import numpy as np
@@ -41,18 +42,34 @@ def coarser_grids(grid: tuple[int, int]) -> list[tuple[int, int]]:
     return grids
 
 
+def estimate_grids(simulation: Any) -> tuple[tuple[int, int], ...]:
+    """The coarser grids of ``simulation``'s grid-error estimate (() when its film has no
+    grid or the grid cannot be coarsened twice)."""
+    coarse = coarser_grids((simulation.solver.n_theta, simulation.solver.n_z))
+    film = simulation.solver.film
+    return tuple(coarse) if film in GRID_FILMS and len(coarse) == len(RATIOS) else ()
+
+
+def coarse_jobs(simulation: Any) -> tuple[tuple[Any, Any], ...]:
+    """The coarser orbits of the estimate as jobs (grid, function) for
+    :func:`conrod.simulation.side_runs.beside`."""
+    return tuple((grid, functools.partial(coarse_cycle, simulation, grid, None))
+                 for grid in estimate_grids(simulation))
+
+
 def with_grid_error(results: Any, simulation: Any, progress: Any = None) -> Any:
     """``results`` with ``summary.grid_error`` (:class:`GridError`) when the film has a grid
     that can be coarsened twice; unchanged otherwise. The coarser orbits run with the same
-    case, integrator and settings but without a rigid companion."""
+    case, integrator and settings but without a rigid companion (computed beside the run by
+    :mod:`conrod.simulation.side_runs` where it started them)."""
     solver = simulation.solver
-    name = results.summary.film_model
     grid = (solver.n_theta, solver.n_z)
-    coarse = coarser_grids(grid)
-    if name not in GRID_FILMS or len(coarse) < 2:
+    coarse = estimate_grids(simulation)
+    if results.summary.film_model not in GRID_FILMS or not coarse:
         return results
     try:
-        runs = [results] + [_coarse_run(simulation, g, progress) for g in coarse]
+        cycles = [getattr(results, "elastic", results).cycle] + [
+            _coarse(simulation, g, progress) for g in coarse]
     except ConvergenceError as error:  # the run stands; its grid error is a doubt, said
         text = str(error).splitlines()[0] if str(error) else type(error).__name__
         warning = (f"grid error not estimated: the orbit on the coarser grid of the estimate "
@@ -63,8 +80,8 @@ def with_grid_error(results: Any, simulation: Any, progress: Any = None) -> Any:
                                       warnings=(*results.summary.warnings, warning))
         return _with_summary(results, summary)
     grids = (grid, *coarse)
-    estimate = GridError(grids, _estimate("h_min", runs, grids),
-                         _estimate("p_max", runs, grids),
+    estimate = GridError(grids, _estimate("h_min", cycles, grids),
+                         _estimate("p_max", cycles, grids),
                          feature_note(simulation.geometry(), solver.n_z))
     summary = dataclasses.replace(results.summary, grid_error=estimate)
     return _with_summary(results, summary)
@@ -89,7 +106,15 @@ def feature_note(geometry: Any, n_z: int) -> str:
             "resolves it)")
 
 
-def _coarse_run(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
+def _coarse(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
+    from conrod.simulation.side_runs import MISSING, take
+
+    cycle = take(grid)
+    return coarse_cycle(simulation, grid, progress) if cycle is MISSING else cycle
+
+
+def coarse_cycle(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
+    """The periodic cycle of ``simulation`` on ``grid`` (elastic where it is elastic)."""
     from conrod.simulation.simulation import Simulation
 
     staged = None
@@ -101,7 +126,7 @@ def _coarse_run(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
                         signoff=False,
                         **{**_overrides(simulation), "n_theta": grid[0], "n_z": grid[1]})
     results = coarse.run(staged)
-    return getattr(results, "elastic", results)
+    return getattr(results, "elastic", results).cycle
 
 
 def _overrides(simulation: Any) -> dict[str, Any]:
@@ -111,8 +136,8 @@ def _overrides(simulation: Any) -> dict[str, Any]:
             and key not in ("film", "integrator")}
 
 
-def _estimate(quantity: str, runs: list[Any], grids) -> GridEstimate:
-    extremes = [_extreme(getattr(run, "elastic", run).cycle, quantity) for run in runs]
+def _estimate(quantity: str, cycles: list[Any], grids) -> GridEstimate:
+    extremes = [_extreme(cycle, quantity) for cycle in cycles]
     values = tuple(value for value, _ in extremes)
     order, error = richardson(values, tuple(cell_size(g) for g in grids))
     return GridEstimate(quantity, float(np.degrees(extremes[0][1])), values, order, error,

@@ -1,0 +1,208 @@
+"""The rigid companion and the coarser orbits of the grid-error estimate, computed on a
+second core while the elastic orbit runs.
+
+An elastic run (``conrod run`` on an elastic ``[housing]``) computes, besides its own
+orbit, the same bearing on a rigid bore and, for the grid error, its orbit on two coarser
+grids; none of them needs the elastic orbit's answer. Where a second core is idle, a forked
+process computes them one after the other while the elastic orbit runs, and hands each
+result over the moment the run needs it; numba's kernels it compiles on the way stay in
+the disk cache. The process runs the same code on the same input, so the answer is the same
+bit for bit; a solver's error there is raised in the run as it would have been, and a job it
+could not finish otherwise (a result that cannot be sent, the process ended) is computed
+again in the run's own process. The forked process writes nothing (its output goes to the
+null device) and ends with the run.
+
+Not in a worker process (a sweep's workers have their cores), not where ``fork`` is
+missing or only one core is usable, and only while the load average leaves a core idle (on
+a busy machine the second process would only take the CPU time it saves);
+``CONROD_SIDE_RUNS=0`` turns it off.
+
+.. code-block:: python
+
+    with beside(simulation, coarse_jobs(simulation)):   # starts the process (or nothing)
+        results = simulation.run(progress)     # takes the rigid companion from it
+        results = with_grid_error(results, simulation, progress)   # and the coarse orbits
+"""
+
+from __future__ import annotations
+
+import contextlib
+import contextvars
+import ctypes
+import multiprocessing
+import os
+import pickle
+import signal
+import sys
+import warnings
+from collections.abc import Callable, Iterator
+from typing import Any
+
+from conrod.errors import ConrodError
+
+SWITCH = "CONROD_SIDE_RUNS"
+"""Environment variable: ``0`` turns the second process off."""
+MISSING = object()
+"""What :meth:`SideRuns.take` returns for a job the process did not deliver."""
+DONE, RAISED, LOST = "done", "raised", "lost"
+"""How a job ended in the process: its result, its error, or nothing to send [-]."""
+RIGID = "rigid"
+"""Job key of the rigid companion; a coarse grid's key is its (n_θ, n_z)."""
+_active: contextvars.ContextVar[SideRuns | None] = contextvars.ContextVar(
+    "conrod_side_runs", default=None)
+
+
+def wanted() -> bool:
+    """True when a second process can pay here (see the module docstring)."""
+    if os.environ.get(SWITCH, "1") == "0":
+        return False
+    if multiprocessing.parent_process() is not None:  # a worker: its cores are taken
+        return False
+    if "fork" not in multiprocessing.get_all_start_methods():
+        return False
+    usable = os.sched_getaffinity(0) if hasattr(os, "sched_getaffinity") else range(
+        os.cpu_count() or 1)
+    return len(usable) > 1 and _load() < len(usable) - 1  # a core that nothing else uses
+
+
+def _load() -> float:
+    """1-minute load average [-] (0 where the system has none)."""
+    try:
+        return os.getloadavg()[0]
+    except (AttributeError, OSError):
+        return 0.0
+
+
+class SideRuns:
+    """The forked process and the pipe its results come through, in the order of its jobs."""
+
+    def __init__(self, process: Any, connection: Any, keys: list[Any]):
+        self.process, self.connection, self.keys = process, connection, keys
+        self.received: dict[Any, Any] = {}
+
+    def take(self, key: Any) -> Any:
+        """The job's result, waiting for it; the :class:`~conrod.errors.ConrodError` it
+        raised, raised here; :data:`MISSING` when the process does not have it (not one of
+        its jobs, failed otherwise, or the process ended)."""
+        if key not in self.keys:
+            return MISSING
+        while key not in self.received and self.process is not None:
+            try:
+                got, outcome, value = self.connection.recv()
+            except (EOFError, OSError):  # the process ended: what is left is computed here
+                self.stop()
+                break
+            if outcome != LOST:
+                self.received[got] = (outcome, value)
+        outcome, value = self.received.pop(key, (LOST, MISSING))
+        if outcome == RAISED:
+            raise value
+        return value
+
+    def stop(self) -> None:
+        """End the process now (its jobs are taken, or the run failed)."""
+        process, self.process = self.process, None
+        if process is not None:
+            if process.is_alive():
+                process.kill()
+            process.join()
+            self.connection.close()
+
+
+def start(jobs: list[tuple[Any, Callable[[], Any]]]) -> SideRuns | None:
+    """A forked process running ``jobs`` ((key, function) in order; None when it cannot
+    pay or there is nothing to run)."""
+    if not jobs or not wanted():
+        return None
+    context = multiprocessing.get_context("fork")
+    receiving, sending = context.Pipe(duplex=False)
+    process = context.Process(target=_serve, args=(jobs, sending), daemon=True)
+    process.start()
+    sending.close()
+    return SideRuns(process, receiving, [key for key, _ in jobs])
+
+
+@contextlib.contextmanager
+def beside(simulation: Any, more: tuple[tuple[Any, Callable[[], Any]], ...] = ()
+           ) -> Iterator[Any]:
+    """Within the block, :func:`take` finds the rigid companion of an elastic
+    ``simulation`` and the results of the ``more`` jobs ((key, function), e.g. the coarser
+    orbits of :func:`conrod.simulation.grid_error.coarse_jobs`) computed by a second process
+    (started here unless one already runs for the block around this one)."""
+    if _active.get() is not None:
+        yield _active.get()
+        return
+    side = start(_jobs(simulation, more))
+    token = _active.set(side)
+    try:
+        yield side
+    finally:
+        _active.reset(token)
+        if side is not None:
+            side.stop()
+
+
+def take(key: Any) -> Any:
+    """The result of job ``key`` from the process of the enclosing :func:`beside` block, or
+    :data:`MISSING`."""
+    side = _active.get()
+    return MISSING if side is None else side.take(key)
+
+
+def _jobs(simulation: Any, more: tuple[tuple[Any, Any], ...]) -> list[tuple[Any, Any]]:
+    """Only beside an elastic orbit: a rigid one is cheaper than what the process costs."""
+    if not simulation.elastic():
+        return []
+    jobs: list[tuple[Any, Any]] = []
+    if simulation.rigid_companion() is not None:
+        jobs.append((RIGID, lambda: _rigid_companion(simulation)))
+    return jobs + list(more)
+
+
+def _rigid_companion(simulation: Any) -> Any:
+    """The rigid companion's results, with the integrator the elastic run resolves to (an
+    automatic one chooses by the film, as there)."""
+    from conrod import registry
+    from conrod.orbit.integrators import resolved
+
+    integrator = simulation.integrator()
+    if isinstance(integrator, str):
+        integrator = registry.integrator(integrator)
+    name = resolved(integrator, simulation.problem()).name
+    return simulation.rigid_companion(integrator=name).run_orbit()[0]
+
+
+def _serve(jobs: list[tuple[Any, Callable[[], Any]]], connection: Any) -> None:
+    """The forked process: each job in turn, its result sent (or MISSING), silent."""
+    _die_with_parent()
+    null = os.open(os.devnull, os.O_WRONLY)
+    for descriptor in (1, 2):  # the streams below Python's (which may be replaced)
+        os.dup2(null, descriptor)
+    sys.stdout = sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - for the process's life
+    warnings.simplefilter("ignore")
+    for key, job in jobs:
+        try:
+            outcome = (key, DONE, job())
+        except ConrodError as error:  # raised there as here, where it survives the pipe
+            outcome = (key, RAISED, error) if _sendable(error) else (key, LOST, None)
+        except BaseException:  # anything else is computed again there
+            outcome = (key, LOST, None)
+        try:
+            connection.send(outcome)
+        except Exception:  # not picklable: computed again there
+            connection.send((key, LOST, None))
+
+
+def _sendable(error: BaseException) -> bool:
+    """True when ``error`` comes out of the pipe as the same type with the same message."""
+    try:
+        copy = pickle.loads(pickle.dumps(error))
+    except Exception:
+        return False
+    return type(copy) is type(error) and str(copy) == str(error)
+
+
+def _die_with_parent() -> None:
+    """Linux: the process gets SIGKILL when the run's process ends (prctl PDEATHSIG)."""
+    with contextlib.suppress(Exception):
+        ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGKILL), 0, 0, 0)

@@ -1,0 +1,153 @@
+"""The rigid companion and the coarser grid-error orbits computed by a forked process while
+the elastic orbit runs: jobs in order, silent, failed or unsendable jobs left to the run's
+own process, off where it cannot pay, and the same answer bit for bit."""
+
+from __future__ import annotations
+
+import multiprocessing
+import sys
+import threading
+import time
+
+import pytest
+from typer.testing import CliRunner
+
+from conrod.cli.app import _register_commands, app
+from conrod.simulation import side_runs
+
+_register_commands()
+
+
+@pytest.fixture
+def fresh(monkeypatch):
+    """An idle 2-core machine."""
+    monkeypatch.delenv(side_runs.SWITCH, raising=False)
+    monkeypatch.setattr(side_runs.os, "sched_getaffinity", lambda pid: {0, 1}, raising=False)
+    monkeypatch.setattr(side_runs, "_load", lambda: 0.2)
+
+
+def _loud(value):
+    print("to stdout")  # must go nowhere
+    print("to stderr", file=sys.stderr)
+    return value
+
+
+def _fails():
+    raise RuntimeError("a solver failed")
+
+
+def _does_not_converge():
+    from conrod.errors import ConvergenceError
+
+    raise ConvergenceError("orbit did not converge", where="crank angle 20.0 deg")
+
+
+def test_jobs_run_in_order_silently_and_their_results_are_handed_over(fresh, capfd):
+    side = side_runs.start([("a", lambda: _loud({"x": 1.5})), ("b", _fails),
+                            ("c", lambda: threading.Lock()), ((72, 8), lambda: [2, 3]),
+                            ("e", _does_not_converge)])
+    assert side is not None
+    assert side.take((72, 8)) == [2, 3]  # waits for the earlier ones on the way
+    assert side.take("a") == {"x": 1.5}
+    assert side.take("b") is side_runs.MISSING  # failed otherwise: computed again here
+    assert side.take("c") is side_runs.MISSING  # a lock cannot be sent
+    assert side.take("d") is side_runs.MISSING  # not one of its jobs
+    assert side.take("a") is side_runs.MISSING  # taken once
+    from conrod.errors import ConvergenceError
+
+    with pytest.raises(ConvergenceError, match="did not converge at crank angle 20.0 deg"):
+        side.take("e")  # a solver's own error: raised here as there
+    side.stop()
+    out, err = capfd.readouterr()
+    assert "to stdout" not in out and "to stderr" not in err
+
+
+def test_an_ended_process_leaves_its_jobs_to_the_run(fresh):
+    side = side_runs.start([("slow", lambda: time.sleep(60))])
+    side.process.kill()
+    started = time.perf_counter()
+    assert side.take("slow") is side_runs.MISSING
+    assert time.perf_counter() - started < 10 and side.process is None
+
+
+def test_stop_ends_a_running_process(fresh):
+    side = side_runs.start([("slow", lambda: time.sleep(60))])
+    process = side.process
+    side.stop()
+    assert not process.is_alive()
+
+
+def test_no_process_without_jobs_switched_off_on_one_core_or_busy_machine(fresh, monkeypatch):
+    job = [("a", lambda: 1)]
+    assert side_runs.start([]) is None
+    monkeypatch.setenv(side_runs.SWITCH, "0")
+    assert side_runs.start(job) is None
+    monkeypatch.delenv(side_runs.SWITCH)
+    monkeypatch.setattr(side_runs.os, "sched_getaffinity", lambda pid: {0}, raising=False)
+    assert side_runs.start(job) is None
+    monkeypatch.setattr(side_runs.os, "sched_getaffinity", lambda pid: {0, 1}, raising=False)
+    monkeypatch.setattr(side_runs, "_load", lambda: 1.3)  # the other core is busy
+    assert side_runs.start(job) is None
+
+
+def _in_worker(queue):
+    queue.put(side_runs.wanted())
+
+
+def test_no_process_from_a_worker_process(fresh):
+    context = multiprocessing.get_context("fork")
+    queue = context.Queue()
+    worker = context.Process(target=_in_worker, args=(queue,))
+    worker.start()
+    assert queue.get(timeout=60) is False
+    worker.join()
+
+
+def test_elastic_run_with_side_runs_writes_the_same_files_as_without(
+        fresh, tmp_path, monkeypatch):
+    """`conrod run` on an elastic bore with the rigid companion and the grid-error orbits
+    computed beside it: the same cycle tables and grid error, bit for bit, and all three
+    came from the second process."""
+    import json
+
+    from test_ehd_cli import _case_file
+
+    case = _case_file(tmp_path, 1e4)
+    handed = []
+    take = side_runs.SideRuns.take
+
+    def spied(self, key):
+        value = take(self, key)
+        handed.append((key, value is not side_runs.MISSING))
+        return value
+
+    monkeypatch.setattr(side_runs.SideRuns, "take", spied)
+    outs = {}
+    for mode in ("beside", "alone"):
+        if mode == "alone":
+            monkeypatch.setenv(side_runs.SWITCH, "0")
+        outs[mode] = tmp_path / mode
+        result = CliRunner().invoke(app, ["run", case, "--out", str(outs[mode]),
+                                          "--no-figures"])
+        assert result.exit_code in (0, 4), result.output
+    assert handed == [("rigid", True), ((26, 6), True), ((18, 4), True)]
+    for name in ("cycle.csv", "cycle_rigid.csv"):
+        assert (outs["beside"] / name).read_bytes() == (outs["alone"] / name).read_bytes()
+    summaries = [_untimed(json.loads((outs[m] / "summary.json").read_text()))
+                 for m in ("beside", "alone")]
+    assert summaries[0] == summaries[1]
+    assert "grid error +" in json.dumps(summaries[0]) or "grid error -" in json.dumps(
+        summaries[0])
+
+
+def _untimed(value):
+    """A summary without its wall times (keys naming a time, '(12.3 s)' in the text)."""
+    import re
+
+    if isinstance(value, dict):
+        return {k: _untimed(v) for k, v in value.items() if "time" not in k}
+    if isinstance(value, list):
+        return [_untimed(v) for v in value]
+    if isinstance(value, str):
+        return re.sub(r"\(\d+(\.\d+)? s\)", "", value)
+    return value
