@@ -36,9 +36,7 @@ declares what its inner model declares by delegating the methods.
 * :class:`HasTiltFlightKernel` — the same for the forces and moments of a tilted journal;
 * :class:`CarriesAsperityContact` — the film's force holds the asperity contact;
 * :class:`HasDeformedGap` — a deforming bore that says where its deformed film closes;
-* :class:`HasViscosityField` — the model honours a viscosity field μ(θ, z) on its grid
-  (``FilmState.viscosity_field``, or one the model carries for the states that have none:
-  a thermal film);
+* :class:`HasViscosityField` — a viscosity field μ(θ, z) on its grid (a thermal film);
 * :class:`HasFilmFields` — fields of its own on the film grid at an answer (the bore
   deformation, a film temperature, ...), which the fields over the cycle and the sign-off
   indicators take up by their names.
@@ -382,13 +380,15 @@ class HasEccentricityRange(Protocol):
 
 @runtime_checkable
 class HasViscosityField(Protocol):
-    """A film that honours a viscosity field μ(θ, z) [Pa s] on its grid (a film temperature
-    field): ``FilmState.viscosity_field``, or the field it carries for the states without
-    one (:meth:`with_viscosity_field`), in the flow conductances h³/(12μ) and the shear."""
+    """A film that honours a viscosity field μ(θ, z) [Pa s] on its grid (``FilmState.
+    viscosity_field``, or one it carries) in its conductances h³/(12μ) and shear."""
 
     def with_viscosity_field(self, field: np.ndarray | None) -> Any:
-        """The same film carrying ``field`` [Pa s] (shape of :meth:`FilmModel.grid`) for
-        every state without a field of its own; None: the scalar viscosity."""
+        """The film carrying ``field`` [Pa s] for states without one (None: scalar)."""
+        ...
+
+    def film_flows(self, state: FilmState, memory: Any) -> tuple[Any, Any]:
+        """(:class:`conrod.film.thermal.flows.FilmFlows` of ``state``, new memory)."""
         ...
 
 

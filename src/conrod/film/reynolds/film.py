@@ -235,6 +235,14 @@ class ReynoldsFilm:
         (:class:`~conrod.film.capabilities.HasViscosityField`); None: scalar viscosity."""
         return replace(self, viscosity_field=viscosity_field)
 
+    def film_flows(self, state: FilmState, memory: ReynoldsMemory) -> tuple[Any, ReynoldsMemory]:
+        """(Volume fluxes and dissipation of ``state`` on the grid, the memory after the
+        solve) (:func:`conrod.film.reynolds.thermal_flows.film_flows`)."""
+        from conrod.film.reynolds.thermal_flows import film_flows
+
+        flows, reduced = film_flows(self, state, memory)
+        return flows, self._memory_after(memory, reduced, state)
+
     def _field(self, state: FilmState) -> np.ndarray | None:
         """The viscosity field a solve of ``state`` uses [Pa s] (None: the scalar)."""
         field = vf.state_field(state, self.viscosity_field, self.deformation_shape())
