@@ -12,6 +12,7 @@ cavitated zone as the film's ``full_film`` friction convention does.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -44,5 +45,7 @@ def film_flows(film: Any, state: FilmState, memory: Any) -> tuple[FilmFlows, np.
                                     grid.d_theta, grid.axial_weights, grid.d_z)
     supply = problem.fixed & ~edge_mask(grid)
     flows = FilmFlows(east=east, north=north, dissipation=dissipation,
-                      area=grid.area_weights, supply=supply)
-    return flows, pressure
+                      area=grid.area_weights, supply=supply,
+                      squeeze_power=-float(np.sum(pressure * problem.h_rate * grid.area_weights)))
+    pumping = float(np.sum((pressure * flows.net_outflow())[supply]))
+    return replace(flows, pumping_power=pumping), pressure

@@ -21,13 +21,18 @@ import numpy as np
 @dataclass(frozen=True)
 class FilmFlows:
     """Fluxes [m³/s], dissipation [W] and cell areas [m²] on the film grid (module
-    docstring); ``supply`` marks the nodes of grooves and holes [-]."""
+    docstring); ``supply`` marks the nodes of grooves and holes [-]; ``squeeze_power``
+    −Σ p ∂h/∂t A, the power the journal's motion puts into the film [W], and
+    ``pumping_power`` Σ p Q over the supply nodes, the power of the feed pressure [W]: in a
+    steady or periodic film the dissipation is the friction power plus both."""
 
     east: np.ndarray
     north: np.ndarray
     dissipation: np.ndarray
     area: np.ndarray
     supply: np.ndarray
+    squeeze_power: float = 0.0
+    pumping_power: float = 0.0
 
     def net_outflow(self) -> np.ndarray:
         """Volume leaving each control volume through its faces less what enters [m³/s]:
@@ -53,7 +58,9 @@ def mean_flows(samples: list[FilmFlows]) -> FilmFlows:
         east=np.mean([s.east for s in samples], axis=0),
         north=np.mean([s.north for s in samples], axis=0),
         dissipation=np.mean([s.dissipation for s in samples], axis=0),
-        area=first.area, supply=first.supply)
+        area=first.area, supply=first.supply,
+        squeeze_power=float(np.mean([s.squeeze_power for s in samples])),
+        pumping_power=float(np.mean([s.pumping_power for s in samples])))
 
 
 def shear_dissipation(pressure: np.ndarray, h: np.ndarray, viscosity: np.ndarray,
