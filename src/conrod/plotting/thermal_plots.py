@@ -18,8 +18,9 @@ def plot_temperature_map(thermal) -> Figure:
     fig.colorbar(mesh, ax=ax, label="film temperature [°C]")
     t, at_theta, at_z = thermal.hottest
     ax.plot(np.degrees(at_theta), at_z * 1e3, "c+", markersize=12)
+    below = -14 if at_z > 0.0 else 6  # inside the axes
     ax.annotate(f"{t:.1f} °C", (np.degrees(at_theta), at_z * 1e3), color="c",
-                xytext=(6, 6), textcoords="offset points")
+                xytext=(6, below), textcoords="offset points")
     ax.set_xlabel("shell angle θ [deg]")
     ax.set_ylabel("z [mm]")
     ax.set_title(f"journal {thermal.journal_temperature:.1f} °C, shell "
