@@ -38,7 +38,7 @@ from conrod.film.reynolds import multigrid as multigrid
 from conrod.film.reynolds import viscosity_field as vf
 from conrod.film.reynolds.memory import ReynoldsMemory, scaled_state
 from conrod.film.reynolds.problem import DiscreteProblem as _Problem
-from conrod.film.reynolds.problem import dirichlet_regions
+from conrod.film.reynolds.problem import dirichlet_regions, optimal_relaxation  # noqa: F401 (used by the mass-conserving film)
 from conrod.film.reynolds.results import reynolds_characteristics
 from conrod.film.reynolds.sweep import sweep
 from conrod.film.supply import edge_mask, journal_holes_symmetric, supply_mask
