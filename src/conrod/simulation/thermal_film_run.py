@@ -117,11 +117,15 @@ def _thermal_film(problem: OrbitProblem, lubricant: Any) -> Any:
 def _problem_at(problem: OrbitProblem, film: Any, lubricant: Any,
                 temperature: np.ndarray) -> OrbitProblem:
     """The orbit problem with the viscosity field of ``temperature`` [°C] and the scalar
-    viscosity at its mean (the reference of the source terms) [Pa s]."""
-    field = np.vectorize(lubricant.viscosity_at, otypes=[float])(temperature)
+    viscosity at its mean (the reference of the source terms) [Pa s]; a uniform field (a
+    viscosity independent of temperature, or the first iteration at the supply
+    temperature) is the scalar viscosity itself, and the orbit takes the film's fast paths
+    for it (the same answer, :mod:`conrod.film.reynolds.viscosity_field`)."""
     reference = float(lubricant.viscosity_at(float(temperature.mean())))
-    return dataclasses.replace(problem, film=film.with_viscosity_field(field),
-                               viscosity=reference)
+    field = np.vectorize(lubricant.viscosity_at, otypes=[float])(temperature)
+    uniform = bool(np.all(field == reference))
+    return dataclasses.replace(problem, film=film.with_viscosity_field(
+        None if uniform else field), viscosity=reference)
 
 
 def _walls(solver: Any, supply: float) -> ThermalWalls:
