@@ -112,6 +112,31 @@ class SolverSection(Section):
     thermal_tolerance: float = Field(
         default=0.5, gt=0.0, le=50.0, description="Heat-balance convergence on temperature [K]"
     )
+    thermal: Literal["heat_balance", "film"] = Field(
+        default="heat_balance",
+        description="Film temperature: one effective temperature from the global heat "
+        "balance, or the film's temperature field T(θ, z) from its energy equation "
+        "(docs/thermal.md) [-]",
+    )
+    thermal_wall_coefficient: float = Field(
+        default=2000.0, ge=0.0, le=1.0e7,
+        description="thermal = 'film': heat-transfer coefficient film to journal and film "
+        "to shell [W/(m^2 K)]",
+    )
+    thermal_housing_coefficient: float = Field(
+        default=0.0, ge=0.0, le=1.0e6,
+        description="thermal = 'film': heat-transfer coefficient shell to housing per shell "
+        "area; 0: adiabatic shell [W/(m^2 K)]",
+    )
+    thermal_housing_temperature: float | None = Field(
+        default=None, ge=-40.0, le=300.0,
+        description="thermal = 'film': housing temperature; None: the supply temperature [°C]",
+    )
+    thermal_journal_temperature: float | None = Field(
+        default=None, ge=-40.0, le=300.0,
+        description="thermal = 'film': journal temperature; None: adiabatic journal (no net "
+        "heat over the cycle) [°C]",
+    )
 
     @model_validator(mode="after")
     def _within_budget(self) -> SolverSection:

@@ -150,6 +150,20 @@ def check_journal_hole(owner: str, hole: JournalHole, diameter: float, width: fl
                 f"m, the hole of {hole.diameter:g} m inside the bearing width {width:g} m")
 
 
+def check_viscosity_field(values: Any, shape: tuple[int, int] | None = None) -> None:
+    """:class:`CaseError` unless ``values`` is a 2-D array of finite viscosities in
+    (0, :data:`MAX_FILM_VISCOSITY`] [Pa s], of ``shape`` when given (the film grid)."""
+    array = np.asarray(values)
+    if array.ndim != 2 or (shape is not None and array.shape != tuple(shape)):
+        wanted = "2-D" if shape is None else f"{tuple(shape)} = (n_theta, n_z + 1)"
+        raise CaseError(f"FilmState viscosity_field shape = {array.shape}: out of range "
+                        f"(allowed: {wanted})")
+    if not (np.all(np.isfinite(array)) and array.min() > 0.0
+            and array.max() <= MAX_FILM_VISCOSITY):
+        raise CaseError(f"FilmState viscosity_field = [{array.min():g}, {array.max():g}]: out "
+                        f"of range (allowed: > 0 and <= {MAX_FILM_VISCOSITY:g} Pa s)")
+
+
 def check_range(owner: str, name: str, value: Any, low: float, high: float, unit: str, *,
                 low_open: bool = False) -> None:
     """:class:`CaseError` naming ``owner.name``, the value, the range and the unit unless
@@ -272,6 +286,10 @@ class FilmState:
     tilt_rate_x, tilt_rate_y : float  Their rates γ̇_x, γ̇_y [rad/s] (squeeze term).
     journal_feed : JournalFeed or None  Position and pressures of the journal's oil holes
         at this instant (required when the geometry has journal holes); None: none.
+    viscosity_field : ndarray or None  Viscosity μ(θ, z) [Pa s] on the model's grid (a
+        film temperature field, :mod:`conrod.film.thermal`), for films that declare
+        :class:`~conrod.film.capabilities.HasViscosityField`; ``viscosity`` is then the
+        reference viscosity of the source terms. None: μ = ``viscosity`` everywhere.
     """
 
     eccentricity_x: float
@@ -288,6 +306,7 @@ class FilmState:
     tilt_rate_x: float = 0.0
     tilt_rate_y: float = 0.0
     journal_feed: JournalFeed | None = None
+    viscosity_field: np.ndarray | None = None
 
     def __new__(cls, *args: object, **kwargs: object) -> FilmState:
         _refuse_positional(cls, args, "eccentricities are in metres, not ratios to the "
@@ -310,6 +329,8 @@ class FilmState:
                 if not (_is_number(rate) and math.isfinite(rate)):
                     raise CaseError(f"FilmState {name} = {rate!r}: out of range (allowed: "
                                     "a finite number of rad/s)")
+        if self.viscosity_field is not None:
+            check_viscosity_field(self.viscosity_field)
 
     @property
     def tilted(self) -> bool:

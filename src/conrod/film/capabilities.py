@@ -36,6 +36,7 @@ declares what its inner model declares by delegating the methods.
 * :class:`HasTiltFlightKernel` — the same for the forces and moments of a tilted journal;
 * :class:`CarriesAsperityContact` — the film's force holds the asperity contact;
 * :class:`HasDeformedGap` — a deforming bore that says where its deformed film closes;
+* :class:`HasViscosityField` — a viscosity field μ(θ, z) on its grid (a thermal film);
 * :class:`HasFilmFields` — fields of its own on the film grid at an answer (the bore
   deformation, a film temperature, ...), which the fields over the cycle and the sign-off
   indicators take up by their names.
@@ -375,6 +376,20 @@ class HasEccentricityRange(Protocol):
 
     eccentricity_max: float
     """Largest tabulated eccentricity ratio [-]."""
+
+
+@runtime_checkable
+class HasViscosityField(Protocol):
+    """A film that honours a viscosity field μ(θ, z) [Pa s] on its grid (``FilmState.
+    viscosity_field``, or one it carries) in its conductances h³/(12μ) and shear."""
+
+    def with_viscosity_field(self, field: np.ndarray | None) -> Any:
+        """The film carrying ``field`` [Pa s] for states without one (None: scalar)."""
+        ...
+
+    def film_flows(self, state: FilmState, memory: Any) -> tuple[Any, Any]:
+        """(:class:`conrod.film.thermal.flows.FilmFlows` of ``state``, new memory)."""
+        ...
 
 
 @runtime_checkable

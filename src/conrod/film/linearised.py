@@ -271,7 +271,8 @@ def tilt_jacobian(film, state: FilmState, memory, tolerance: float | None = None
                   tilt: bool = True) -> tuple[np.ndarray, np.ndarray, object]:
     """(Q (4,) [N, N m], ∂Q/∂(e, γ, ė, γ̇) (4 × 8), memory) of a Reynolds film at ``state``
     (``tilt`` False: (F (2,), ∂F/∂(e, ė) (2 × 4), memory)); adjoints to ``tolerance``."""
-    if film.pressure_viscosity is not None:
+    if film.pressure_viscosity is not None or film.viscosity_field is not None or \
+            state.viscosity_field is not None:  # μ(p) or a viscosity field: differences
         lin = linearise_by_differences(film, state, tilt=tilt)
     else:
         lin = linearise_reynolds(film, state, memory=memory, tilt=tilt,

@@ -9,6 +9,7 @@ from conrod.output import ehd_tables as _ehd_tables  # noqa: F401  (registers th
 from conrod.output import figures as _figures  # noqa: F401  (registers the figures)
 from conrod.output import housing_tables as _housing_tables  # noqa: F401  (registers both)
 from conrod.output import tables as _tables  # noqa: F401,I001  (registers the tables)
+from conrod.output import thermal_tables as _thermal_tables  # noqa: F401,I001  (registers both)
 from conrod.output.registry import (
     FigureSpec,
     TableSpec,

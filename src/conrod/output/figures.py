@@ -12,6 +12,7 @@ from conrod.loads.engine_loads import EngineLoads
 from conrod.mechanism.regimes import SweepRun
 from conrod.mechanism.results import MechanismRun
 from conrod.output.registry import FigureSpec, figures
+from conrod.output.thermal_tables import thermal_outputs
 from conrod.results.cycle_results import RunResults
 from conrod.results.ehd import ElasticRunResults
 
@@ -53,7 +54,7 @@ def _run_figures(results: RunResults) -> tuple[FigureSpec, ...]:
                    lambda: _plots("film_maps").plot_min_film_envelope(results)),
 )
     contact = results.contact
-    return (own + signoff_figures(results)
+    return (own + signoff_figures(results) + thermal_outputs(results, figures)
             + (figures(contact) if contact is not None and contact.has_contact else ()))
 
 

@@ -17,6 +17,7 @@ from conrod.mechanism.regimes import SweepRun
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults, MechanismRun
 from conrod.output.registry import TableSpec, result_kind, tables
 from conrod.output.signoff_tables import signoff_tables
+from conrod.output.thermal_tables import thermal_outputs
 from conrod.results.axial import axial_summary_items
 from conrod.results.case_record import CASE_FILE
 from conrod.results.columns import CYCLE_COLUMNS, axial_table, feed_table
@@ -77,6 +78,8 @@ def summary_items(results: RunResults) -> dict:
     items.update(feed_summary_items(results.cycle.feed))  # crank-pin oil holes (if any)
     if results.contact is not None:
         items.update(results.contact.summary_items())
+    if getattr(results, "thermal_film", None) is not None:  # the film's temperature field
+        items.update(results.thermal_film.summary_items())
     if results.signoff is not None:
         items.update(results.signoff.flat_items())  # scalars: the sweep table's columns
         items["signoff"] = results.signoff.as_json_items()
@@ -124,7 +127,8 @@ def _run_tables(results: RunResults) -> tuple[TableSpec, ...]:
                   "run diagnostics.",
                   lambda: summary_items(results)),
 )
-    return own + contact_tables(results) + signoff_tables(results) + case_tables(results)
+    return (own + contact_tables(results) + signoff_tables(results) + case_tables(results)
+            + thermal_outputs(results, tables))
 
 
 @result_kind.register

@@ -263,6 +263,9 @@ class RunResults:
     """SHA-256 (hex) of the validated case with the resolved solver settings [-]."""
     settings: dict[str, Any] | None = None
     """The resolved ``[solver]`` settings used (SI units) [-]."""
+    thermal_film: Any = None
+    """The film's temperature field and heat flows with ``[solver] thermal = "film"``
+    (:class:`conrod.results.thermal.ThermalFilmResults`); None: the global heat balance."""
     headline_extra: dict[str, str] | None = None
     """Further headline lines (label → text) added by other analyses, e.g. an elastic
     comparison; printed after the standard lines [-]."""

@@ -127,6 +127,8 @@ def check_run(results: Any, case: Any, contact_radius: float | None = None) -> l
     if temperature is not None and temperature > limit:
         warnings.append(f"heat-balance temperature {temperature:.1f} °C is above the oil's "
                         f"valid range (lubricant.max_temperature = {limit:g} °C)")
+    if getattr(results, "thermal_film", None) is not None:  # the film's temperature field
+        warnings += results.thermal_film.warnings()
     return warnings
 
 

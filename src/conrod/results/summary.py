@@ -146,6 +146,9 @@ def headline(results: RunResults) -> dict[str, str]:
     lines["temperature"] = ("no heat balance (no oil flow)" if s.effective_temperature is None
                             else f"{s.effective_temperature:.1f} °C effective (heat balance "
                             "with film, hard-contact and boundary friction)")
+    thermal = getattr(results, "thermal_film", None)
+    if thermal is not None:  # the film's temperature field
+        lines["temperature"] = thermal.headline_text()
     lines["orbit"] = (f"{'periodic' if s.periodic else 'NOT periodic'} after {s.cycles} "
                       f"cycles (error {s.periodicity_error:.2g} c)")
     if results.signoff is not None:  # margins against [limits], the erosion indicator

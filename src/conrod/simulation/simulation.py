@@ -53,6 +53,7 @@ from conrod.simulation.orbit_outputs import (
     previous_cycle,
     rigid_film_thickness,
 )
+from conrod.simulation.thermal_film_run import thermal_orbit
 
 DEFAULT_TABLE_LOAD_MASS = 1.0
 """Moving mass for table loads when ``[solver] mass_x/mass_y`` are not given [kg]."""
@@ -228,8 +229,7 @@ class Simulation:
             self.case.contact.dry_friction_coefficient, _contact_thickness(self.solver, film),
             _asperity_parameters(self.case), tilt,
             feed_schedule(self.case, self.load_cycle(),
-                          lubricant.density_at(lubricant.supply_temperature), self._wear_angle),
-        )
+                          lubricant.density_at(lubricant.supply_temperature), self._wear_angle))
 
     # -- run --------------------------------------------------------------------------
     def run(self, progress: ProgressCallback | None = None) -> RunResults | Any:
@@ -275,7 +275,7 @@ class Simulation:
         results for a rigid bore; the elastic run (:mod:`conrod.simulation.ehd_run`) adds
         the bore's diagnostics to it and runs it again on the rigid companion."""
         start = time.perf_counter()
-        thermal = self._thermal_orbit(self.problem(), progress)
+        thermal = thermal_orbit(self, self._thermal_orbit, progress)  # heat balance or film
         orbit, problem, cycle = thermal.orbit, thermal.problem, thermal.cycle
         summary = summarise(cycle, orbit, problem, self.solver, thermal.temperature,
                             thermal.cycles, thermal.iterations, _name(self.integrator(), problem))
@@ -292,6 +292,7 @@ class Simulation:
             previous_cycle_eccentricity=previous_cycle(orbit), contact=contact,
             film_thickness=thickness, film_angles=angles,
             contact_radius=problem.contact_radius, case_record=self.case_record(),
+            thermal_film=getattr(thermal, "film", None),
         )
         warnings = (summary.warnings  # check_run: or ConvergenceError
                     + tuple(check_run(results, self.case, problem.contact_radius))
@@ -337,9 +338,8 @@ class Simulation:
             if (target is None or iteration == iterations
                     or abs(target - temperature) <= s.thermal_tolerance):
                 return ThermalOrbit(orbit, current, cycle, target, cycles, iteration, asperity)
-            temperature = relaxed_update(temperature, target)
+            temperature, state = relaxed_update(temperature, target), orbit.last.end_state
             viscosity = lubricant.viscosity_at(temperature)
-            state = orbit.last.end_state
         raise AssertionError("unreachable")  # pragma: no cover
 
     def _orbit(self, problem, state, stage, progress) -> PeriodicOrbit:

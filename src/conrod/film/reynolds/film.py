@@ -20,12 +20,12 @@ orbit cheap. The memory is explicit: the orbit integrator holds it
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 import numpy as np
 
-from conrod.errors import CaseError, ConvergenceError, FilmThicknessError
+from conrod.errors import CaseError, FilmThicknessError
 from conrod.film import characteristics as chars
 from conrod.film.base import BearingGeometry, FilmResult, FilmState
 from conrod.film.capabilities import CompiledKernel, QuasiStaticRequest
@@ -35,10 +35,12 @@ from conrod.film.profile import profile_field
 from conrod.film.rated_state import state_rate
 from conrod.film.reynolds import kernel as kernel
 from conrod.film.reynolds import multigrid as multigrid
+from conrod.film.reynolds import viscosity_field as vf
 from conrod.film.reynolds.memory import ReynoldsMemory, scaled_state
 from conrod.film.reynolds.problem import DiscreteProblem as _Problem
-from conrod.film.reynolds.problem import dirichlet_regions, optimal_relaxation
+from conrod.film.reynolds.problem import dirichlet_regions, optimal_relaxation  # noqa: F401 (used by the mass-conserving film)
 from conrod.film.reynolds.results import reynolds_characteristics
+from conrod.film.reynolds.sweep import sweep
 from conrod.film.supply import edge_mask, journal_holes_symmetric, supply_mask
 from conrod.film.tilt import axial_gap, moment_weights, tilt_fields
 
@@ -80,6 +82,8 @@ class ReynoldsFilm:
         warm-start field is q. None = isoviscous.
     deformation_rate : bool  Add the bore's rate ``RatedFilmState.deformation_rate`` [m/s]
         (:mod:`conrod.film.rated_state`) to the squeeze term (:meth:`with_deformation_rate`).
+    viscosity_field : ndarray or None  μ(θ, z) [Pa s] for states without a field of their
+        own (:meth:`with_viscosity_field`, :mod:`conrod.film.reynolds.viscosity_field`).
     """
 
     geometry: BearingGeometry
@@ -96,6 +100,7 @@ class ReynoldsFilm:
     pressure_viscosity: PressureViscosity | None = None
     name: str = "reynolds"
     deformation_rate: bool = False
+    viscosity_field: Any = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.n_theta < 8 or self.n_theta % 2:
@@ -106,8 +111,7 @@ class ReynoldsFilm:
             raise CaseError(f"method = {self.method!r}: allowed 'multigrid' or 'sor'")
         if self.friction not in ("full_film", "film_fraction"):
             raise CaseError(
-                f"friction = {self.friction!r}: allowed 'full_film' or 'film_fraction'"
-)
+                f"friction = {self.friction!r}: allowed 'full_film' or 'film_fraction'")
         g = self.geometry
         self.film_grid = FilmGrid(g.radius, g.width, self.n_theta, self.n_z)
         self._cos_nodes = np.cos(self.film_grid.theta)
@@ -123,11 +127,12 @@ class ReynoldsFilm:
         self._supply_values.setflags(write=False)
         self._force_weights = chars.force_weights(self.film_grid)
         self._profile = profile_field(g, self.film_grid.theta, self.film_grid.z)
+        self.viscosity_field = vf.checked_field(self.viscosity_field, self.deformation_shape())
         self._symmetric = (self.use_symmetry and self.method == "multigrid"
                            and np.array_equal(self._supply, self._supply[:, ::-1])
                            and journal_holes_symmetric(g)
-                           and (self._profile is None
-                                or np.array_equal(self._profile, self._profile[:, ::-1])))
+                           and vf.mirror_symmetric(self.viscosity_field)
+                           and vf.mirror_symmetric(self._profile))
 
     @classmethod
     def from_settings(cls, geometry: BearingGeometry, settings: Any) -> ReynoldsFilm:
@@ -181,7 +186,7 @@ class ReynoldsFilm:
         viscosity maps the solved field nonlinearly to the pressure)."""
         from conrod.film.linearised import linearise_by_differences, linearise_reynolds
 
-        if self.pressure_viscosity is None:
+        if self.pressure_viscosity is None and self._field(state) is None:
             return linearise_reynolds(self, state, tilt=True)
         return linearise_by_differences(self, state, tilt=True)
 
@@ -189,9 +194,10 @@ class ReynoldsFilm:
         """(F [N], ∂F/∂(e, ė) (2 × 4) [N/m, N s/m], memory) from the linearised solve on
         the converged active set, warm-started from ``memory``
         (:class:`~conrod.film.capabilities.HasForceJacobian`)."""
-        from conrod.film.linearised import linearise_reynolds
+        from conrod.film.linearised import linearise_by_differences, linearise_reynolds
 
-        lin = linearise_reynolds(self, state, memory=memory)
+        lin = (linearise_reynolds(self, state, memory=memory) if self._field(state) is None
+               else linearise_by_differences(self, state))  # a viscosity field: differences
         return lin.force, np.hstack([-lin.stiffness, -lin.damping]), memory
 
     def tilt_jacobian(self, state: FilmState, memory: ReynoldsMemory,
@@ -215,13 +221,35 @@ class ReynoldsFilm:
         """Compiled forces and moments of a tilted journal (or None, ``tilt_flight``)."""
         from conrod.film.reynolds.tilt_flight import tilt_flight_kernel
 
-        return None if self.geometry.journal_holes else tilt_flight_kernel(  # a fixed mask
+        return None if self.geometry.journal_holes or self.viscosity_field is not None else \
+            tilt_flight_kernel(  # a fixed mask, no viscosity field
             self, memory, newton_tolerance, free)
 
     def with_deformation_rate(self) -> ReynoldsFilm:
         """This film with the bore's rate in its squeeze term
         (:class:`~conrod.film.capabilities.SupportsDeformationRate`)."""
         return replace(self, deformation_rate=True)
+
+    def with_viscosity_field(self, viscosity_field: np.ndarray | None) -> ReynoldsFilm:
+        """This film carrying μ(θ, z) [Pa s] for the states without a field of their own
+        (:class:`~conrod.film.capabilities.HasViscosityField`); None: scalar viscosity."""
+        return replace(self, viscosity_field=viscosity_field)
+
+    def film_flows(self, state: FilmState, memory: ReynoldsMemory) -> tuple[Any, ReynoldsMemory]:
+        """(Volume fluxes and dissipation of ``state`` on the grid, the memory after the
+        solve) (:func:`conrod.film.reynolds.thermal_flows.film_flows`)."""
+        from conrod.film.reynolds.thermal_flows import film_flows
+
+        flows, reduced = film_flows(self, state, memory)
+        return flows, self._memory_after(memory, reduced, state)
+
+    def _field(self, state: FilmState) -> np.ndarray | None:
+        """The viscosity field a solve of ``state`` uses [Pa s] (None: the scalar)."""
+        field = vf.state_field(state, self.viscosity_field, self.deformation_shape())
+        if field is not None and self.pressure_viscosity is not None:
+            raise CaseError("viscosity_field with pressure_viscosity: not combined (allowed: "
+                            "a viscosity field or a pressure-viscosity law)")
+        return field
 
     def evaluate_pressure(self, state: FilmState, memory: ReynoldsMemory | None = None):
         """The pressure alone at ``state`` warm-started from ``memory``
@@ -231,9 +259,9 @@ class ReynoldsFilm:
         return evaluate_pressure(self, state, memory)
 
     def exact_thickness_response(self) -> bool:
-        """True when isoviscous: a pressure-dependent viscosity maps the solved field
-        nonlinearly to the pressure [-]."""
-        return self.pressure_viscosity is None
+        """True when isoviscous without a viscosity field: a pressure-dependent viscosity
+        maps the solved field nonlinearly to the pressure [-]."""
+        return self.pressure_viscosity is None and self.viscosity_field is None
 
     def thickness_response(self, state: FilmState, solved: Any, nodal: np.ndarray,
                            rate_step: float | None, tilt: tuple[float, float] | None = None):
@@ -310,7 +338,7 @@ class ReynoldsFilm:
         exact = (self.method == "multigrid" and not self.ambient_line_at_max_gap
                  and g.supply_pressure == 0.0 and g.cavitation_pressure == 0.0
                  and self.pressure_viscosity is None  # homogeneous in v_s only if isoviscous
-                 and self._profile is None  # and on a circular bore
+                 and self._profile is None and self.viscosity_field is None  # circular bore
                  and not g.journal_holes)  # the supply mask does not move
         return CompiledKernel(None, (), self._squeeze_cycle) if exact else None
 
@@ -351,8 +379,7 @@ class ReynoldsFilm:
             if np.shape(state.deformation) != h.shape:
                 raise CaseError(
                     f"deformation shape = {np.shape(state.deformation)}: "
-                    f"out of range (allowed: {h.shape} = (n_theta, n_z + 1))"
-)
+                    f"out of range (allowed: {h.shape} = (n_theta, n_z + 1))")
             h = h + state.deformation
         smallest = float(h.min())
         if not smallest > 0.0:
@@ -365,8 +392,10 @@ class ReynoldsFilm:
         fixed, values, fed = dirichlet_regions(
             self.film_grid, state, g, (self._fixed, values),
             lambda p: self._reduced(p, state), self.ambient_line_at_max_gap)
-        return _Problem(self.film_grid, h, h_rate, fixed, values,
-                        self._reduced(g.cavitation_pressure, state), journal_holes=fed)
+        field = self._field(state)
+        conduction = None if field is None else vf.conduction_thickness(h, state.viscosity, field)
+        return _Problem(self.film_grid, h, h_rate, fixed, values, self._reduced(
+            g.cavitation_pressure, state), journal_holes=fed, conduction=conduction)
 
     def _levels(self, problem: _Problem) -> list[_Problem]:
         """Coarse-to-fine problems: up to three nested grids for a cold start, none
@@ -380,41 +409,6 @@ class ReynoldsFilm:
             levels.append(levels[-1].coarsened())
         return levels[::-1]
 
-    def _sweep(self, level: _Problem, pressure: np.ndarray, state: FilmState,
-               tolerance: float, fixed_set: bool = False) -> tuple[int, float]:
-        """Solve ``level`` in place on ``pressure`` (its Dirichlet values already there
-        when ``fixed_set``); (sweeps, last relative change [-])."""
-        symmetric = (self._symmetric and state.deformation is None and not state.tilted
-                     and level.grid.n_z % 4 == 0)
-        g = level.grid
-        a_east, a_north, source = kernel.assemble_coefficients(
-            level.h, level.h_rate, g.radius, g.d_theta, g.d_z,
-            state.journal_speed + state.shell_speed, state.viscosity,
-)
-        level.coefficients = (a_east, a_north, source)
-        if not fixed_set:
-            pressure[level.fixed] = level.fixed_values[level.fixed]
-        if self.method == "multigrid":
-            cycles, change = multigrid.solve_on_grid(
-                pressure, level.h, source, level.fixed, g, level.cavitation,
-                tolerance, self.max_iterations, symmetric,
-)
-            sweeps = cycles * (multigrid.PRE_SWEEPS + multigrid.POST_SWEEPS)
-        else:
-            omega = self.relaxation if self.relaxation is not None else optimal_relaxation(g)
-            sweeps, change = kernel.sor_solve(
-                pressure, a_east, a_north, source, level.fixed,
-                level.cavitation, omega, tolerance, self.max_iterations,
-            )
-        if not change <= tolerance:
-            raise ConvergenceError(
-                f"Reynolds {self.method} on {g.n_theta}x{g.n_z} after {sweeps} sweeps",
-                where=f"e = ({state.eccentricity_x:.4g}, {state.eccentricity_y:.4g}) m, "
-                f"v = ({state.velocity_x:.4g}, {state.velocity_y:.4g}) m/s",
-                residual=change,
-)
-        return sweeps, change
-
     def solve_pressure(self, problem: _Problem, state: FilmState,
                         memory: ReynoldsMemory) -> tuple[np.ndarray, dict]:
         """Converged pressure [Pa] on the fine grid and solver diagnostics."""
@@ -426,7 +420,7 @@ class ReynoldsFilm:
                     scaled_state(state, self.geometry.radial_clearance))
             pressure = kernel.warm_field(last, previous, step, problem.cavitation,
                                          problem.fixed, problem.fixed_values)
-            total, change = self._sweep(problem, pressure, state, self.tolerance, True)
+            total, change = sweep(self, problem, pressure, state, self.tolerance, True)
         else:
             levels = self._levels(problem)
             pressure = np.zeros(levels[0].h.shape)
@@ -437,7 +431,7 @@ class ReynoldsFilm:
                 final = k == len(levels) - 1
                 tolerance = (self.tolerance if final
                              else max(10.0 * self.tolerance, NESTED_TOLERANCE))
-                sweeps, change = self._sweep(level, pressure, state, tolerance)
+                sweeps, change = sweep(self, level, pressure, state, tolerance)
                 total += sweeps
         return pressure, {"sweeps": float(total), "relative_update": change,
                           "warm_start": float(warm), "multigrid": float(self.method == "multigrid")}

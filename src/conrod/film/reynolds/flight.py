@@ -65,7 +65,9 @@ class FlightKernel:
         with J = ∂F/∂(e_x, e_y, ė_x, ė_y) [N, N/m, N s/m].
     params : tuple  Grid arrays, the warm-start field (changed in place by every call),
         the tangents ∂p/∂q of the last Jacobian and the state q of the last solve, the bore
-        profile and its wedge source (empty without one), and the counters :data:`STATS`.
+        profile and its wedge source (empty without one), the film's viscosity field μ(θ, z)
+        [Pa s] (empty without one; :mod:`conrod.film.reynolds.viscosity_field`, μ the
+        reference) and the counters :data:`STATS`.
     """
 
     force: Any
@@ -100,7 +102,7 @@ def flight_kernel(film, memory, newton_tolerance: float) -> FlightKernel | None:
     newton_tolerance : float  Multigrid tolerance of the force evaluations [-] (never
         below the film's own ``tolerance``, which the Jacobian uses).
     """
-    from conrod.film.reynolds.squeeze import SqueezeGrid
+    from conrod.film.reynolds.squeeze import SqueezeGrid, half_rows
 
     if (film.method != "multigrid" or film.ambient_line_at_max_gap
             or film.pressure_viscosity is not None):
@@ -117,12 +119,15 @@ def flight_kernel(film, memory, newton_tolerance: float) -> FlightKernel | None:
                            min(JACOBIAN_TOLERANCE, max(float(newton_tolerance),
                                                        film.tolerance))])
     profile, profile_source = profile_arrays(film, grid)
+    viscosity_field = (np.zeros((0, 0)) if film.viscosity_field is None else  # μ(θ, z) [Pa s]
+                       np.ascontiguousarray(half_rows(film.viscosity_field, None)
+                                            if grid.symmetric else film.viscosity_field))
     params = (np.ascontiguousarray(field), grid.fixed, grid.source_x, grid.source_y,
               grid.weight_x, grid.weight_y, grid.cos_t, grid.sin_t, radius, d_theta, d_z,
               clearance, grid.n_coarse, grid.symmetric, float(g.cavitation_pressure),
               math.sin(d_theta) / d_theta, tolerances, int(film.max_iterations),
               np.zeros((4,) + field.shape), np.zeros(5), profile, profile_source,
-              np.zeros(3))
+              viscosity_field, np.zeros(3))
     return FlightKernel(reynolds_force, reynolds_jacobian, params, film)
 
 
@@ -199,7 +204,7 @@ def _solve(q, viscosity, params, tolerance, omega_sum):
     bore profile's h₀ and wedge source at ω_j + ω_b = ``omega_sum`` when it has one)."""
     (pressure, fixed, src_x, src_y, w_x, w_y, cos_t, sin_t, radius, d_theta, d_z,
      clearance, n_coarse, symmetric, cavitation, _, _, max_cycles, _, anchor,
-     profile, profile_source, stats) = params
+     profile, profile_source, viscosity_field, stats) = params
     h = clearance - q[0] * cos_t - q[1] * sin_t
     source = viscosity * (q[2] * src_x + q[3] * src_y)
     if profile.shape[0] > 0:
@@ -207,6 +212,8 @@ def _solve(q, viscosity, params, tolerance, omega_sum):
         source = source + (viscosity * omega_sum) * profile_source
     if not np.min(h) > 0.0:
         return np.nan, np.nan
+    if viscosity_field.shape[0] > 0:  # the conductance thickness h (μ_r/μ)^(1/3)
+        h = h * np.cbrt(viscosity / viscosity_field)
     cycles, change = multigrid_solve(pressure, h, source, fixed, radius, d_theta, d_z,
                                      cavitation, tolerance, max_cycles, n_coarse, symmetric)
     stats[0] += 1.0

@@ -39,6 +39,9 @@ class DiscreteProblem:
     """(a_E, a_N, b) of the last solve on this level (reused by the characteristics)."""
     journal_holes: np.ndarray | None = None
     """Nodes fed by the journal's oil holes at this instant, bool (None: no journal hole)."""
+    conduction: np.ndarray | None = None
+    """Conductance thickness h (μ_r/μ)^{1/3} of a viscosity field [m]
+    (:mod:`conrod.film.reynolds.viscosity_field`); None: the conductances of h."""
 
     def coarsened(self) -> DiscreteProblem:
         """The same problem on every other node (coinciding nodes, exact subsampling)."""
@@ -46,7 +49,8 @@ class DiscreteProblem:
         coarse = FilmGrid(g.radius, g.width, g.n_theta // 2, g.n_z // 2)
         return DiscreteProblem(coarse, self.h[::2, ::2].copy(), self.h_rate[::2, ::2].copy(),
                                self.fixed[::2, ::2].copy(), self.fixed_values[::2, ::2].copy(),
-                               self.cavitation)
+                               self.cavitation, conduction=None if self.conduction is None
+                               else self.conduction[::2, ::2].copy())
 
 
 def dirichlet_regions(grid: FilmGrid, state: FilmState, geometry: BearingGeometry,

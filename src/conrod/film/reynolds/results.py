@@ -11,6 +11,7 @@ from typing import Any
 from conrod.film import characteristics as chars
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds.viscosity_field import state_field
 from conrod.film.tilt import axial_summary
 
 
@@ -36,6 +37,9 @@ def reynolds_characteristics(film: Any, problem: Any, reduced, pressure, state: 
     law = film.pressure_viscosity
     viscosity = (state.viscosity if law is None
                  else state.viscosity * law.viscosity_ratio(pressure, state.viscosity))
+    field = state_field(state, film.viscosity_field, h.shape)
+    if field is not None:  # the local viscosity in the shear
+        viscosity = field
     torque_j, torque_b = chars.friction_torques(
         pressure, h, grid, state.journal_speed, state.shell_speed, viscosity, fraction)
     w_x, w_y = film.force_weights
