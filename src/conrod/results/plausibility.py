@@ -117,15 +117,17 @@ def check_run(results: Any, case: Any, contact_radius: float | None = None) -> l
     warnings += _film_pressure_warnings(cycle)
     temperature = results.summary.effective_temperature
     limit = case.lubricant.max_temperature if case.lubricant is not None else math.inf
+    source = ("film's mean temperature" if getattr(results, "thermal_film", None) is not None
+              else "heat-balance temperature")
     if temperature is not None and not temperature <= TEMPERATURE_LIMIT:
         raise ConvergenceError(
-            f"implausible result: heat-balance temperature {temperature:.3g} °C (physical: "
+            f"implausible result: {source} {temperature:.3g} °C (physical: "
             f"<= {TEMPERATURE_LIMIT:g} °C, and <= lubricant.max_temperature = {limit:g} °C "
             "for the oil data); the friction power cannot be carried away by the side flow "
             "of this bearing — check the load, the clearance, the width and the roughness",
             where="the heat balance of the cycle")
     if temperature is not None and temperature > limit:
-        warnings.append(f"heat-balance temperature {temperature:.1f} °C is above the oil's "
+        warnings.append(f"{source} {temperature:.1f} °C is above the oil's "
                         f"valid range (lubricant.max_temperature = {limit:g} °C)")
     if getattr(results, "thermal_film", None) is not None:  # the film's temperature field
         warnings += results.thermal_film.warnings()
