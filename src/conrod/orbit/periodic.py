@@ -26,6 +26,14 @@ own closure, max(|e_k(end) − e_k(0)|/c, |ė_k(end) − ė_k(0)|/(c ω)) (posit
 the massless orbit; with a film content also the root mean square of the change of the
 film fraction over the cycle): the previous cycle started elsewhere and says nothing
 about it.
+With ``[solver] periodic_accelerator = "shooting"`` (default) the start of every cycle
+after the first is the quasi-Newton shooting step on F(X₀) = P(X₀) − X₀
+(:mod:`conrod.orbit.shooting`, same state as the mixing; with no secant pair yet the
+plain repetition), and every cycle, the first included, is measured by its own closure:
+a cycle repeated from where the last one ended is accepted when it closes on itself,
+one cycle before the difference of two plain cycles could say so (passenger car from
+the concentric start: 3 → 2 cycles). ``"anderson"`` is the mixing above.
+
 The orbit is periodic when it is at most ``[solver] periodicity_tolerance``; if it is not
 after ``max_cycles``, the result says so (``periodic = False`` plus a warning) instead of
 returning silently.
@@ -47,6 +55,7 @@ from conrod.orbit.implicit_step import needs_journal_step
 from conrod.orbit.integrators import Integrator, declared, resolved
 from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
 from conrod.orbit.progress import reporting
+from conrod.orbit.shooting import CycleShooting
 from conrod.orbit.trajectory import CycleTrajectory
 
 MIXING_LIMIT = 0.999
@@ -134,7 +143,7 @@ def periodic_orbit(
     for cycle in range(1, settings.max_cycles + 1):
         with reporting(None if on_angle is None else functools.partial(on_angle, cycle)):
             current = integrate_cycle(problem, state, settings, chosen)
-        if extrapolated:
+        if extrapolated or (mixing is not None and mixing.shooting):
             error = cycle_closure(state, current.end_state, problem, mixing.with_mass,
                                   mixing.content)
         elif previous is not None:
@@ -157,16 +166,21 @@ def _mixing(problem: OrbitProblem, chosen: Integrator, settings) -> _Mixing | No
                                                               and not mixable):
         return None
     limit = MIXING_LIMIT * problem.contact_radius / problem.clearance
-    return _Mixing(AndersonMixing(limit), declared(resolved(chosen, problem), "with_mass"),
-                   problem.film if problem.has_film_content else None)
+    shooting = getattr(settings, "periodic_accelerator", "shooting") == "shooting"
+    scheme = CycleShooting(limit) if shooting else AndersonMixing(limit)
+    return _Mixing(scheme, declared(resolved(chosen, problem), "with_mass"),
+                   problem.film if problem.has_film_content else None, shooting)
 
 
 @dataclass
 class _Mixing:
-    anderson: AndersonMixing
+    anderson: AndersonMixing | CycleShooting
+    """The scheme proposing the next start (Anderson mixing or quasi-Newton shooting)."""
     with_mass: bool
     content: HasMixableContent | None = None
     """The film whose content joins the mixed state (None: position and velocity only)."""
+    shooting: bool = False
+    """Shooting: every proposal taken, every cycle measured by its own closure."""
 
     def pack(self, state: OrbitState, scale: np.ndarray) -> np.ndarray:
         """Scaled state of the mixing: position (and velocity), then the film content
@@ -210,7 +224,7 @@ def _next_start(mixing: _Mixing | None, start: OrbitState, end: OrbitState,
     c, w = problem.clearance, problem.crank_speed
     scale = np.array([c, c, c * w, c * w])[:4 if mixing.with_mass else 2]
     proposal = mixing.anderson.propose(mixing.pack(start, scale), mixing.pack(end, scale))
-    if proposal is None or not slow:
+    if proposal is None or not (slow or mixing.shooting):
         return end, False
     return mixing.unpack(proposal, end, scale), True
 
