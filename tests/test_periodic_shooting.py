@@ -152,3 +152,26 @@ def test_anderson_choice_keeps_the_measure_of_the_mixing():
     sim = _simulation("flores2006_table_load", periodic_accelerator="anderson")
     orbit = periodic_orbit(sim.problem(), sim.solver, integrator=sim.integrator())
     assert math.isinf(orbit.history[0]) and orbit.cycles == 3
+
+
+def test_a_continued_run_accepts_its_first_cycle_when_it_closes():
+    """From the end of a periodic orbit (the heat balance's next iteration at an unchanged
+    viscosity) one cycle closes and is accepted; at a viscosity 20 % higher the first cycle
+    does not close and the run goes on to the new orbit. The Anderson choice keeps
+    ``min_cycles`` (2) for a continued run."""
+    sim = _simulation("passenger_car_diesel_2000rpm")
+    problem, settings = sim.problem(), sim.solver
+    orbit = periodic_orbit(problem, settings, integrator=sim.integrator())
+    again = periodic_orbit(problem, settings, integrator=sim.integrator(),
+                           start=orbit.last.end_state)
+    assert again.periodic and again.cycles == 1
+    gap = np.max(np.hypot(again.last.x - orbit.last.x, again.last.y - orbit.last.y))
+    assert gap <= settings.periodicity_tolerance * problem.clearance
+    thicker = problem.with_viscosity(1.2 * problem.viscosity)
+    moved = periodic_orbit(thicker, settings, integrator=sim.integrator(),
+                           start=orbit.last.end_state)
+    assert moved.periodic and moved.cycles == 2 and moved.history[0] > 1e-3
+    mixed = _simulation("passenger_car_diesel_2000rpm", periodic_accelerator="anderson")
+    kept = periodic_orbit(problem, mixed.solver, integrator=mixed.integrator(),
+                          start=orbit.last.end_state)
+    assert kept.cycles == 2

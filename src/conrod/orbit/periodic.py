@@ -129,13 +129,18 @@ def periodic_orbit(
 ) -> PeriodicOrbit:
     """Integrate cycles from ``start`` (concentric) until periodic or ``max_cycles``;
     ``on_cycle(cycle, periodicity error)`` after each cycle, ``on_angle(cycle, crank angle
-    reached in it [rad])`` whenever the integrator reports (:mod:`conrod.orbit.progress`)."""
+    reached in it [rad])`` whenever the integrator reports (:mod:`conrod.orbit.progress`).
+    With the shooting accelerator a ``start`` given by the caller continues a run (the
+    heat balance's next viscosity from the last orbit's end): its first cycle is accepted
+    when it closes on itself (``min_cycles`` counts the cycles of the run it continues)."""
     chosen = _integrator(integrator or settings.integrator)
+    continued = start is not None
     if start is None and getattr(settings, "massless_start", False) and _implicit(chosen,
                                                                                  problem):
         start = _massless_start(problem, settings)
     state = start or initial_state()
     mixing = _mixing(problem, chosen, settings)
+    fewest = 1 if continued and mixing is not None and mixing.shooting else settings.min_cycles
     previous: CycleTrajectory | None = None
     history: list[float] = []
     error = float("inf")
@@ -151,7 +156,7 @@ def periodic_orbit(
         history.append(error)
         if on_cycle is not None:
             on_cycle(cycle, error)
-        if cycle >= settings.min_cycles and error <= settings.periodicity_tolerance:
+        if cycle >= fewest and error <= settings.periodicity_tolerance:
             return PeriodicOrbit(current, previous, cycle, error, True, history)
         previous = current
         state, extrapolated = _next_start(mixing, state, current.end_state, problem,
