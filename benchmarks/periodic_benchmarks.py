@@ -1,6 +1,7 @@
 """Cycles to a periodic orbit on every shipped example, by cycle-start strategy.
 
 Run from the repository root:  python benchmarks/periodic_benchmarks.py [EXAMPLE_STEM ...]
+[--elastic] (``--elastic``: the examples on an elastic Reynolds bore, see SAME_AS)
 Writes benchmarks/periodic_benchmarks.md (rows of the examples measured replace those of
 an earlier run). For each example the orbit at the supply viscosity (no heat balance) is
 made periodic from the concentric start with the case's own integrator and film by
@@ -99,17 +100,30 @@ def _start():
 
 
 def _cell(run: dict) -> str:
+    if "same" in run:
+        return f"as {run['same']} (same run)"
     mark = "" if run["periodic"] else " (not periodic)"
     extra = f" (+{run['massless']})" if run["massless"] else ""
-    return f"{run['cycles']}{extra}{mark}, {run['error']:.1e}, {run['wall']:.1f} s"
+    return f"{run['cycles']}{extra}{mark}, {run['error']:.1e}, {run['wall']:.3g} s"
+
+
+SAME_AS = {"main": "plain", "shooting, concentric start": "shooting"}
+"""With ``--elastic``: on an elastic Reynolds bore main accelerates nothing (plain) and
+no massless start is made (shooting from the concentric start): those columns are
+not run again."""
 
 
 def main(stems: list[str]) -> None:
     rows = _existing()
+    elastic = "--elastic" in stems
+    stems = [s for s in stems if s != "--elastic"]
     for stem in stems or list(EXAMPLES):
         overrides, note = EXAMPLES[stem]
         runs = {}
         for name, strategy in STRATEGIES.items():
+            if elastic and name in SAME_AS:
+                runs[name] = {**runs[SAME_AS[name]], "same": SAME_AS[name]}
+                continue
             try:
                 runs[name] = measure(stem, overrides, strategy)
             except Exception as error:  # noqa: BLE001 - a failing example is a row, not a stop
