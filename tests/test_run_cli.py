@@ -63,11 +63,11 @@ def test_summary_agrees_with_cycle_table(flores_run):
 def test_flags_override_the_case(runner, tmp_path):
     result = runner.invoke(app, [
         "run", str(EXAMPLES / "flores2006_table_load.toml"), "--out", str(tmp_path),
-        "--integrator", "adaptive", "--max-cycles", "2", "--no-figures",
+        "--integrator", "adaptive", "--max-cycles", "1", "--no-figures",
     ])
-    assert result.exit_code == 3, result.output  # 2 cycles: not periodic, written, marked
+    assert result.exit_code == 3, result.output  # 1 cycle: not periodic, written, marked
     summary = json.loads((tmp_path / "summary.json").read_text())
-    assert summary["integrator"] == "adaptive" and summary["cycles"] == 2
+    assert summary["integrator"] == "adaptive" and summary["cycles"] == 1
     assert not (tmp_path / "orbit.png").exists()
 
 

@@ -74,6 +74,12 @@ class SolverSection(Section):
         description="Start each cycle at the Anderson extrapolation of the cycle-to-cycle "
         "map instead of where the last cycle ended (fewer cycles to a periodic orbit) [-]",
 )
+    periodic_accelerator: Literal["shooting", "anderson"] = Field(
+        default="shooting",
+        description="With accelerate_cycles: shooting (quasi-Newton step on the one-cycle "
+        "map at every cycle, each cycle measured by its own closure) or anderson (Anderson "
+        "extrapolation while the repeated cycles converge slowly) [-]",
+)
     max_cycles: int = Field(default=8, ge=1, le=200, description="Most cycles to integrate [-]")
     min_cycles: int = Field(default=2, ge=1, le=200, description="Fewest cycles to integrate [-]")
     periodicity_tolerance: float = Field(

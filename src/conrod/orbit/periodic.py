@@ -26,6 +26,19 @@ own closure, max(|e_k(end) − e_k(0)|/c, |ė_k(end) − ė_k(0)|/(c ω)) (posit
 the massless orbit; with a film content also the root mean square of the change of the
 film fraction over the cycle): the previous cycle started elsewhere and says nothing
 about it.
+With ``[solver] periodic_accelerator = "shooting"`` (default) the start of every cycle
+after the first is the quasi-Newton shooting step on F(X₀) = P(X₀) − X₀
+(:mod:`conrod.orbit.shooting`, same state as the mixing; with no secant pair yet the
+plain repetition), and every cycle, the first included, is measured by its own closure:
+a cycle repeated from where the last one ended is accepted when it closes on itself,
+one cycle before the difference of two plain cycles could say so (passenger car from
+the concentric start: 3 → 2 cycles); the closure of a tilted run includes the tilt
+(ℓγ/c, ℓγ̇/(c ω), ℓ = L/2). The memory of a film whose own unknowns are solved only with
+the journal's step (the elastic Reynolds bore) is not moved: each cycle starts where the last one
+ended, the deformation follows the journal (slaved), and the cycle is measured by the
+journal's closure. A film content that cannot be mixed (the mass-conserving film on an
+elastic bore) keeps the plain repetition. ``"anderson"`` is the mixing above.
+
 The orbit is periodic when it is at most ``[solver] periodicity_tolerance``; if it is not
 after ``max_cycles``, the result says so (``periodic = False`` plus a warning) instead of
 returning silently.
@@ -47,6 +60,7 @@ from conrod.orbit.implicit_step import needs_journal_step
 from conrod.orbit.integrators import Integrator, declared, resolved
 from conrod.orbit.problem import OrbitProblem, OrbitState, initial_state
 from conrod.orbit.progress import reporting
+from conrod.orbit.shooting import CycleShooting
 from conrod.orbit.trajectory import CycleTrajectory
 
 MIXING_LIMIT = 0.999
@@ -94,14 +108,23 @@ def cycle_difference(a: CycleTrajectory, b: CycleTrajectory, clearance: float) -
 
 
 def cycle_closure(start: OrbitState, end: OrbitState, problem: OrbitProblem,
-                  with_mass: bool, content: HasMixableContent | None = None) -> float:
+                  with_mass: bool, content: HasMixableContent | None = None,
+                  tilt: bool = False) -> float:
     """How far one cycle is from closing on itself: max(|e_end − e_0|/c, with mass
     |ė_end − ė_0|/(c ω), with a ``content`` film the root mean square of the change of its
-    film fraction ϑ) [-]."""
+    film fraction ϑ; with ``tilt`` of a tilted run also |ℓ(γ_end − γ_0)|/c and, with mass,
+    |ℓ(γ̇_end − γ̇_0)|/(c ω), ℓ = L/2 the lever of the tilt) [-]."""
     c, w = problem.clearance, problem.crank_speed
     closure = math.hypot(end.x - start.x, end.y - start.y) / c
     if with_mass:
         closure = max(closure, math.hypot(end.vx - start.vx, end.vy - start.vy) / (c * w))
+    if tilt and problem.tilt is not None and start.tilt is not None and end.tilt is not None:
+        lever = problem.tilt.lever
+        closure = max(closure, lever * math.hypot(end.tilt[0] - start.tilt[0],
+                                                  end.tilt[1] - start.tilt[1]) / c)
+        if with_mass:
+            closure = max(closure, lever * math.hypot(end.tilt[2] - start.tilt[2],
+                                                      end.tilt[3] - start.tilt[3]) / (c * w))
     if content is not None and start.film_memory is not None and end.film_memory is not None:
         change = (content.content_vector(end.film_memory)
                   - content.content_vector(start.film_memory))
@@ -120,13 +143,18 @@ def periodic_orbit(
 ) -> PeriodicOrbit:
     """Integrate cycles from ``start`` (concentric) until periodic or ``max_cycles``;
     ``on_cycle(cycle, periodicity error)`` after each cycle, ``on_angle(cycle, crank angle
-    reached in it [rad])`` whenever the integrator reports (:mod:`conrod.orbit.progress`)."""
+    reached in it [rad])`` whenever the integrator reports (:mod:`conrod.orbit.progress`).
+    With the shooting accelerator a ``start`` given by the caller continues a run (the
+    heat balance's next viscosity from the last orbit's end): its first cycle is accepted
+    when it closes on itself (``min_cycles`` counts the cycles of the run it continues)."""
     chosen = _integrator(integrator or settings.integrator)
+    continued = start is not None
     if start is None and getattr(settings, "massless_start", False) and _implicit(chosen,
                                                                                  problem):
         start = _massless_start(problem, settings)
     state = start or initial_state()
     mixing = _mixing(problem, chosen, settings)
+    fewest = 1 if continued and mixing is not None and mixing.shooting else settings.min_cycles
     previous: CycleTrajectory | None = None
     history: list[float] = []
     error = float("inf")
@@ -134,15 +162,15 @@ def periodic_orbit(
     for cycle in range(1, settings.max_cycles + 1):
         with reporting(None if on_angle is None else functools.partial(on_angle, cycle)):
             current = integrate_cycle(problem, state, settings, chosen)
-        if extrapolated:
+        if extrapolated or (mixing is not None and mixing.shooting):
             error = cycle_closure(state, current.end_state, problem, mixing.with_mass,
-                                  mixing.content)
+                                  mixing.content, tilt=mixing.shooting)
         elif previous is not None:
             error = cycle_difference(current, previous, problem.clearance)
         history.append(error)
         if on_cycle is not None:
             on_cycle(cycle, error)
-        if cycle >= settings.min_cycles and error <= settings.periodicity_tolerance:
+        if cycle >= fewest and error <= settings.periodicity_tolerance:
             return PeriodicOrbit(current, previous, cycle, error, True, history)
         previous = current
         state, extrapolated = _next_start(mixing, state, current.end_state, problem,
@@ -153,20 +181,31 @@ def periodic_orbit(
 def _mixing(problem: OrbitProblem, chosen: Integrator, settings) -> _Mixing | None:
     """The Anderson mixing of this run, None when it is off or cannot apply."""
     mixable = isinstance(problem.film, HasMixableContent)
-    if not getattr(settings, "accelerate_cycles", False) or (problem.has_film_content
-                                                              and not mixable):
+    shooting = getattr(settings, "periodic_accelerator", "shooting") == "shooting"
+    slaved = problem.has_film_content and not mixable and needs_journal_step(problem.film)
+    if not getattr(settings, "accelerate_cycles", False) or (
+            problem.has_film_content and not mixable and not (slaved and shooting)):
         return None
     limit = MIXING_LIMIT * problem.contact_radius / problem.clearance
-    return _Mixing(AndersonMixing(limit), declared(resolved(chosen, problem), "with_mass"),
-                   problem.film if problem.has_film_content else None)
+    scheme = CycleShooting(limit) if shooting else AndersonMixing(limit)
+    return _Mixing(scheme, declared(resolved(chosen, problem), "with_mass"),
+                   problem.film if problem.has_film_content and not slaved else None,
+                   shooting, slaved)
 
 
 @dataclass
 class _Mixing:
-    anderson: AndersonMixing
+    anderson: AndersonMixing | CycleShooting
+    """The scheme proposing the next start (Anderson mixing or quasi-Newton shooting)."""
     with_mass: bool
     content: HasMixableContent | None = None
     """The film whose content joins the mixed state (None: position and velocity only)."""
+    shooting: bool = False
+    """Shooting: every proposal taken, every cycle measured by its own closure."""
+    slaved: bool = False
+    """A film memory that is only the state of unknowns solved with the journal's step
+    (the elastic Reynolds bore's deformation, :func:`needs_journal_step`): not moved, every
+    cycle starts where the last ended and is measured by the journal's closure."""
 
     def pack(self, state: OrbitState, scale: np.ndarray) -> np.ndarray:
         """Scaled state of the mixing: position (and velocity), then the film content
@@ -200,7 +239,7 @@ def _next_start(mixing: _Mixing | None, start: OrbitState, end: OrbitState,
                 problem: OrbitProblem, slow: bool) -> tuple[OrbitState, bool]:
     """Start of the next cycle and whether it is extrapolated (else ``end`` itself); the
     mixing records every cycle but extrapolates only when convergence is ``slow``."""
-    if mixing is None:
+    if mixing is None or mixing.slaved:
         return end, False
     if start.in_contact or end.in_contact:
         mixing.anderson.reset()
@@ -210,7 +249,7 @@ def _next_start(mixing: _Mixing | None, start: OrbitState, end: OrbitState,
     c, w = problem.clearance, problem.crank_speed
     scale = np.array([c, c, c * w, c * w])[:4 if mixing.with_mass else 2]
     proposal = mixing.anderson.propose(mixing.pack(start, scale), mixing.pack(end, scale))
-    if proposal is None or not slow:
+    if proposal is None or not (slow or mixing.shooting):
         return end, False
     return mixing.unpack(proposal, end, scale), True
 
