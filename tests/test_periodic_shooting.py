@@ -110,19 +110,23 @@ def test_shot_massless_orbit_is_the_repeated_orbit_in_two_cycles():
 
 
 @pytest.mark.slow
-def test_shot_orbit_on_the_fed_reynolds_film_is_the_repeated_orbit():
-    """Crank-fed passenger car, Reynolds film with Greenwood–Tripp asperities, 24 × 8."""
-    problem, settings, plain, shot = _orbits("passenger_car_diesel_2000rpm_crank_fed",
-                                             {"n_theta": 24, "n_z": 8}, {})
+def test_shot_orbit_on_the_reynolds_film_is_the_repeated_orbit():
+    """KamAZ-740 on a rigid bore, Reynolds film 24 × 8 (the compiled flight of the
+    Reynolds film)."""
+    problem, settings, plain, shot = _orbits("kamaz_740_truck_diesel",
+                                             {"film": "reynolds", "housing": "rigid",
+                                              "n_theta": 24, "n_z": 8}, {})
     _assert_same_orbit(problem, settings, plain, shot)
     assert shot.cycles < plain.cycles
 
 
 @pytest.mark.slow
 def test_shot_orbit_on_an_elastic_bore_is_the_repeated_orbit():
-    """KamAZ-740 solid big end, elastic bore (EHD) as shipped (36 × 8): the bore
-    deformation is solved with each step and slaved to the journal state between cycles."""
-    problem, settings, plain, shot = _orbits("kamaz_740_solid_big_end", {}, {})
+    """KamAZ-740 on the built-in elastic rod (EHD), 24 × 6: the bore deformation is solved
+    with each step and slaved to the journal state between cycles."""
+    problem, settings, plain, shot = _orbits("kamaz_740_truck_diesel",
+                                             {"film": "reynolds", "n_theta": 24, "n_z": 6},
+                                             {})
     _assert_same_orbit(problem, settings, plain, shot)
     assert shot.cycles < plain.cycles
 
