@@ -199,7 +199,7 @@ def _sendable(error: BaseException) -> bool:
         copy = pickle.loads(pickle.dumps(error))
     except Exception:
         return False
-    return type(copy) is type(error) and str(copy) == str(error)
+    return isinstance(copy, type(error)) and str(copy) == str(error)
 
 
 def _die_with_parent() -> None:
