@@ -34,14 +34,16 @@ GROWTH = 4.0
 """Largest distance of a proposal from P(x_k), in units of the residual ‖f_k‖ [-]."""
 
 
-class AndersonMixing:
-    """Next start of the cycle map from the history of (start, image) pairs.
+class CycleMapHistory:
+    """The last (start, image) pairs of the cycle map and the safeguard of a proposed
+    start, shared by the extrapolations of the cycle map (this mixing and
+    :class:`conrod.orbit.shooting.CycleShooting`).
 
     limit : float  Largest |position| of a proposal, scaled like the state [-].
-    depth : int  Residual differences used [-].
+    depth : int  Differences of pairs used [-].
     """
 
-    def __init__(self, limit: float, depth: int = DEPTH):
+    def __init__(self, limit: float, depth: int):
         self.limit = limit
         self.depth = depth
         self.starts: list[np.ndarray] = []
@@ -52,23 +54,43 @@ class AndersonMixing:
         self.starts.clear()
         self.images.clear()
 
-    def propose(self, start: np.ndarray, image: np.ndarray) -> np.ndarray | None:
-        """Next start after the cycle ``start`` → ``image`` (scaled states, positions
-        first); None: continue from ``image`` itself (plain repetition)."""
+    def record(self, start: np.ndarray, image: np.ndarray) -> bool:
+        """Keep the pair ``start`` → ``image``; True once there are two to difference."""
         self.starts.append(np.asarray(start, dtype=float))
         self.images.append(np.asarray(image, dtype=float))
         del self.starts[:-(self.depth + 1)], self.images[:-(self.depth + 1)]
-        if len(self.starts) < 2:
+        return len(self.starts) >= 2
+
+    def checked(self, proposal: np.ndarray, residual: np.ndarray,
+                growth: float) -> np.ndarray | None:
+        """``proposal``, or None (history reset) when it is not finite, lies outside
+        ``limit`` or farther from the last image than ``growth`` × ‖residual‖."""
+        step = float(np.linalg.norm(proposal - self.images[-1]))
+        if (not np.all(np.isfinite(proposal))
+                or np.hypot(proposal[0], proposal[1]) > self.limit
+                or step > growth * float(np.linalg.norm(residual))):
+            self.reset()
+            return None
+        return proposal
+
+
+class AndersonMixing(CycleMapHistory):
+    """Next start of the cycle map from the history of (start, image) pairs.
+
+    limit : float  Largest |position| of a proposal, scaled like the state [-].
+    depth : int  Residual differences used [-].
+    """
+
+    def __init__(self, limit: float, depth: int = DEPTH):
+        super().__init__(limit, depth)
+
+    def propose(self, start: np.ndarray, image: np.ndarray) -> np.ndarray | None:
+        """Next start after the cycle ``start`` → ``image`` (scaled states, positions
+        first); None: continue from ``image`` itself (plain repetition)."""
+        if not self.record(start, image):
             return None
         residuals = np.array(self.images) - np.array(self.starts)
         d_residual = np.diff(residuals, axis=0).T
         d_image = np.diff(np.array(self.images), axis=0).T
         gamma, *_ = np.linalg.lstsq(d_residual, residuals[-1], rcond=1e-10)
-        proposal = self.images[-1] - d_image @ gamma
-        step = float(np.linalg.norm(proposal - self.images[-1]))
-        if (not np.all(np.isfinite(proposal))
-                or np.hypot(proposal[0], proposal[1]) > self.limit
-                or step > GROWTH * float(np.linalg.norm(residuals[-1]))):
-            self.reset()
-            return None
-        return proposal
+        return self.checked(self.images[-1] - d_image @ gamma, residuals[-1], GROWTH)

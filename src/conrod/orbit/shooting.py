@@ -37,6 +37,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from conrod.orbit.acceleration import CycleMapHistory
+
 DEPTH = 4
 """Secant pairs kept (the journal state has 4 components) [-]."""
 GROWTH = 50.0
@@ -45,7 +47,7 @@ Newton step of a mode contracting by λ per cycle moves λ/(1 − λ) ‖F‖ be
 modes up to λ = 0.98 per cycle get their whole step."""
 
 
-class CycleShooting:
+class CycleShooting(CycleMapHistory):
     """Next start of the cycle map by a Newton step with the secant monodromy.
 
     limit : float  Largest |position| of a proposal, scaled like the state [-].
@@ -53,33 +55,16 @@ class CycleShooting:
     """
 
     def __init__(self, limit: float, depth: int = DEPTH):
-        self.limit = limit
-        self.depth = depth
-        self.starts: list[np.ndarray] = []
-        self.images: list[np.ndarray] = []
-
-    def reset(self) -> None:
-        """Forget the secant pairs (after a contact at φ = 0 or a rejected proposal)."""
-        self.starts.clear()
-        self.images.clear()
+        super().__init__(limit, depth)
 
     def propose(self, start: np.ndarray, image: np.ndarray) -> np.ndarray | None:
         """Next start after the cycle ``start`` → ``image`` (scaled states, positions
         first); None: continue from ``image`` itself (no pair yet, or rejected)."""
-        self.starts.append(np.asarray(start, dtype=float))
-        self.images.append(np.asarray(image, dtype=float))
-        del self.starts[:-(self.depth + 1)], self.images[:-(self.depth + 1)]
-        if len(self.starts) < 2:
+        if not self.record(start, image):
             return None
         residual = self.images[-1] - self.starts[-1]
         proposal = self.starts[-1] + newton_step(self.monodromy_factors(), residual)
-        step = float(np.linalg.norm(proposal - self.images[-1]))
-        if (not np.all(np.isfinite(proposal))
-                or np.hypot(proposal[0], proposal[1]) > self.limit
-                or step > GROWTH * float(np.linalg.norm(residual))):
-            self.reset()
-            return None
-        return proposal
+        return self.checked(proposal, residual, GROWTH)
 
     def monodromy_factors(self) -> tuple[np.ndarray, np.ndarray]:
         """(U, Vᵀ) with the secant monodromy M = U Vᵀ = ΔP ΔX⁺ [-]."""
