@@ -29,10 +29,10 @@ from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.sparse.linalg import splu
 
 from conrod.film.mass_conserving.results import axial_weights
 from conrod.film.step_system import FilmResponse
+from conrod.numerics.sparse_lu import ManyRightHandSides
 
 
 def content_step_response(film: Any, state, solved, nodal: np.ndarray,
@@ -90,7 +90,7 @@ def pressure_by_bore(fields, pressure: np.ndarray, fraction: np.ndarray,
     d_pressure = np.zeros((n_bore,) + pressure.shape)
     if right.shape[1] == 0:
         return d_pressure
-    solved = splu(matrix.tocsc()).solve(np.ascontiguousarray(right.T))  # all columns at once
+    solved = ManyRightHandSides(matrix.tocsc()).solve_rows(right).T  # all columns at once
     full_of_unknown = full[unknown]
     nodes = np.nonzero(unknown)
     d_pressure[:, nodes[0][full_of_unknown], nodes[1][full_of_unknown]] = (

@@ -8,7 +8,8 @@ film row j changes h by u_j at every axial node of the row (a 2-D housing deform
 every z) and, when the rate is in the squeeze term, ḣ by u_j/τ_r; a displacement u_jk of
 one film node (a housing that deforms along the width) changes h and ḣ at that node alone;
 a journal velocity v changes ḣ by −(v_x cos θ + v_y sin θ). For a fixed active set each
-direction q costs one back-substitution with the same sparse LU factor:
+direction q costs one back-substitution with the same sparse LU factor, all directions in
+one compiled sweep (:mod:`conrod.numerics.sparse_lu`):
 
 .. math:: K_{AA}\\,∂p_A/∂q = −\\big(∂K/∂q\\,p − ∂b/∂q\\big)_A
 
@@ -28,7 +29,7 @@ from typing import Any
 
 import numpy as np
 from scipy.linalg import lu_factor, lu_solve
-from scipy.sparse.linalg import splu
+from scipy.sparse import coo_matrix
 
 from conrod.film.base import FilmResult
 from conrod.film.linearised import active_matrix
@@ -37,6 +38,7 @@ from conrod.film.reynolds.memory import ReynoldsMemory
 from conrod.film.reynolds.response_kernel import bore_node_imbalance, bore_row_imbalance
 from conrod.film.step_system import FilmResponse
 from conrod.film.tilt import thickness_directions
+from conrod.numerics.sparse_lu import ManyRightHandSides
 
 
 def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray,
@@ -64,43 +66,54 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     n_theta, n_nodes = pressure.shape
     shape = (n_theta, n_nodes)
     rate = 0.0 if rate_step is None else 1.0 / rate_step
-    bore_part = (_node_directions if nodal.ndim == 1 else _row_directions)(
-        pressure, problem.h, rate, grid, omega_sum, state.viscosity, nodal.shape[0])
-    n_bore = bore_part.shape[0]
-    directions = _velocity_directions(film, shape, tilt)
-    imbalance = np.zeros((n_bore + len(directions),) + shape)
-    imbalance[:n_bore] = bore_part
-    for k, (dh, dh_rate) in enumerate(directions):
-        imbalance[n_bore + k] = _imbalance(pressure, problem.h, dh, dh_rate, grid,
-                                           omega_sum, state.viscosity)
-    d_pressure = np.zeros(imbalance.shape)
     matrix, nodes = active_matrix(a_east, a_north, active)
-    right = -imbalance[:, nodes[0], nodes[1]]
-    if nodal.ndim == 1 and right.shape[0] > right.shape[1]:
-        # more directions than active nodes (a node per film node): one dense LU and one
-        # blocked solve, 3x faster than as many sparse back-substitutions
-        factor = lu_factor(matrix.toarray())
-        d_pressure[:, nodes[0], nodes[1]] = lu_solve(factor, right.T).T
-    else:
-        factor = splu(matrix, permc_spec="MMD_AT_PLUS_A")  # K_AA is symmetric
-        for q in range(len(right)):  # one column at a time: SuperLU's blocked solve is slow
-            d_pressure[q, nodes[0], nodes[1]] = factor.solve(np.ascontiguousarray(right[q]))
+    index = -np.ones(shape, dtype=np.int64)
+    index[nodes] = np.arange(nodes[0].size)
+    right = (_node_directions if nodal.ndim == 1 else _row_directions)(
+        pressure, problem.h, rate, grid, omega_sum, state.viscosity, index)
+    directions = _velocity_directions(film, shape, tilt)
+    n_bore = right.shape[0]
+    right = np.concatenate([right] + [-_imbalance(pressure, problem.h, dh, dh_rate, grid,
+                                                   omega_sum, state.viscosity)[nodes][None]
+                                      for dh, dh_rate in directions])
+    solved = _solve(matrix, right, many=nodal.ndim == 1)
     w_x, w_y = film.force_weights
-    force = -np.stack([np.einsum("qik,ik->q", d_pressure, w_x),
-                       np.einsum("qik,ik->q", d_pressure, w_y)])
-    if nodal.ndim == 1:
-        nodal_response = (d_pressure.reshape(len(d_pressure), -1) * nodal[None, :]).T
-    else:
-        nodal_response = np.einsum("qjk,jk->jq", d_pressure, nodal)
-    response = FilmResponse(nodal_response[:, :n_bore], nodal_response[:, n_bore:],
+    force = -np.stack([solved @ w_x[nodes], solved @ w_y[nodes]])
+    response = FilmResponse(*_split(_nodal_response(solved, nodal, nodes, shape), n_bore),
                             force[:, :n_bore], force[:, n_bore:])
     if tilt is None:
         return response
     m_x, m_y = film.moment_weights
-    moment = -np.stack([np.einsum("qik,ik->q", d_pressure, m_x),
-                        np.einsum("qik,ik->q", d_pressure, m_y)])
+    moment = -np.stack([solved @ m_x[nodes], solved @ m_y[nodes]])
     return replace(response, moment_by_bore=moment[:, :n_bore],
                    moment_by_velocity=moment[:, n_bore:])
+
+
+def _solve(matrix, right: np.ndarray, many: bool) -> np.ndarray:
+    """∂p_A/∂q (n_q, n_A) [Pa per unit q] of K_AA ∂p_A/∂q = −r_q for the rows of ``right``
+    (−r_q, (n_q, n_A)); ``many``: directions of single film nodes."""
+    if many and right.shape[0] > right.shape[1]:
+        # more directions than active nodes (a node per film node): one dense LU and one
+        # blocked solve, 3x faster than as many sparse back-substitutions
+        return lu_solve(lu_factor(matrix.toarray()), right.T).T
+    return ManyRightHandSides(matrix, "MMD_AT_PLUS_A").solve_rows(right)  # K_AA symmetric
+
+
+def _nodal_response(solved: np.ndarray, nodal: np.ndarray, nodes, shape) -> np.ndarray:
+    """∂f/∂q (n_f, n_q) of the nodal loads: per film row (``nodal`` W (n_θ, n_z + 1)) or
+    per film node (w flattened row-major) [N per unit q]."""
+    if nodal.ndim == 1:
+        flat = np.ravel_multi_index(nodes, shape)
+        out = np.zeros((nodal.size, solved.shape[0]))
+        out[flat] = (solved * nodal[flat]).T
+        return out
+    rows = coo_matrix((nodal[nodes], (nodes[0], np.arange(nodes[0].size))),
+                      shape=(shape[0], nodes[0].size)).tocsr()
+    return np.asarray(rows @ solved.T)
+
+
+def _split(nodal_response: np.ndarray, n_bore: int) -> tuple[np.ndarray, np.ndarray]:
+    return nodal_response[:, :n_bore], nodal_response[:, n_bore:]
 
 
 def _velocity_directions(film: Any, shape: tuple[int, int], tilt: tuple[float, float] | None
@@ -117,22 +130,27 @@ def _velocity_directions(film: Any, shape: tuple[int, int], tilt: tuple[float, f
     return out
 
 
-def _row_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> np.ndarray:
-    """∂r/∂u_j (n_bore, n_θ, n_z + 1) of whole film rows [Pa m^3]."""
+def _row_directions(pressure, h, rate, grid, omega_sum, viscosity, index) -> np.ndarray:
+    """−∂r_A/∂u_j (n_θ, n_A) of whole film rows at the active nodes (``index``: a node's
+    place among them, −1 where not active) [Pa m^3]."""
     n_theta = pressure.shape[0]
     rows = bore_row_imbalance(pressure, h, rate, grid.radius, grid.d_theta, grid.d_z,
                               omega_sum, viscosity)
-    imbalance = np.zeros((n_bore,) + pressure.shape)
-    bore = np.arange(n_bore)
+    right = np.zeros((n_theta, int(index.max()) + 1))
+    bore = np.arange(n_theta)
     for shift in range(3):
-        imbalance[bore, (bore - 1 + shift) % n_theta, :] = rows[:, shift, :]
-    return imbalance
+        place = index[(bore - 1 + shift) % n_theta]
+        keep = place >= 0
+        right[np.broadcast_to(bore[:, None], place.shape)[keep], place[keep]] = \
+            -rows[:, shift, :][keep]
+    return right
 
 
-def _node_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> np.ndarray:
-    """∂r/∂u_jk (n_bore = n_θ (n_z + 1), n_θ, n_z + 1) of single film nodes, row-major
-    [Pa m^3]."""
+def _node_directions(pressure, h, rate, grid, omega_sum, viscosity, index) -> np.ndarray:
+    """−∂r_A/∂u_jk (n_θ (n_z + 1), n_A) of single film nodes, row-major, at the active nodes
+    (``index`` as in :func:`_row_directions`) [Pa m^3]."""
     n_theta, n_nodes = pressure.shape
+    n_bore = pressure.size
     stencil = bore_node_imbalance(pressure, h, rate, grid.radius, grid.d_theta, grid.d_z,
                                   omega_sum, viscosity)
     imbalance = np.zeros((n_bore, n_theta, n_nodes))
@@ -144,7 +162,8 @@ def _node_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> n
     low, high = k > 0, k < n_nodes - 1
     np.add.at(imbalance, (node[low], j[low], k[low] - 1), stencil[j[low], k[low], 3])
     np.add.at(imbalance, (node[high], j[high], k[high] + 1), stencil[j[high], k[high], 4])
-    return imbalance
+    active = index >= 0
+    return -imbalance[:, active]
 
 
 def _imbalance(pressure, h, dh, dh_rate, grid, omega_sum, viscosity) -> np.ndarray:
