@@ -26,9 +26,12 @@ class ThermalMapsResults:
     to_oil, to_journal, to_shell : ndarray  Heat convected by the oil (out − in) and
         conducted into the journal and the shell at each instant [W] (k,).
     to_volume : ndarray  Heat the film's own volume change takes at each instant,
-        ρc_p Σ A ∂h/∂t T (< 0: squeezed-out oil gives up heat it held) [W] (k,); with the
-        three above it sums to ``generated``.
+        ρc_p Σ A ∂h/∂t (T − T_0) (< 0: squeezed-out oil gives up heat it held) [W] (k,);
+        with the three above it sums to ``generated`` (oil and volume counted above the
+        supply temperature).
     friction_power : ndarray  Friction power of the film at each map's row [W] (k,).
+    squeeze_share : ndarray  Share of the film area squeezed out faster than oil flows in
+        (there the quasi-steady temperature is too high) [-] (k,).
     """
 
     requested_deg: np.ndarray
@@ -44,6 +47,7 @@ class ThermalMapsResults:
     to_shell: np.ndarray
     to_volume: np.ndarray
     friction_power: np.ndarray
+    squeeze_share: np.ndarray
 
     def hottest(self, k: int) -> tuple[float, float, float]:
         """(largest film temperature of map ``k`` [°C], its shell angle θ [rad], axial
@@ -73,7 +77,8 @@ class ThermalMapsResults:
                 "heat_to_journal_W": float(self.to_journal[k]),
                 "heat_to_shell_W": float(self.to_shell[k]),
                 "heat_to_volume_change_W": float(self.to_volume[k]),
-                "friction_power_W": float(self.friction_power[k])})
+                "friction_power_W": float(self.friction_power[k]),
+                "squeeze_dominated_area_share": float(self.squeeze_share[k])})
         return items
 
     def table(self) -> dict[str, np.ndarray]:

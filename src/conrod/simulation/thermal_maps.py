@@ -72,7 +72,8 @@ def solve_maps(thermal: ThermalFilmOrbit, angles: np.ndarray, heat_capacity: flo
                          shell_temperature=film.shell_temperature)
     rows = map_rows(np.asarray(cycle.crank_angle_deg), angles,
                     float(np.degrees(problem.loads.cycle)))
-    answers = [_map_at(problem, cycle, int(i), heat_capacity, supply, walls) for i in rows]
+    answers, shares = zip(*(_map_at(problem, cycle, int(i), heat_capacity, supply, walls)
+                            for i in rows), strict=True)
     return ThermalMapsResults(
         requested_deg=angles, crank_angle_deg=np.asarray(cycle.crank_angle_deg)[rows],
         temperature=np.array([a.temperature for a in answers]),
@@ -84,17 +85,32 @@ def solve_maps(thermal: ThermalFilmOrbit, angles: np.ndarray, heat_capacity: flo
         to_journal=np.array([a.to_journal for a in answers]),
         to_shell=np.array([a.to_shell for a in answers]),
         to_volume=np.array([a.to_volume for a in answers]),
-        friction_power=np.asarray(cycle.friction_power)[rows])
+        friction_power=np.asarray(cycle.friction_power)[rows],
+        squeeze_share=np.array(shares))
 
 
 def _map_at(problem: Any, cycle: Any, row: int, heat_capacity: float, supply: float,
-            walls: ThermalWalls) -> Any:
+            walls: ThermalWalls) -> tuple[Any, float]:
     """The energy answer (:class:`~conrod.film.thermal.energy.FilmTemperature`) of output row
-    ``row``: one film solve, one energy solve."""
+    ``row`` — one film solve, one energy solve — and its squeeze share
+    (:func:`squeeze_share`)."""
     state = problem.row_state(cycle, row)
     flows, _ = problem.film.film_flows(state, problem.film.initial_memory())
     volume_rate = flows.area * thickness_rate(state, *problem.film.grid())
-    return solve_energy(flows, heat_capacity, supply, walls, volume_rate)
+    answer = solve_energy(flows, heat_capacity, supply, walls, volume_rate)
+    return answer, squeeze_share(flows, volume_rate)
+
+
+def squeeze_share(flows: Any, volume_rate: np.ndarray) -> float:
+    """Share of the film area whose oil is squeezed out faster than oil flows in through
+    the cell's faces, −A ∂h/∂t > Σ inflow [-]: there the oil stays longer than a transit
+    and the quasi-steady temperature is too high (docs/thermal.md)."""
+    east, north = flows.east, flows.north
+    inflow = np.maximum(np.roll(east, 1, axis=0), 0.0) + np.maximum(-east, 0.0)
+    inflow += np.maximum(-north, 0.0)
+    inflow[:, 1:] += np.maximum(north[:, :-1], 0.0)
+    squeezed = -volume_rate > inflow
+    return float(flows.area[squeezed].sum() / flows.area.sum())
 
 
 def thickness_rate(state: FilmState, theta: np.ndarray, z: np.ndarray) -> np.ndarray:

@@ -29,9 +29,11 @@ A ∂h/∂t then enters the balance as oil of the cell's temperature — squeeze
 film closes, taken up where it opens — and only the rest of the net outflow,
 O + A ∂h/∂t, is fed from outside at T_0 or lost at T_P: in a full film this is the
 advective form q·∇T of the equation, so squeezed oil is never taken for fresh supply oil.
-The heat the volume change carries, ρc_p Σ A ∂h/∂t T_P, is reported on its own (``to_volume``:
-generated = to oil + to journal + to shell + to volume); the sum does not depend on the
-temperature scale, since Σ(S⁺ − S⁻) = Σ A ∂h/∂t.
+The heat the volume change carries, ρc_p Σ A ∂h/∂t (T_P − T_0), is reported on its own
+(``to_volume``: generated = to oil + to journal + to shell + to volume, both counted above
+the supply temperature, since Σ(S⁺ − S⁻) = Σ A ∂h/∂t). Where the film is squeezed faster
+than oil flows through a cell, the oil stays longer than the transit time and the
+quasi-steady field overstates its temperature (docs/thermal.md).
 
 Conservation: summing every row, the face terms cancel, so (convected out − convected in)
 + to journal + to shell = generated, to the round-off of the direct solve.
@@ -80,8 +82,10 @@ class FilmTemperature:
     generated : float  Viscous dissipation of the film [W].
     to_oil : float  Heat convected away by the oil (out − in) [W].
     to_journal, to_shell : float  Heat conducted into the journal and the shell [W].
-    to_volume : float  Heat the film's own volume change takes, ρc_p Σ A ∂h/∂t T_P (< 0:
-        oil squeezed out gives up heat it held) [W]; 0 for a cycle mean.
+    to_volume : float  Heat the film's own volume change takes, ρc_p Σ A ∂h/∂t (T_P − T_0)
+        (< 0: the oil squeezed out gives up heat it held) [W]; 0 for a cycle mean (then
+        ``to_oil`` is ρc_p (Σ S⁻ T_P − Σ S⁺ T_0); with a volume change ρc_p Σ S⁻ (T_P − T_0),
+        the same sum).
     """
 
     temperature: np.ndarray
@@ -194,10 +198,14 @@ def _answer(flows: FilmFlows, solution: np.ndarray, conductance: np.ndarray,
     if not conductance.any():  # no wall heat path: the walls at the film's mean
         t_journal = t_shell = float(np.sum(temperature * flows.area) / flows.area.sum())
     outflow = _external_outflow(flows, volume_rate)
-    to_oil = heat_capacity * float(np.sum(np.maximum(-outflow, 0.0) * temperature)
-                                   - np.sum(np.maximum(outflow, 0.0)) * supply_temperature)
-    to_volume = (0.0 if volume_rate is None  # the film's volume change, at its temperature
-                 else heat_capacity * float(np.sum(volume_rate * temperature)))
+    if volume_rate is None:
+        to_oil = heat_capacity * float(np.sum(np.maximum(-outflow, 0.0) * temperature)
+                                       - np.sum(np.maximum(outflow, 0.0)) * supply_temperature)
+        to_volume = 0.0
+    else:  # both above the supply temperature (their sum is the same on any scale)
+        rise = temperature - supply_temperature
+        to_oil = heat_capacity * float(np.sum(np.maximum(-outflow, 0.0) * rise))
+        to_volume = heat_capacity * float(np.sum(volume_rate * rise))
     to_journal = float(np.sum(conductance * (temperature - solution[-2])))
     to_shell = float(np.sum(conductance * (temperature - solution[-1])))
     return FilmTemperature(temperature, t_journal, t_shell, flows.generated_power, to_oil,
