@@ -11,14 +11,18 @@ codes (ROSS's own law, μ = a T^b fitted through two points, replaced by the sam
 through a subclass), ρ = 860 kg/m³, c_p = 2000 J/(kg K), supply at 90 °C, adiabatic walls
 in both (ROSS's model has no wall heat path; conrod: ``thermal_wall_coefficient = 0``).
 
-Two comparisons per load: isoviscous (μ at 90 °C in both: the hydrodynamic models alone)
-and thermal (μ(T) of the film's temperature field). conrod: ``[load]`` table constant over
-a 360° cycle, Reynolds film, periodic orbit settled to 1e-6 (a steady journal), the
-thermal film's energy equation of the cycle-mean flows — at a constant load the steady
-solution. ROSS: its equilibrium search (Nelder–Mead on the force residual, its own
-tolerance), its THD iteration (1 % on T, 0.5 K on the mixing temperature), its hot-oil
-carry-over factor at the groove set to conrod's flow-weighted mixing fraction of the same
-point (so that the two mix alike; conrod's fraction comes from its flows).
+Two comparisons per load: isoviscous (μ at 90 °C in both: the hydrodynamic models alone,
+and the energy equations on nearly the same flows) and thermal (μ(T) of the film's
+temperature field). conrod: ``[load]`` table constant over a 360° cycle, Reynolds film,
+periodic orbit settled to 1e-6 (a steady journal), the thermal film's energy equation of the
+cycle-mean flows — at a constant load the steady solution. ROSS: its equilibrium search
+(Nelder–Mead on the force residual, its own tolerance), its THD iteration (1 % on T). The
+two mix differently at the groove (ROSS: a given fraction of supply oil with the pad's mean
+outlet temperature; conrod: by the flows at the groove nodes), so ROSS is given conrod's
+temperature of the oil leaving the groove as its inlet temperature (groove factor 1,
+reference temperature = that temperature): both films start from the same oil. Last, the
+energy equations alone: conrod's equation with the oil its cavitated zone gains taken at the
+cell's temperature (ROSS's advective form) against ROSS with that variant's inlet.
 """
 
 from __future__ import annotations
@@ -33,6 +37,7 @@ from pathlib import Path
 import numpy as np
 
 from conrod.cases.case import Case
+from conrod.film.thermal.energy import ThermalWalls, solve_energy
 from conrod.io.atomic import write_text
 from conrod.simulation.simulation import Simulation
 from conrod.simulation.thermal_film_run import cycle_flows
@@ -101,7 +106,33 @@ def conrod_point(folder: Path, load: float, thermal: bool, grid: tuple[int, int]
             "land_inflow": float(np.sum(leaving)) * 6e4,
             "eps_spread": float(np.ptp(np.hypot(cycle.eccentricity_x, cycle.eccentricity_y))
                                 / CLEARANCE),
-            "thermal_converged": film.converged, "wall_s": wall}
+            "thermal_converged": film.converged, "wall_s": wall,
+            "advective": advective_variant(flows, row, simulation_capacity(folder, load))}
+
+
+def simulation_capacity(folder: Path, load: float) -> float:
+    """ρ c_p of the case at the supply temperature [J/(m³ K)]."""
+    lubricant = conrod_case(folder, load, False, GRID["ross"]).lubricant
+    return lubricant.density_at(SUPPLY) * lubricant.specific_heat
+
+
+def advective_variant(flows, row: int, heat_capacity: float) -> dict:
+    """What-if of conrod's energy equation on the same flows, adiabatic: the oil the
+    Swift–Stieber film gains outside the groove (where the full-film Couette flux of the
+    cavitated zone grows) taken at the cell's own temperature instead of the supply
+    temperature — the advective form ROSS solves. Entered as a volume change of minus that
+    gain (:func:`conrod.film.thermal.energy.solve_energy`): only the groove feeds oil at
+    T_0. Largest and mean temperature, temperature leaving the groove [°C]."""
+    gain = np.where(flows.supply, 0.0, np.maximum(flows.net_outflow(), 0.0))
+    answer = solve_energy(flows, heat_capacity, SUPPLY, ThermalWalls(0.0, 0.0, SUPPLY),
+                          volume_rate=-gain)
+    leaving = np.maximum(flows.east[row], 0.0)
+    weights = np.ones(answer.temperature.shape[1])
+    weights[[0, -1]] = 0.5
+    mean = float(np.sum(answer.temperature * weights) / (weights.sum()
+                                                          * answer.temperature.shape[0]))
+    return {"t_max_C": float(answer.temperature.max()), "t_mean_C": mean,
+            "inlet_C": float(np.sum(leaving * answer.temperature[row]) / np.sum(leaving))}
 
 
 def groove_exit_row(supply: np.ndarray) -> int:
@@ -214,7 +245,7 @@ def main() -> None:
              f"| load [N] | viscosity | quantity | conrod {coarse[0]}×{coarse[1]} | conrod "
              f"{fine[0]}×{fine[1]} | ROSS {coarse[0]}×{coarse[1]} | conrod {coarse[0]}×"
              f"{coarse[1]} vs ROSS |", "| --- | --- | --- | --- | --- | --- | --- |"]
-    notes = []
+    notes, advective = [], []
     for load in LOADS:
         for thermal in (False, True):
             mine = conrod_point(Path(tempfile.mkdtemp()), load, thermal, coarse)
@@ -228,6 +259,14 @@ def main() -> None:
                              "energy equation: its equilibrium search reached ε = 1) |")
                 continue
             lines += rows_of(load, label, mine, finer, theirs)
+            if not thermal:
+                variant = mine["advective"]
+                alike = ross_point(load, False, variant["inlet_C"], guess)
+                advective.append(
+                    f"| {load:g} | {variant['inlet_C']:.1f} | {variant['t_max_C']:.1f} | "
+                    f"{alike['t_max_C']:.1f} | {variant['t_max_C'] - alike['t_max_C']:+.1f} K "
+                    f"| {variant['t_mean_C']:.1f} | {alike['t_mean_C']:.1f} | "
+                    f"{variant['t_mean_C'] - alike['t_mean_C']:+.1f} K |")
             notes.append(
                 f"| {load:g} | {label} | {mine['inlet_C']:.2f} | {mine['land_inflow']:.3f} | "
                 f"{mine['fed_groove']:.3f} / {mine['fed_elsewhere']:.3f} | "
@@ -239,6 +278,13 @@ def main() -> None:
               "cavitated zone [l/min] | conrod ε spread over the cycle [-] | conrod "
               "thermal converged | ROSS force residual [N] | conrod wall [s] | ROSS wall [s] |",
               "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"] + notes
+    lines += ["", "Isoviscous, the energy equations alone: conrod's equation on its own "
+              f"{coarse[0]} × {coarse[1]} flows with the oil its cavitated zone gains taken at "
+              "the cell's temperature (only the groove feeds supply oil — ROSS's advective "
+              "form), ROSS with that variant's groove exit temperature as its inlet.", "",
+              "| load [N] | inlet [°C] | T_max conrod variant [°C] | T_max ROSS [°C] | "
+              "difference | T_mean conrod variant [°C] | T_mean ROSS [°C] | difference |",
+              "| --- | --- | --- | --- | --- | --- | --- | --- |"] + advective
     write_text(OUTPUT, "\n".join(lines) + "\n")
     print("\n".join(lines))
 

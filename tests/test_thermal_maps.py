@@ -143,6 +143,8 @@ def test_the_run_writes_the_maps_table_summary_and_figure(tmp_path):
     items = summary["thermal_film"]["maps"]
     assert [item["crank_angle_deg"] for item in items] == maps.crank_angle_deg.tolist()
     assert items[0]["max_film_temperature_C"] == pytest.approx(maps.hottest(0)[0])
+    heat = items[0]["heat_to_oil_W"] + items[0]["heat_to_journal_W"] + items[0]["heat_to_shell_W"]
+    assert items[0]["generated_power_W"] == pytest.approx(heat, rel=1e-9)
     table = (tmp_path / "out" / "thermal_maps.csv").read_text().splitlines()
     assert table[0] == "crank_angle_deg,theta_deg,z_mm,temperature_C"
     assert len(table) == 1 + maps.crank_angle_deg.size * 16 * 5

@@ -62,7 +62,9 @@ class ThermalMapsResults:
                                           + self.to_shell[k] + self.to_volume[k]))
 
     def summary_items(self) -> list[dict]:
-        """summary.json 'thermal_film' 'maps': one item per map (units in the names)."""
+        """summary.json 'thermal_film' 'maps': one item per map (units in the names); the
+        heat to the oil includes what the film's volume change takes (given on its own), so
+        that oil + journal + shell is the generated power."""
         items = []
         for k in range(self.requested_deg.size):
             t, theta, z = self.hottest(k)
@@ -73,10 +75,10 @@ class ThermalMapsResults:
                 "max_film_temperature_theta_deg": math.degrees(theta),
                 "max_film_temperature_z_mm": z * 1e3,
                 "generated_power_W": float(self.generated[k]),
-                "heat_to_oil_W": float(self.to_oil[k]),
+                "heat_to_oil_W": float(self.to_oil[k] + self.to_volume[k]),
+                "heat_to_oil_by_volume_change_W": float(self.to_volume[k]),
                 "heat_to_journal_W": float(self.to_journal[k]),
                 "heat_to_shell_W": float(self.to_shell[k]),
-                "heat_to_volume_change_W": float(self.to_volume[k]),
                 "friction_power_W": float(self.friction_power[k]),
                 "squeeze_dominated_area_share": float(self.squeeze_share[k])})
         return items
