@@ -5,7 +5,7 @@ Only ``film`` is a fixed key; the rest is documented in ``docs/orbit.md``.
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -142,6 +142,12 @@ class SolverSection(Section):
         default=None, ge=-40.0, le=300.0,
         description="thermal = 'film': journal temperature; None: adiabatic journal (no net "
         "heat over the cycle) [°C]",
+    )
+    thermal_map_angles: list[Annotated[float, Field(ge=0.0, le=720.0)]] | None = Field(
+        default=None, max_length=12,
+        description="thermal = 'film': crank angles of the quasi-steady temperature maps "
+        "(walls held at their cycle-mean temperatures, docs/thermal.md); None: the angles of "
+        "the smallest h_min and of the largest p_max; an empty list: no maps [deg]",
     )
 
     @model_validator(mode="after")

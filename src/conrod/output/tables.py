@@ -80,6 +80,8 @@ def summary_items(results: RunResults) -> dict:
         items.update(results.contact.summary_items())
     if getattr(results, "thermal_film", None) is not None:  # the film's temperature field
         items.update(results.thermal_film.summary_items())
+    if getattr(results, "thermal_maps", None) is not None:  # maps at chosen crank angles
+        items.setdefault("thermal_film", {})["maps"] = results.thermal_maps.summary_items()
     if results.signoff is not None:
         items.update(results.signoff.flat_items())  # scalars: the sweep table's columns
         items["signoff"] = results.signoff.as_json_items()

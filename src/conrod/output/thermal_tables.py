@@ -9,6 +9,7 @@ import importlib
 
 from conrod.output.registry import FigureSpec, TableSpec, figures, tables
 from conrod.results.thermal import ThermalFilmResults
+from conrod.results.thermal_maps import ThermalMapsResults
 
 
 @tables.register
@@ -32,7 +33,31 @@ def _thermal_figures(thermal: ThermalFilmResults) -> tuple[FigureSpec, ...]:
                        "heat flows [W] in the title.", draw),)
 
 
+@tables.register
+def _thermal_map_tables(maps: ThermalMapsResults) -> tuple[TableSpec, ...]:
+    return (TableSpec("thermal_maps.csv", "Film temperature maps at chosen crank angles",
+                      "Quasi-steady film temperature [°C] at every film grid node, by crank "
+                      "angle [deg] (the output row nearest each asked angle), shell angle θ "
+                      "[deg] and axial position z [mm], the walls held at their cycle-mean "
+                      "temperatures; the hottest point and heat flows [W] of each map are in "
+                      "summary.json 'thermal_film' 'maps'.", maps.table),)
+
+
+@figures.register
+def _thermal_map_figures(maps: ThermalMapsResults) -> tuple[FigureSpec, ...]:
+    def draw():
+        return importlib.import_module("conrod.plotting.thermal_map_plots").plot_temperature_maps(
+            maps)
+
+    return (FigureSpec("temperature_maps.png", "Film temperature maps at chosen crank angles",
+                       "Quasi-steady film temperature [°C] over shell angle θ [deg] and axial "
+                       "position z [mm] at each chosen crank angle [deg], one colour scale, "
+                       "the hottest point of each marked; walls at their cycle-mean "
+                       "temperatures.", draw),)
+
+
 def thermal_outputs(results, registry) -> tuple:
-    """The tables or figures (``registry``) of a run's temperature field; () without one."""
-    thermal = getattr(results, "thermal_film", None)
-    return () if thermal is None else registry(thermal)
+    """The tables or figures (``registry``) of a run's temperature field and of its maps at
+    chosen crank angles; () without them."""
+    parts = (getattr(results, "thermal_film", None), getattr(results, "thermal_maps", None))
+    return tuple(spec for part in parts if part is not None for spec in registry(part))

@@ -266,6 +266,10 @@ class RunResults:
     thermal_film: Any = None
     """The film's temperature field and heat flows with ``[solver] thermal = "film"``
     (:class:`conrod.results.thermal.ThermalFilmResults`); None: the global heat balance."""
+    thermal_maps: Any = None
+    """Quasi-steady film temperature maps at chosen crank angles with the walls at their
+    cycle-mean temperatures (:class:`conrod.results.thermal_maps.ThermalMapsResults`); None:
+    no thermal film or no angles."""
     headline_extra: dict[str, str] | None = None
     """Further headline lines (label → text) added by other analyses, e.g. an elastic
     comparison; printed after the standard lines [-]."""

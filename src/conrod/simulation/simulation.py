@@ -53,7 +53,7 @@ from conrod.simulation.orbit_outputs import (
     previous_cycle,
     rigid_film_thickness,
 )
-from conrod.simulation.thermal_film_run import thermal_orbit
+from conrod.simulation.thermal_maps import thermal_maps, thermal_orbit
 
 DEFAULT_TABLE_LOAD_MASS = 1.0
 """Moving mass for table loads when ``[solver] mass_x/mass_y`` are not given [kg]."""
@@ -292,7 +292,7 @@ class Simulation:
             previous_cycle_eccentricity=previous_cycle(orbit), contact=contact,
             film_thickness=thickness, film_angles=angles,
             contact_radius=problem.contact_radius, case_record=self.case_record(),
-            thermal_film=getattr(thermal, "film", None),
+            thermal_film=getattr(thermal, "film", None), thermal_maps=thermal_maps(self, thermal),
         )
         warnings = (summary.warnings  # check_run: or ConvergenceError
                     + tuple(check_run(results, self.case, problem.contact_radius))

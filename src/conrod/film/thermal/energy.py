@@ -22,6 +22,19 @@ T_s (a thin steel-backed shell conducting around its circumference), losing
 H_h A_tot (T_s − T_h) to the housing at T_h (H_h = 0: adiabatic). The walls with H = 0 take
 no heat (their temperature is then reported as the film's mean).
 
+Quasi-steady: the field at one instant of the cycle with the walls held at their
+cycle-mean temperatures (the walls' time constants are long against a cycle, the oil's
+transit time through the film short, so h ∂T/∂t is dropped). The film's own volume change
+A ∂h/∂t then enters the balance as oil of the cell's temperature — squeezed out where the
+film closes, taken up where it opens — and only the rest of the net outflow,
+O + A ∂h/∂t, is fed from outside at T_0 or lost at T_P: in a full film this is the
+advective form q·∇T of the equation, so squeezed oil is never taken for fresh supply oil.
+The heat the volume change carries, ρc_p Σ A ∂h/∂t (T_P − T_0), is reported on its own
+(``to_volume``: generated = to oil + to journal + to shell + to volume, both counted above
+the supply temperature, since Σ(S⁺ − S⁻) = Σ A ∂h/∂t). Where the film is squeezed faster
+than oil flows through a cell, the oil stays longer than the transit time and the
+quasi-steady field overstates its temperature (docs/thermal.md).
+
 Conservation: summing every row, the face terms cancel, so (convected out − convected in)
 + to journal + to shell = generated, to the round-off of the direct solve.
 """
@@ -49,12 +62,15 @@ class ThermalWalls:
     housing_temperature : float  Housing temperature T_h [°C].
     journal_temperature : float or None  Given journal temperature [°C]; None: adiabatic
         over the cycle.
+    shell_temperature : float or None  Given shell temperature [°C] (the housing path is
+        then unused); None: from the shell's balance with the film and the housing.
     """
 
     film_coefficient: float
     housing_coefficient: float
     housing_temperature: float
     journal_temperature: float | None = None
+    shell_temperature: float | None = None
 
 
 @dataclass(frozen=True)
@@ -66,6 +82,10 @@ class FilmTemperature:
     generated : float  Viscous dissipation of the film [W].
     to_oil : float  Heat convected away by the oil (out − in) [W].
     to_journal, to_shell : float  Heat conducted into the journal and the shell [W].
+    to_volume : float  Heat the film's own volume change takes, ρc_p Σ A ∂h/∂t (T_P − T_0)
+        (< 0: the oil squeezed out gives up heat it held) [W]; 0 for a cycle mean (then
+        ``to_oil`` is ρc_p (Σ S⁻ T_P − Σ S⁺ T_0); with a volume change ρc_p Σ S⁻ (T_P − T_0),
+        the same sum).
     """
 
     temperature: np.ndarray
@@ -75,22 +95,28 @@ class FilmTemperature:
     to_oil: float
     to_journal: float
     to_shell: float
+    to_volume: float = 0.0
 
     @property
     def imbalance(self) -> float:
-        """generated − (to oil + to journal + to shell) [W] (round-off)."""
-        return self.generated - (self.to_oil + self.to_journal + self.to_shell)
+        """generated − (to oil + to journal + to shell + to volume) [W] (round-off)."""
+        return self.generated - (self.to_oil + self.to_journal + self.to_shell
+                                 + self.to_volume)
 
 
 def solve_energy(flows: FilmFlows, heat_capacity: float, supply_temperature: float,
-                 walls: ThermalWalls) -> FilmTemperature:
+                 walls: ThermalWalls, volume_rate: np.ndarray | None = None
+                 ) -> FilmTemperature:
     """T(θ, z) [°C] and the wall temperatures of the steady energy equation (module
     docstring) for the cycle-mean ``flows``, ρc_p = ``heat_capacity`` [J/(m³ K)] and the
-    supply temperature T_0 [°C]. :class:`ConvergenceError` when it has no finite answer."""
+    supply temperature T_0 [°C]. ``volume_rate``: A ∂h/∂t per control volume [m³/s] of an
+    instantaneous (quasi-steady) film, whose volume change carries the cell's own oil
+    (module docstring, *Quasi-steady*); None: 0 (a cycle mean). :class:`ConvergenceError`
+    when it has no finite answer."""
     n, m = flows.area.shape
     index = np.arange(n * m).reshape(n, m)
     entries: list[tuple] = []
-    rhs = _convection(flows, heat_capacity, supply_temperature, index, entries)
+    rhs = _convection(flows, heat_capacity, supply_temperature, index, entries, volume_rate)
     conductance = walls.film_coefficient * flows.area
     extra = _walls(flows, walls, conductance, supply_temperature, index, entries)
     rows, cols, vals = (np.concatenate([np.ravel(e[k]) for e in entries]) for k in range(3))
@@ -101,11 +127,13 @@ def solve_energy(flows: FilmFlows, heat_capacity: float, supply_temperature: flo
         raise ConvergenceError("film energy equation: no finite temperature (a film region "
                                "without through-flow and without a heat path to the walls)",
                                where="thermal film")
-    return _answer(flows, solution, conductance, heat_capacity, supply_temperature)
+    return _answer(flows, solution, conductance, heat_capacity, supply_temperature,
+                   volume_rate)
 
 
 def _convection(flows: FilmFlows, heat_capacity: float, supply_temperature: float,
-                index: np.ndarray, entries: list) -> np.ndarray:
+                index: np.ndarray, entries: list, volume_rate: np.ndarray | None
+                ) -> np.ndarray:
     """Upwind convection entries (row, column, value [W/K]) appended to ``entries``, and the
     right-hand side: dissipation and the heat of the oil fed at T_0 [W]."""
     for flux, neighbour in ((flows.east, np.roll(index, -1, axis=0)),
@@ -115,8 +143,10 @@ def _convection(flows: FilmFlows, heat_capacity: float, supply_temperature: floa
         backward = heat_capacity * np.maximum(-flux, 0.0)
         entries += [(own, own, forward), (neighbour, own, -forward),  # leaves P at T_P
                     (neighbour, neighbour, backward), (own, neighbour, -backward)]
-    outflow = flows.net_outflow()
+    outflow = _external_outflow(flows, volume_rate)
     entries.append((index, index, heat_capacity * np.maximum(-outflow, 0.0)))
+    if volume_rate is not None:  # the film's own volume change at T_P
+        entries.append((index, index, heat_capacity * volume_rate))
     return flows.dissipation + heat_capacity * np.maximum(outflow, 0.0) * supply_temperature
 
 
@@ -138,7 +168,10 @@ def _walls(flows: FilmFlows, walls: ThermalWalls, conductance: np.ndarray,
         entries.append((journal, journal, 1.0))
         if walls.journal_temperature is not None:
             extra[0] = walls.journal_temperature
-    if total > 0.0:
+    if total > 0.0 and walls.shell_temperature is not None:  # given shell temperature
+        entries.append((shell, shell, 1.0))
+        extra[1] = walls.shell_temperature
+    elif total > 0.0:
         housing = walls.housing_coefficient * float(flows.area.sum())
         entries += [(np.full(index.shape, shell), index, -conductance),
                     (shell, shell, total + housing)]
@@ -148,18 +181,32 @@ def _walls(flows: FilmFlows, walls: ThermalWalls, conductance: np.ndarray,
     return extra
 
 
+def _external_outflow(flows: FilmFlows, volume_rate: np.ndarray | None) -> np.ndarray:
+    """Net outflow through the faces not made up by the film's own volume change, O + A ∂h/∂t:
+    > 0 fed from outside at T_0, < 0 lost at T_P [m³/s]."""
+    outflow = flows.net_outflow()
+    return outflow if volume_rate is None else outflow + volume_rate
+
+
 def _answer(flows: FilmFlows, solution: np.ndarray, conductance: np.ndarray,
-            heat_capacity: float, supply_temperature: float) -> FilmTemperature:
+            heat_capacity: float, supply_temperature: float,
+            volume_rate: np.ndarray | None = None) -> FilmTemperature:
     """The temperatures and heat flows of a solution vector [°C, W]."""
     n, m = flows.area.shape
     temperature = solution[: n * m].reshape(n, m)
     t_journal, t_shell = float(solution[-2]), float(solution[-1])
     if not conductance.any():  # no wall heat path: the walls at the film's mean
         t_journal = t_shell = float(np.sum(temperature * flows.area) / flows.area.sum())
-    outflow = flows.net_outflow()
-    to_oil = heat_capacity * float(np.sum(np.maximum(-outflow, 0.0) * temperature)
-                                   - np.sum(np.maximum(outflow, 0.0)) * supply_temperature)
+    outflow = _external_outflow(flows, volume_rate)
+    if volume_rate is None:
+        to_oil = heat_capacity * float(np.sum(np.maximum(-outflow, 0.0) * temperature)
+                                       - np.sum(np.maximum(outflow, 0.0)) * supply_temperature)
+        to_volume = 0.0
+    else:  # both above the supply temperature (their sum is the same on any scale)
+        rise = temperature - supply_temperature
+        to_oil = heat_capacity * float(np.sum(np.maximum(-outflow, 0.0) * rise))
+        to_volume = heat_capacity * float(np.sum(volume_rate * rise))
     to_journal = float(np.sum(conductance * (temperature - solution[-2])))
     to_shell = float(np.sum(conductance * (temperature - solution[-1])))
     return FilmTemperature(temperature, t_journal, t_shell, flows.generated_power, to_oil,
-                           to_journal, to_shell)
+                           to_journal, to_shell, to_volume)
