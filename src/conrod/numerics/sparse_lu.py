@@ -32,10 +32,28 @@ class ManyRightHandSides:
 
     def solve_rows(self, right: np.ndarray) -> np.ndarray:
         """X (m, n) with A X[q] = B[q] for the rows of ``right`` B (m, n) [unit of B / A]."""
-        work = np.empty((right.shape[1], right.shape[0]))
-        work[self.perm_r] = right.T
-        _triangular_solves(*self.lower, *self.upper, work)
-        return np.ascontiguousarray(work[self.perm_c].T)
+        return _solve_rows(*self.lower, *self.upper, self.perm_r, self.perm_c,
+                           np.ascontiguousarray(right, dtype=float))
+
+
+@nb.njit(cache=True)
+def _solve_rows(l_indptr, l_indices, l_data, u_indptr, u_indices, u_data, perm_r, perm_c,
+                right):
+    """X (m, n) of the rows of B = ``right``: L U (P_c^T x) = P_r b for each row, the rows
+    side by side in one work array (n, m)."""
+    m, n = right.shape
+    work = np.empty((n, m))
+    for i in range(n):
+        row = perm_r[i]
+        for q in range(m):
+            work[row, q] = right[q, i]
+    _triangular_solves(l_indptr, l_indices, l_data, u_indptr, u_indices, u_data, work)
+    out = np.empty((m, n))
+    for i in range(n):
+        row = perm_c[i]
+        for q in range(m):
+            out[q, i] = work[row, q]
+    return out
 
 
 @nb.njit(cache=True)
