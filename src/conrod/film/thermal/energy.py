@@ -11,23 +11,16 @@ face fluxes Q [m³/s], the volumetric heat capacity ρc_p [J/(m³ K)], the dissi
 each face carrying the temperature of the node it leaves (upwind, so reverse flow and the
 cavitated zone are taken as the flux goes), S⁺ = max(O, 0) and S⁻ = max(−O, 0) with O the
 net outflow through the faces. Mixing model: oil that enters a control volume from outside
-the film (S⁺: the supply at grooves and holes, oil drawn in at an edge where the axial flow
-points into the film) enters at the supply temperature T_0 and mixes completely with the
-recirculating oil that flows into that cell (at a groove the classical hot-oil carry-over
-mixing (Q_rec T_rec + Q_s T_0)/(Q_rec + Q_s)); oil that leaves (S⁻: side leakage, oil lost
-in the cavitated zone) takes the cell's temperature. The oil a Swift–Stieber film gains
-anywhere else — in its cavitated zone, where the full-gap Couette flux U h/2 grows as the
-gap opens — is not oil from outside: the film model does not conserve mass there, the
-ruptured film carries streamers of its own oil. That gain G = max(O, 0) of the other cells
-is taken at the cell's own temperature (the advective form, as in the thermal bearing codes
-that write the equation as q·∇T); taken as fresh supply oil it would cool the film by oil
-that does not exist — on the plain bearings of benchmarks/ross_thd_comparison.md twice the
-flow that enters the loaded land, 15–28 K cooler at the hottest point. Its heat is counted
-with the oil's, ρc_p Σ (S⁻ − G)(T_P − T_0). Walls: the journal turns past the whole film, so
-it has one temperature T_j — adiabatic over the cycle (Σ H_j A (T − T_j) = 0) or given; the
-shell has one temperature T_s (a thin steel-backed shell conducting around its
-circumference), losing H_h A_tot (T_s − T_h) to the housing at T_h (H_h = 0: adiabatic). The
-walls with H = 0 take no heat (their temperature is then reported as the film's mean).
+the film (S⁺: the supply at grooves and holes, oil drawn in at an edge, or the oil the
+Swift–Stieber cavitation model adds where the film reforms) enters at the supply
+temperature T_0 and mixes completely with the recirculating oil that flows into that cell
+(at a groove the classical hot-oil carry-over mixing (Q_rec T_rec + Q_s T_0)/(Q_rec + Q_s));
+oil that leaves (S⁻: side leakage, oil lost in the cavitated zone) takes the cell's
+temperature. Walls: the journal turns past the whole film, so it has one temperature T_j —
+adiabatic over the cycle (Σ H_j A (T − T_j) = 0) or given; the shell has one temperature
+T_s (a thin steel-backed shell conducting around its circumference), losing
+H_h A_tot (T_s − T_h) to the housing at T_h (H_h = 0: adiabatic). The walls with H = 0 take
+no heat (their temperature is then reported as the film's mean).
 
 Quasi-steady: the field at one instant of the cycle with the walls held at their
 cycle-mean temperatures (the walls' time constants are long against a cycle, the oil's
@@ -123,9 +116,7 @@ def solve_energy(flows: FilmFlows, heat_capacity: float, supply_temperature: flo
     n, m = flows.area.shape
     index = np.arange(n * m).reshape(n, m)
     entries: list[tuple] = []
-    gain = film_gain(flows, volume_rate)
-    own = -gain if volume_rate is None else volume_rate - gain
-    rhs = _convection(flows, heat_capacity, supply_temperature, index, entries, own)
+    rhs = _convection(flows, heat_capacity, supply_temperature, index, entries, volume_rate)
     conductance = walls.film_coefficient * flows.area
     extra = _walls(flows, walls, conductance, supply_temperature, index, entries)
     rows, cols, vals = (np.concatenate([np.ravel(e[k]) for e in entries]) for k in range(3))
@@ -137,27 +128,14 @@ def solve_energy(flows: FilmFlows, heat_capacity: float, supply_temperature: flo
                                "without through-flow and without a heat path to the walls)",
                                where="thermal film")
     return _answer(flows, solution, conductance, heat_capacity, supply_temperature,
-                   volume_rate, gain)
-
-
-def film_gain(flows: FilmFlows, volume_rate: np.ndarray | None = None) -> np.ndarray:
-    """G: the oil the film model gains in a control volume that is neither a groove or hole
-    nor an edge cell fed through its axial face, net of the volume change ``volume_rate``
-    (module docstring, *Mixing model*) [m³/s]; taken at the cell's own temperature."""
-    outflow = _external_outflow(flows, volume_rate)
-    fed = np.array(flows.supply, dtype=bool)
-    if fed.shape[1] > 1:  # an axial grid: the edges
-        fed[:, 0] |= flows.north[:, 0] > 0.0  # z = 0 edge: oil flows from the edge inwards
-        fed[:, -1] |= flows.north[:, -2] < 0.0  # z = L edge
-    return np.where(fed, 0.0, np.maximum(outflow, 0.0))
+                   volume_rate)
 
 
 def _convection(flows: FilmFlows, heat_capacity: float, supply_temperature: float,
-                index: np.ndarray, entries: list, volume_rate: np.ndarray) -> np.ndarray:
+                index: np.ndarray, entries: list, volume_rate: np.ndarray | None
+                ) -> np.ndarray:
     """Upwind convection entries (row, column, value [W/K]) appended to ``entries``, and the
-    right-hand side: dissipation and the heat of the oil fed at T_0 [W]; ``volume_rate``:
-    the oil of the cell's own temperature taken up (> 0) or given off, the volume change
-    less the film's gain [m³/s]."""
+    right-hand side: dissipation and the heat of the oil fed at T_0 [W]."""
     for flux, neighbour in ((flows.east, np.roll(index, -1, axis=0)),
                             (flows.north[:, :-1], index[:, 1:])):
         own = index[:, : flux.shape[1]]
@@ -167,7 +145,8 @@ def _convection(flows: FilmFlows, heat_capacity: float, supply_temperature: floa
                     (neighbour, neighbour, backward), (own, neighbour, -backward)]
     outflow = _external_outflow(flows, volume_rate)
     entries.append((index, index, heat_capacity * np.maximum(-outflow, 0.0)))
-    entries.append((index, index, heat_capacity * volume_rate))  # the film's own oil at T_P
+    if volume_rate is not None:  # the film's own volume change at T_P
+        entries.append((index, index, heat_capacity * volume_rate))
     return flows.dissipation + heat_capacity * np.maximum(outflow, 0.0) * supply_temperature
 
 
@@ -211,21 +190,22 @@ def _external_outflow(flows: FilmFlows, volume_rate: np.ndarray | None) -> np.nd
 
 def _answer(flows: FilmFlows, solution: np.ndarray, conductance: np.ndarray,
             heat_capacity: float, supply_temperature: float,
-            volume_rate: np.ndarray | None, gain: np.ndarray) -> FilmTemperature:
-    """The temperatures and heat flows of a solution vector [°C, W]: the oil's and the
-    volume change's heat above the supply temperature (their sum is the same on any
-    scale)."""
+            volume_rate: np.ndarray | None = None) -> FilmTemperature:
+    """The temperatures and heat flows of a solution vector [°C, W]."""
     n, m = flows.area.shape
     temperature = solution[: n * m].reshape(n, m)
     t_journal, t_shell = float(solution[-2]), float(solution[-1])
     if not conductance.any():  # no wall heat path: the walls at the film's mean
         t_journal = t_shell = float(np.sum(temperature * flows.area) / flows.area.sum())
-    own = -gain if volume_rate is None else volume_rate - gain
-    outflow = _external_outflow(flows, own)
-    rise = temperature - supply_temperature
-    to_oil = heat_capacity * float(np.sum((np.maximum(-outflow, 0.0) - gain) * rise))
-    to_volume = (0.0 if volume_rate is None
-                 else heat_capacity * float(np.sum(volume_rate * rise)))
+    outflow = _external_outflow(flows, volume_rate)
+    if volume_rate is None:
+        to_oil = heat_capacity * float(np.sum(np.maximum(-outflow, 0.0) * temperature)
+                                       - np.sum(np.maximum(outflow, 0.0)) * supply_temperature)
+        to_volume = 0.0
+    else:  # both above the supply temperature (their sum is the same on any scale)
+        rise = temperature - supply_temperature
+        to_oil = heat_capacity * float(np.sum(np.maximum(-outflow, 0.0) * rise))
+        to_volume = heat_capacity * float(np.sum(volume_rate * rise))
     to_journal = float(np.sum(conductance * (temperature - solution[-2])))
     to_shell = float(np.sum(conductance * (temperature - solution[-1])))
     return FilmTemperature(temperature, t_journal, t_shell, flows.generated_power, to_oil,
