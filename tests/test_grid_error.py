@@ -69,14 +69,15 @@ def test_headline_words_name_grids_angles_and_order():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("example", ["passenger_car_diesel_2000rpm_reynolds",
-                                     "kamaz_740_truck_diesel"])
-def test_estimate_within_a_factor_2_of_the_three_grid_richardson_error(example):
+@pytest.mark.parametrize("example, fine", [
+    ("passenger_car_diesel_2000rpm_reynolds", (108, 24)), ("kamaz_740_truck_diesel", (144, 32))])
+def test_estimate_within_a_factor_2_of_the_three_grid_richardson_error(example, fine):
     """The shipped examples at the default grid 72 × 16 (the KamAZ-740 bearing on a rigid
     bore: its elastic run at 144 × 16 is measured in benchmarks/grid_error_check.md): the
     estimate from the run grid and the coarser grids agrees within a factor 2 with the
-    three-grid Richardson error of the run grid from 36 × 8, 72 × 16 and 144 × 32 (order
-    observed on those). Where those three do not converge monotonically there is no such
+    three-grid Richardson error of the run grid from 36 × 8, 72 × 16 and a finer grid
+    (order observed on those): 144 × 32, or 108 × 24 for the passenger car's mixed film
+    (58 s at 144 × 32 against 30 s). Where those three do not converge monotonically there is no such
     reference, and the estimate must not claim the asymptotic range either."""
     from conrod import Case, Simulation
     from conrod.simulation.grid_error import with_grid_error
@@ -87,12 +88,12 @@ def test_estimate_within_a_factor_2_of_the_three_grid_richardson_error(example):
     simulation = Simulation(case, n_theta=72, n_z=16, **options)
     estimate = with_grid_error(simulation.run(), simulation).summary.grid_error
     assert estimate.grids == ((72, 16), (52, 12), (36, 8))
-    fine = Simulation(case, n_theta=144, n_z=32, **options).run()
+    finest = Simulation(case, n_theta=fine[0], n_z=fine[1], **options).run()
     for quantity in ("h_min", "p_max"):
         ours = estimate.estimate(quantity)
-        best = (fine.summary.film_h_min if quantity == "h_min" else fine.summary.p_max)
-        three = (best, ours.values[0], ours.values[2])  # 144x32, 72x16, 36x8
-        sizes = tuple(cell_size(g) for g in ((144, 32), (72, 16), (36, 8)))
+        best = (finest.summary.film_h_min if quantity == "h_min" else finest.summary.p_max)
+        three = (best, ours.values[0], ours.values[2])  # fine, 72x16, 36x8
+        sizes = tuple(cell_size(g) for g in (fine, (72, 16), (36, 8)))
         order = observed_order(three, sizes)
         if order is None:
             assert not ours.asymptotic
