@@ -77,8 +77,8 @@ def test_estimate_within_a_factor_2_of_the_three_grid_richardson_error(example, 
     estimate from the run grid and the coarser grids agrees within a factor 2 with the
     three-grid Richardson error of the run grid from 36 × 8, 72 × 16 and a finer grid
     (order observed on those): 144 × 32, or 108 × 24 for the passenger car's mixed film
-    (58 s at 144 × 32 against 30 s). Where those three do not converge monotonically there is no such
-    reference, and the estimate must not claim the asymptotic range either."""
+    (58 s at 144 × 32 against 30 s). Where those three do not converge monotonically there
+    is no such reference, and the estimate must not claim the asymptotic range either."""
     from conrod import Case, Simulation
     from conrod.simulation.grid_error import with_grid_error
     from hardening_helpers import EXAMPLES
