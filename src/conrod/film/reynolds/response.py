@@ -33,6 +33,7 @@ from scipy.sparse.linalg import splu
 from conrod.film.base import FilmResult
 from conrod.film.linearised import active_matrix
 from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds import viscosity_field as vf
 from conrod.film.reynolds.memory import ReynoldsMemory
 from conrod.film.reynolds.response_kernel import bore_node_imbalance, bore_row_imbalance
 from conrod.film.step_system import FilmResponse
@@ -55,24 +56,32 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     problem = film.discrete_problem(state)
     grid = film.film_grid
     omega_sum = state.journal_speed + state.shell_speed
-    a_east, a_north, _ = kernel.assemble_coefficients(
-        problem.h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum,
-        state.viscosity)
+    conduction = problem.conduction  # a viscosity field: the conductances of h_μ
+    if conduction is None:
+        a_east, a_north, _ = kernel.assemble_coefficients(
+            problem.h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum,
+            state.viscosity)
+    else:
+        a_east, a_north = vf.field_conductances(conduction, grid)
     active = ~problem.fixed & (pressure > problem.cavitation)
     if not active.any():  # no film pressure (e.g. concentric, at rest): the full-film branch
         active = ~problem.fixed
     n_theta, n_nodes = pressure.shape
     shape = (n_theta, n_nodes)
     rate = 0.0 if rate_step is None else 1.0 / rate_step
-    bore_part = (_node_directions if nodal.ndim == 1 else _row_directions)(
-        pressure, problem.h, rate, grid, omega_sum, state.viscosity, nodal.shape[0])
+    if conduction is None:
+        bore_part = (_node_directions if nodal.ndim == 1 else _row_directions)(
+            pressure, problem.h, rate, grid, omega_sum, state.viscosity, nodal.shape[0])
+    else:
+        bore_part = _field_directions(pressure, problem, rate, grid, omega_sum,
+                                      state.viscosity, nodal.ndim == 1)
     n_bore = bore_part.shape[0]
     directions = _velocity_directions(film, shape, tilt)
     imbalance = np.zeros((n_bore + len(directions),) + shape)
     imbalance[:n_bore] = bore_part
     for k, (dh, dh_rate) in enumerate(directions):
         imbalance[n_bore + k] = _imbalance(pressure, problem.h, dh, dh_rate, grid,
-                                           omega_sum, state.viscosity)
+                                           omega_sum, state.viscosity, conduction)
     d_pressure = np.zeros(imbalance.shape)
     matrix, nodes = active_matrix(a_east, a_north, active)
     right = -imbalance[:, nodes[0], nodes[1]]
@@ -147,11 +156,38 @@ def _node_directions(pressure, h, rate, grid, omega_sum, viscosity, n_bore) -> n
     return imbalance
 
 
-def _imbalance(pressure, h, dh, dh_rate, grid, omega_sum, viscosity) -> np.ndarray:
+def _imbalance(pressure, h, dh, dh_rate, grid, omega_sum, viscosity,
+               conduction: np.ndarray | None = None) -> np.ndarray:
+    """∂r/∂q [Pa m^3] of a direction with ∂h/∂q = ``dh`` [-], ∂ḣ/∂q = ``dh_rate`` [1/s];
+    with a viscosity field (``conduction`` h_μ = h (μ_r/μ)^{1/3} [m]) the conductances move
+    with ∂h_μ/∂q = (h_μ/h) ∂h/∂q, the source with ∂h/∂q
+    (:mod:`conrod.film.reynolds.viscosity_field`)."""
+    dh, dh_rate = np.ascontiguousarray(dh), np.ascontiguousarray(dh_rate)
     d_east, d_north, d_source = kernel.coefficient_derivatives(
-        h, np.ascontiguousarray(dh), np.ascontiguousarray(dh_rate), grid.radius,
-        grid.d_theta, grid.d_z, omega_sum, viscosity)
+        h, dh, dh_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, viscosity)
+    if conduction is not None:
+        d_east, d_north, _ = kernel.coefficient_derivatives(
+            conduction, np.ascontiguousarray(dh * (conduction / h)), dh_rate, grid.radius,
+            grid.d_theta, grid.d_z, omega_sum, viscosity)
     return kernel.node_imbalance(pressure, d_east, d_north, d_source)
+
+
+def _field_directions(pressure, problem, rate, grid, omega_sum, viscosity,
+                      per_node: bool) -> np.ndarray:
+    """∂r/∂u [Pa m^3] of whole film rows (or, ``per_node``, single film nodes, row-major)
+    on a film with a viscosity field, one direction at a time (:func:`_imbalance`)."""
+    shape = pressure.shape
+    count = shape[0] * shape[1] if per_node else shape[0]
+    imbalance = np.zeros((count,) + shape)
+    for q in range(count):
+        dh = np.zeros(shape)
+        if per_node:
+            dh[divmod(q, shape[1])] = 1.0
+        else:
+            dh[q, :] = 1.0
+        imbalance[q] = _imbalance(pressure, problem.h, dh, rate * dh, grid, omega_sum,
+                                  viscosity, problem.conduction)
+    return imbalance
 
 
 @dataclass(frozen=True)
