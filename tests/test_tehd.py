@@ -139,6 +139,13 @@ def test_the_tehd_run_converges_conserves_energy_and_reports_its_bore(tehd_run):
     items = elastic_summary_items(tehd_run)["thermal_film"]
     assert items["warm_bore_out_of_round_um"] == pytest.approx(warm.out_of_round * 1e6)
     assert "bore warm from the film" in film.headline_text()
+    from conrod.output.registry import figures
+    from conrod.output.thermal_tables import thermal_outputs
+
+    spec = {spec.file: spec for spec in thermal_outputs(tehd_run.elastic, figures)}[
+        "warm_bore.png"]
+    assert spec.build().axes  # T_b(θ) and the thermal profile drawn
+    assert warm.profile is not None and np.ptp(warm.profile) == pytest.approx(warm.out_of_round)
 
 
 def _elastic_thermal_data(**solver) -> dict:

@@ -23,6 +23,8 @@ class FilmWarmBore:
     clearance_change : float  Δc of the radial clearance, warm − cold [m].
     out_of_round : float or None  Peak-to-valley of the bore's thermal profile h₀(θ) [m];
         None where the film's bore carries none (a rigid bore).
+    profile : ndarray or None  The thermal profile h₀(θ) at ``angles`` (the corrected
+        thermal bore displacement less its mean, outward +) [m]; None on a rigid bore.
     """
 
     journal_temperature: float
@@ -31,6 +33,7 @@ class FilmWarmBore:
     housing_temperature: float
     clearance_change: float
     out_of_round: float | None
+    profile: np.ndarray | None = None
 
     def summary_items(self) -> dict:
         """summary.json items (units in the names)."""

@@ -117,7 +117,7 @@ class WarmFilmBore:
             profile, mean = None, _rigid_housing_temperature(current)
         return FilmWarmBore(self.journal, 2.0 * np.pi * np.arange(self.shell.size)
                             / self.shell.size, self.shell.copy(), float(mean), float(change),
-                            None if profile is None else float(np.ptp(profile)))
+                            None if profile is None else float(np.ptp(profile)), profile)
 
 
 def _rigid_housing_temperature(sim: Any) -> float:
