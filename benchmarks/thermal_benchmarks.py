@@ -121,8 +121,10 @@ def elastic_row(label: str, results, wall: float, cpu: float) -> tuple[str, ...]
             f" {warm.housing_temperature:.1f})")
     thermal = elastic.thermal_film
     iterations = "–" if thermal is None else f"{thermal.iterations}"
+    joint = (results.info or {}).get("joint_over_run")
+    joint = "–" if joint is None else ("opens" if joint["opens"] else "closed")
     return (*row(label, elastic, wall, cpu)[:-2], f"{elastic.clearance * 1e6:.2f}", bore,
-            iterations, f"{elastic.summary.cycles}", f"{wall:.1f} / {cpu:.1f}")
+            joint, iterations, f"{elastic.summary.cycles}", f"{wall:.1f} / {cpu:.1f}")
 
 
 def main_elastic() -> None:
@@ -151,7 +153,8 @@ def main_elastic() -> None:
               "journal / shell [°C]", "friction power [W]",
               "heat [W] = oil + journal + shell", "warm clearance [µm]",
               "bore from the film: Δc / thermal out-of-round [µm] (T_j, T_b range, housing "
-              "mean [°C])", "thermal iterations", "cycles", "wall / CPU [s]")
+              "mean [°C])", "joint over the run", "thermal iterations", "cycles",
+              "wall / CPU [s]")
     lines = ["# Thermal film on the elastic bore (TEHD): cost and answers", "",
              f"`python benchmarks/thermal_benchmarks.py --elastic` on "
              f"{platform.processor() or 'cpu'}, {os.cpu_count()} cores (shared), Python "

@@ -168,3 +168,25 @@ def test_isothermal_limit_of_the_elastic_thermal_film_is_the_elastic_run_at_supp
                       rigid_companion=False).run()
     assert hot.elastic.summary.h_min == pytest.approx(cold.elastic.summary.h_min, rel=2e-3)
     assert hot.elastic.summary.p_max == pytest.approx(cold.elastic.summary.p_max, rel=2e-3)
+
+
+def test_the_rigid_companion_runs_its_own_warm_bore_from_its_film():
+    """The rigid bore of the TEHD example (the elastic run's companion): the thermal film
+    on the rigid bore, its clearance that of the FE housing conducting from the film's
+    shell-side temperatures (the given-temperature path with the same numbers), round."""
+    from conrod.housing.housing import Housing
+
+    data = _data(thermal_iterations=3, thermal_tolerance=5.0)
+    rigid = Simulation(_case(data), housing="rigid").run()
+    film = rigid.thermal_film
+    warm = film.warm_bore
+    assert warm.out_of_round is None and warm.profile is None
+    assert abs(film.generated - (film.to_oil + film.to_journal + film.to_shell)) < (
+        1e-9 * film.generated)
+    given = _given_path_case(data, warm.journal_temperature, warm.shell_side_temperature,
+                             95.0)
+    housing = Housing.from_case(given)
+    assert rigid.clearance - 5e-5 == pytest.approx(
+        housing.warm.clearance_change(housing.projector), rel=1e-9)
+    assert warm.housing_temperature == pytest.approx(housing.warm.housing_temperature,
+                                                     rel=1e-12)

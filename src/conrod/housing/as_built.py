@@ -78,7 +78,7 @@ def as_built_geometry(geometry, housing, warm: WarmBore | None, with_profile: bo
             section = warm.section
             raise CaseError(
                 f"housing.thermal: journal at {section.journal_temperature:g} degC, housing "
-                f"at {section.housing_temperature:g} degC change the radial clearance "
+                f"at {warm.housing_temperature:g} degC change the radial clearance "
                 f"{cold:.4g} m by {change:.4g} m (allowed: a warm clearance above "
                 f"{SMALLEST_WARM_CLEARANCE:g} x the clearance; the journal seizes)")
         geometry = dataclasses.replace(geometry, radial_clearance=cold + change)

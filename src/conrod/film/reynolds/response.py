@@ -7,7 +7,10 @@ a linear system K_AA(h) p_A = b(h, ḣ) (:mod:`conrod.film.linearised`). A displ
 film row j changes h by u_j at every axial node of the row (a 2-D housing deforms alike at
 every z) and, when the rate is in the squeeze term, ḣ by u_j/τ_r; a displacement u_jk of
 one film node (a housing that deforms along the width) changes h and ḣ at that node alone;
-a journal velocity v changes ḣ by −(v_x cos θ + v_y sin θ). For a fixed active set each
+a journal velocity v changes ḣ by −(v_x cos θ + v_y sin θ). With a viscosity field μ(θ, z)
+the conductances are those of h_μ = h (μ_r/μ)^{1/3}
+(:mod:`conrod.film.reynolds.viscosity_field`), which a direction moves by (h_μ/h) ∂h/∂q
+while the source moves with ∂h/∂q; one direction at a time. For a fixed active set each
 direction q costs one back-substitution with the same sparse LU factor:
 
 .. math:: K_{AA}\\,∂p_A/∂q = −\\big(∂K/∂q\\,p − ∂b/∂q\\big)_A
@@ -43,7 +46,8 @@ from conrod.film.tilt import thickness_directions
 def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray,
                        rate_step: float | None,
                        tilt: tuple[float, float] | None = None) -> FilmResponse:
-    """∂f/∂u, ∂f/∂v, ∂F/∂u, ∂F/∂v of the isoviscous Reynolds ``film`` at the converged
+    """∂f/∂u, ∂f/∂v, ∂F/∂u, ∂F/∂v of the isoviscous Reynolds ``film`` (with its viscosity
+    field μ(θ, z), if any: :func:`_imbalance`) at the converged
     ``pressure`` [Pa] of the (deformed) ``state``; ``nodal`` W (n_θ, n_z + 1) [m²] for
     displacements of whole film rows, or w (n_θ (n_z + 1),) [m²] for displacements of single
     film nodes (row-major); ``rate_step`` τ_r [s] of the rate in the squeeze term (None: no
