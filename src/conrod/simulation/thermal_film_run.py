@@ -8,7 +8,10 @@ energy equation (:func:`conrod.film.thermal.energy.solve_energy`) → T under-re
 (:data:`conrod.orbit.heat_balance.RELAXATION`), until the largest change of T is at most
 ``[solver] thermal_tolerance`` [K] or ``thermal_iterations`` are done (then a warning). The
 thermal time constant of the bearing is long against a cycle, so one steady field per cycle
-is solved, not a field per step.
+is solved, not a field per step. On the elastic bore the film is the elastic film carrying
+the field (:mod:`conrod.ehd.viscosity_field`); with a ``[housing.thermal]`` that gives no
+temperatures the bore is rebuilt warm from each energy solution before the next orbit
+(:mod:`conrod.simulation.warm_film_run`).
 """
 
 from __future__ import annotations
