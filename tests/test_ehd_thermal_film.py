@@ -146,3 +146,24 @@ def test_the_elastic_films_flows_are_those_of_the_deformed_film():
     rigid, _ = film.base.film_flows(state, None if not hasattr(film.base, "initial_memory")
                                     else film.base.initial_memory())
     assert abs(rigid.dissipation.sum() - flows.dissipation.sum()) > 1e-3 * flows.dissipation.sum()
+
+
+def test_per_node_response_with_a_field_sums_to_the_per_row_one():
+    """A housing that deforms along the width moves single film nodes: with a viscosity
+    field their response summed over the width is the response to whole rows."""
+    film, theta, z = _field_film()
+    state = FilmState(eccentricity_x=0.7 * CLEARANCE * np.cos(0.3),
+                      eccentricity_y=0.7 * CLEARANCE * np.sin(0.3), velocity_x=0.01,
+                      velocity_y=-0.02, journal_speed=272.0, viscosity=0.0095)
+    deformed = rated(state, np.zeros(film.deformation_shape()), None)
+    pressure = film.solve(deformed, with_pressure=True).pressure
+    rows = nodal_force_weights(film, theta, RADIUS)
+    by_row = film.thickness_response(deformed, ReynoldsMemory(pressure), rows, STEP)
+    by_node = film.thickness_response(deformed, ReynoldsMemory(pressure), rows.ravel(), STEP)
+    n_theta, n_nodes = rows.shape
+    summed = by_node.nodal_by_bore.reshape(n_theta, n_nodes, n_theta, n_nodes).sum(axis=(1, 3))
+    scale = np.max(np.abs(by_row.nodal_by_bore))
+    assert np.max(np.abs(summed - by_row.nodal_by_bore)) <= 1e-9 * scale
+    force = by_node.force_by_bore.reshape(2, n_theta, n_nodes).sum(axis=2)
+    assert np.allclose(force, by_row.force_by_bore, rtol=0.0,
+                       atol=1e-9 * np.max(np.abs(by_row.force_by_bore)))
