@@ -83,10 +83,13 @@ class ThermalExpansionSection(Section):
     housing's thermal distortion (docs/elastic.md, *The warm bore*). The housing is at one
     mean temperature (``housing_temperature``) or conducts from its shell-side temperature
     around the bore (``shell_temperatures`` at ``shell_temperature_angles``) to the
-    crankcase (FE housings)."""
+    crankcase (FE housings). With ``[solver] thermal = "film"`` and none of the three
+    temperatures given, they come from the film's energy solution (docs/thermal.md,
+    *Thermal distortion from the film*)."""
 
-    journal_temperature: float = Field(ge=-40.0, le=400.0, description=(
-        "Mean temperature of the journal (crank pin) [degC]"))
+    journal_temperature: float | None = Field(default=None, ge=-40.0, le=400.0, description=(
+        "Mean temperature of the journal (crank pin); leave out with the other temperatures "
+        "to take them from the thermal film [degC]"))
     housing_temperature: float | None = Field(default=None, ge=-40.0, le=400.0, description=(
         "Mean temperature of the housing and its shell, uniform [degC]"))
     shell_temperature_angles: list[float] = Field(default_factory=list, max_length=360,
@@ -117,6 +120,12 @@ class ThermalExpansionSection(Section):
     @model_validator(mode="after")
     def _one_housing_temperature(self) -> ThermalExpansionSection:
         field = bool(self.shell_temperatures)
+        if self.from_film:
+            return self
+        if self.journal_temperature is None:
+            raise ValueError("housing.thermal.journal_temperature is required with "
+                             "housing_temperature or shell_temperatures (or leave out all "
+                             "three: the temperatures of [solver] thermal = 'film')")
         if (self.housing_temperature is None) == (not field):
             raise ValueError("housing.thermal: give housing_temperature (uniform) or "
                              "shell_temperatures (conduction from the bore), one of them")
@@ -137,6 +146,26 @@ class ThermalExpansionSection(Section):
         return self
 
     @property
+    def from_film(self) -> bool:
+        """True when no temperature is given: the thermal film gives them [-]."""
+        return (self.journal_temperature is None and self.housing_temperature is None
+                and not self.shell_temperatures)
+
+    def at_temperatures(self, journal: float, angles: list[float], shell: list[float],
+                        ambient: float) -> ThermalExpansionSection:
+        """This section with given temperatures: the journal's [degC], the shell-side ones
+        ``shell`` [degC] at ``angles`` [deg] conducting to the crankcase at its own
+        ``ambient_temperature`` or ``ambient`` [degC]; one angle: the housing uniform at it
+        (a housing without an FE model, which cannot conduct)."""
+        if len(shell) == 1:
+            return self.model_copy(update={"journal_temperature": float(journal),
+                                           "housing_temperature": float(shell[0])})
+        return self.model_copy(update={
+            "journal_temperature": float(journal), "shell_temperature_angles": list(angles),
+            "shell_temperatures": list(shell), "ambient_temperature": float(
+                ambient if self.ambient_temperature is None else self.ambient_temperature)})
+
+    @property
     def conducting(self) -> bool:
         """True when the housing's temperature follows from its shell-side temperatures [-]."""
         return bool(self.shell_temperatures)
@@ -144,7 +173,8 @@ class ThermalExpansionSection(Section):
     @property
     def active(self) -> bool:
         """True when the journal or the housing is not at the reference temperature [-]."""
-        return (self.conducting or self.journal_temperature != self.reference_temperature
+        return (self.conducting or self.from_film
+                or self.journal_temperature != self.reference_temperature
                 or self.housing_temperature != self.reference_temperature)
 
     @property

@@ -50,6 +50,7 @@ films.
 from __future__ import annotations
 
 import dataclasses
+import functools
 from typing import Any
 
 import numpy as np
@@ -78,6 +79,7 @@ from conrod.ehd.memory import (
     ElasticSettings,
     extrapolated_deformation,
 )
+from conrod.ehd.viscosity_field import film_flows, with_viscosity_field
 from conrod.errors import CaseError, ConvergenceError
 from conrod.film.base import FilmResult, FilmState
 from conrod.film.capabilities import (
@@ -92,6 +94,9 @@ from conrod.film.rated_state import rated
 from conrod.film.step_system import StepRequest
 from conrod.film.wrapper import FilmWrapper
 from conrod.numerics.newton import ChordJacobian, NewtonControls, UpdateLimits, solve_step
+
+FIELD_METHODS = {"with_viscosity_field": with_viscosity_field, "film_flows": film_flows}
+"""HasViscosityField's methods, declared when the base film has them (ehd.viscosity_field)."""
 
 
 class ElasticFilm(FilmWrapper):
@@ -152,6 +157,12 @@ class ElasticFilm(FilmWrapper):
         self.contact = (DeformedAsperity.from_parameters(asperity, self.nodal,
                                                          self.base.force_weights)
                         if asperity is not None and self.exact else None)
+
+    def __getattr__(self, name: str) -> Any:
+        if name in FIELD_METHODS:  # HasViscosityField exactly when the base film has it
+            getattr(self.__dict__.get("base"), name)  # AttributeError: not declared
+            return functools.partial(FIELD_METHODS[name], self)
+        return super().__getattr__(name)
 
     @property
     def clearance(self) -> float:

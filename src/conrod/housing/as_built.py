@@ -16,12 +16,27 @@ SMALLEST_WARM_CLEARANCE = 0.1
 """Smallest warm radial clearance, share of the given (cold) one [-]."""
 
 
+def film_start(case):
+    """``case`` itself, or, when its ``[housing.thermal]`` takes its temperatures from the
+    thermal film (none given), the case with journal and housing at the oil's supply
+    temperature: the bore of the first orbit of the thermal iteration, and of anything
+    asked before it (:mod:`conrod.simulation.warm_film_run`)."""
+    section = case.housing.thermal
+    if section is None or not section.from_film:
+        return case
+    supply = float(case.lubricant.supply_temperature)
+    housing = case.housing.model_copy(update={"thermal": section.at_temperatures(
+        supply, [0.0], [supply], supply)})
+    return case.model_copy(update={"housing": housing})
+
+
 def warm_bore(case, bore: np.ndarray | None = None, temperatures: tuple[float, float] | None
               = None, corner_temperature: np.ndarray | None = None) -> WarmBore | None:
     """The warm bore of ``[housing.thermal]`` (None without it, or at the reference
     temperature); ``bore``: the raw FE thermal bore displacement [m] with ``temperatures``,
     the housing's mean and the shell-side mean [degC] (default: the uniform
     ``housing_temperature``), and the conduction field at the mesh corners [degC]."""
+    case = film_start(case)
     section = case.housing.thermal
     if section is None or not section.active:
         return None
@@ -63,7 +78,7 @@ def as_built_geometry(geometry, housing, warm: WarmBore | None, with_profile: bo
             section = warm.section
             raise CaseError(
                 f"housing.thermal: journal at {section.journal_temperature:g} degC, housing "
-                f"at {section.housing_temperature:g} degC change the radial clearance "
+                f"at {warm.housing_temperature:g} degC change the radial clearance "
                 f"{cold:.4g} m by {change:.4g} m (allowed: a warm clearance above "
                 f"{SMALLEST_WARM_CLEARANCE:g} x the clearance; the journal seizes)")
         geometry = dataclasses.replace(geometry, radial_clearance=cold + change)

@@ -161,8 +161,9 @@ def _warm(case, factory, holder: dict, cache_dir, use_cache: bool, info: dict) -
     displacement: per unit strain for a uniform housing temperature (cached once), or of the
     conduction field from the shell-side temperatures (cached per thermal input)
     (:mod:`conrod.housing.thermal`, :mod:`conrod.housing.conduction`)."""
-    from conrod.housing.as_built import warm_bore
+    from conrod.housing.as_built import film_start, warm_bore
 
+    case = film_start(case)  # temperatures from the thermal film: its start at the supply
     if warm_bore(case) is None:
         return None
     from conrod.housing.conduction import Cooling

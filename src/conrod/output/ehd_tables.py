@@ -13,6 +13,7 @@ import numpy as np
 from conrod.output.registry import TableSpec, result_kind, tables
 from conrod.output.signoff_tables import signoff_tables
 from conrod.output.tables import case_tables, contact_tables, cycle_table, summary_items
+from conrod.output.thermal_tables import thermal_outputs
 from conrod.results.ehd import ElasticRunResults, comparison
 
 
@@ -82,7 +83,7 @@ def _elastic_tables(results: ElasticRunResults) -> tuple[TableSpec, ...]:
                           "stress_angles (read by conrod stress RUN_FOLDER).",
                           lambda: film_pressure_table(results)),)
     return (own + contact_tables(results.elastic) + signoff_tables(results.elastic)
-            + case_tables(results.elastic))
+            + case_tables(results.elastic) + thermal_outputs(results.elastic, tables))
 
 
 @result_kind.register

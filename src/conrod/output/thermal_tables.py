@@ -27,10 +27,19 @@ def _thermal_figures(thermal: ThermalFilmResults) -> tuple[FigureSpec, ...]:
         return importlib.import_module("conrod.plotting.thermal_plots").plot_temperature_map(
             thermal)
 
-    return (FigureSpec("temperature_map.png", "Film temperature map",
-                       "Cycle-mean film temperature [°C] over shell angle θ [deg] and axial "
-                       "position z [mm], the hottest point marked; wall temperatures and "
-                       "heat flows [W] in the title.", draw),)
+    own = (FigureSpec("temperature_map.png", "Film temperature map",
+                      "Cycle-mean film temperature [°C] over shell angle θ [deg] and axial "
+                      "position z [mm], the hottest point marked; wall temperatures and "
+                      "heat flows [W] in the title.", draw),)
+    if thermal.warm_bore is None:
+        return own
+    return own + (FigureSpec(
+        "warm_bore.png", "Bore warm from the film",
+        "Shell-side temperature T_b(θ) [°C] with the film's axial mean and the journal's, "
+        "and the thermal bore profile h₀ [µm] over shell angle θ [deg]; clearance change "
+        "and out-of-roundness [µm] in the title.",
+        lambda: importlib.import_module("conrod.plotting.thermal_plots").plot_warm_bore(
+            thermal)),)
 
 
 @tables.register

@@ -28,3 +28,35 @@ def plot_temperature_map(thermal) -> Figure:
                  f"{thermal.to_oil:.0f}, journal {thermal.to_journal:.0f}, shell "
                  f"{thermal.to_shell:.0f} W", fontsize=9)
     return fig
+
+
+def plot_warm_bore(thermal) -> Figure:
+    """The bore warm from the film (:class:`conrod.results.thermal.FilmWarmBore`): the
+    shell-side temperature T_b(θ) [°C] beside the film's axial mean, and the thermal bore
+    profile h₀(θ) [µm] over shell angle θ [deg]."""
+    warm = thermal.warm_bore
+    fig = Figure(figsize=(8.0, 5.2))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    theta = np.degrees(np.append(warm.angles, 2 * np.pi))
+    weights = np.ones(thermal.z.size)
+    weights[[0, -1]] = 0.5
+    film = thermal.temperature @ weights / weights.sum()
+    top.plot(np.degrees(np.append(thermal.theta, 2 * np.pi)), np.append(film, film[0]),
+             color="tab:orange", label="film, axial mean T̄(θ)")
+    shell = np.append(warm.shell_side_temperature, warm.shell_side_temperature[0])
+    top.plot(theta, shell, color="tab:red", label="shell side T_b(θ)")
+    top.axhline(warm.journal_temperature, color="tab:blue", ls="--", label="journal")
+    top.set_ylabel("temperature [°C]")
+    top.legend(fontsize=8)
+    if warm.profile is not None:
+        bottom.plot(theta, np.append(warm.profile, warm.profile[0]) * 1e6, color="k")
+        bottom.set_ylabel("thermal bore profile h₀ [µm]")
+    else:
+        bottom.text(0.5, 0.5, "rigid bore: round (clearance change only)", ha="center",
+                    transform=bottom.transAxes)
+    bottom.set_xlabel("shell angle θ [deg]")
+    shape = "" if warm.out_of_round is None else (
+        f", thermal out-of-round {warm.out_of_round * 1e6:.2f} µm")
+    top.set_title(f"bore warm from the film: clearance {warm.clearance_change * 1e6:+.2f} µm"
+                  f"{shape}, housing {warm.housing_temperature:.1f} °C", fontsize=9)
+    return fig

@@ -11,6 +11,43 @@ import numpy as np
 
 
 @dataclass(frozen=True)
+class FilmWarmBore:
+    """The bore warm from the film's temperatures (``[housing.thermal]`` without given
+    temperatures, docs/thermal.md): what the last orbit ran on.
+
+    journal_temperature : float  The energy solution's journal temperature [°C].
+    angles : ndarray  Shell angles of ``shell_side_temperature`` [rad].
+    shell_side_temperature : ndarray  Shell-side (housing bore) temperature T_b(θ) [°C].
+    housing_temperature : float  Mean temperature of the housing (the conduction field's
+        mean over the big end; the shell-side mean for a free ring) [°C].
+    clearance_change : float  Δc of the radial clearance, warm − cold [m].
+    out_of_round : float or None  Peak-to-valley of the bore's thermal profile h₀(θ) [m];
+        None where the film's bore carries none (a rigid bore).
+    profile : ndarray or None  The thermal profile h₀(θ) at ``angles`` (the corrected
+        thermal bore displacement less its mean, outward +) [m]; None on a rigid bore.
+    """
+
+    journal_temperature: float
+    angles: np.ndarray
+    shell_side_temperature: np.ndarray
+    housing_temperature: float
+    clearance_change: float
+    out_of_round: float | None
+    profile: np.ndarray | None = None
+
+    def summary_items(self) -> dict:
+        """summary.json items (units in the names)."""
+        return {"warm_bore_journal_temperature_C": self.journal_temperature,
+                "warm_bore_shell_side_temperature_C": [
+                    float(self.shell_side_temperature.min()),
+                    float(self.shell_side_temperature.max())],
+                "warm_bore_housing_temperature_C": self.housing_temperature,
+                "warm_bore_clearance_change_um": self.clearance_change * 1e6,
+                "warm_bore_out_of_round_um": None if self.out_of_round is None
+                else self.out_of_round * 1e6}
+
+
+@dataclass(frozen=True)
 class ThermalFilmResults:
     """Converged film temperature of a run (units in brackets).
 
@@ -29,6 +66,8 @@ class ThermalFilmResults:
     change : float  Largest temperature change of the last iteration [K].
     tolerance : float  ``[solver] thermal_tolerance`` [K].
     max_valid_temperature : float  Highest temperature of the oil data [°C].
+    warm_bore : FilmWarmBore or None  The bore warm from these temperatures (None: not
+        film-driven).
     """
 
     temperature: np.ndarray
@@ -49,6 +88,7 @@ class ThermalFilmResults:
     change: float
     tolerance: float
     max_valid_temperature: float
+    warm_bore: FilmWarmBore | None = None
 
     @property
     def converged(self) -> bool:
@@ -85,9 +125,16 @@ class ThermalFilmResults:
     def headline_text(self) -> str:
         """The headline's temperature line."""
         t, theta, z = self.hottest
-        return (f"film max {t:.1f} °C at θ = {math.degrees(theta):.0f}°, z = {z * 1e3:.1f} mm; "
+        text = (f"film max {t:.1f} °C at θ = {math.degrees(theta):.0f}°, z = {z * 1e3:.1f} mm; "
                 f"journal {self.journal_temperature:.1f} °C, shell "
                 f"{self.shell_temperature:.1f} °C (thermal film)")
+        warm = self.warm_bore
+        if warm is None:
+            return text
+        shape = ("" if warm.out_of_round is None else
+                 f", thermal out-of-round {warm.out_of_round * 1e6:.2f} µm")
+        return (f"{text}; bore warm from the film: clearance {warm.clearance_change * 1e6:+.2f} "
+                f"µm{shape}, housing {warm.housing_temperature:.1f} °C")
 
     def summary_items(self) -> dict:
         """summary.json items (units in the names)."""
@@ -103,7 +150,8 @@ class ThermalFilmResults:
             "heat_to_journal_W": self.to_journal, "heat_to_shell_W": self.to_shell,
             "friction_power_W": self.friction_power, "squeeze_power_W": self.squeeze_power,
             "pumping_power_W": self.pumping_power, "iterations": self.iterations,
-            "last_change_K": self.change, "converged": self.converged}}
+            "last_change_K": self.change, "converged": self.converged,
+            **({} if self.warm_bore is None else self.warm_bore.summary_items())}}
 
     def table(self) -> dict[str, np.ndarray]:
         """thermal_film.csv columns: the temperature at every grid node."""

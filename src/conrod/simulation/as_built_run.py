@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from conrod.errors import CaseError
+
 GRID_FILMS = ("reynolds", "mass_conserving")
 """Films that take a bore profile (the as-built bore) [-]."""
 
@@ -17,6 +19,13 @@ def as_built(simulation: Any, geometry: Any, film_by_name: bool) -> Any:
     from conrod.housing.housing import Housing
 
     case = simulation.case.model_copy(update={"solver": simulation.solver})
+    thermal = case.housing.thermal
+    if thermal is not None and thermal.from_film and case.solver.thermal != "film":
+        raise CaseError(
+            "housing.thermal: no journal_temperature, housing_temperature or "
+            f"shell_temperatures with [solver] thermal = {case.solver.thermal!r} (allowed: "
+            "give journal_temperature and housing_temperature or shell_temperatures; or "
+            "thermal = 'film', whose film gives them)")
     grid = film_by_name and simulation.solver.film in GRID_FILMS
     return run_geometry(geometry, simulation.case.housing, simulation.housing, case, grid,
                         lambda: Housing.from_case(case).warm)
@@ -28,4 +37,6 @@ def warm_note(simulation: Any) -> str:
     thermal = simulation.case.housing.thermal
     if thermal is None or not thermal.active:
         return ""
+    if thermal.from_film:
+        return " (warm from the thermal film)"
     return f" (warm clearance {simulation.geometry().radial_clearance * 1e6:.2f} µm)"

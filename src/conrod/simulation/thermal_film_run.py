@@ -8,7 +8,10 @@ energy equation (:func:`conrod.film.thermal.energy.solve_energy`) → T under-re
 (:data:`conrod.orbit.heat_balance.RELAXATION`), until the largest change of T is at most
 ``[solver] thermal_tolerance`` [K] or ``thermal_iterations`` are done (then a warning). The
 thermal time constant of the bearing is long against a cycle, so one steady field per cycle
-is solved, not a field per step.
+is solved, not a field per step. On the elastic bore the film is the elastic film carrying
+the field (:mod:`conrod.ehd.viscosity_field`); with a ``[housing.thermal]`` that gives no
+temperatures the bore is rebuilt warm from each energy solution before the next orbit
+(:mod:`conrod.simulation.warm_film_run`).
 """
 
 from __future__ import annotations
@@ -20,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from conrod.errors import CaseError
-from conrod.film.capabilities import HasViscosityField
+from conrod.film.capabilities import HasDeformedGap, HasViscosityField
 from conrod.film.thermal.energy import ThermalWalls, solve_energy
 from conrod.film.thermal.flows import FilmFlows, mean_flows
 from conrod.orbit.characteristics import cycle_characteristics
@@ -30,6 +33,7 @@ from conrod.orbit.problem import OrbitProblem
 from conrod.results.cycle_results import CycleResults
 from conrod.results.thermal import ThermalFilmResults
 from conrod.simulation.orbit_outputs import film_asperity_force
+from conrod.simulation.warm_film_run import WarmFilmBore, film_driven
 
 
 @dataclasses.dataclass(frozen=True)
@@ -59,13 +63,16 @@ def thermal_orbit(sim: Any, heat_balance: Callable, progress: Any = None) -> Any
 
 def thermal_film_orbit(sim: Any, progress: Any = None) -> ThermalFilmOrbit:
     """Orbit and film temperature iterated to the tolerance (module docstring)."""
-    problem, lubricant, s = sim.problem(), sim.case.lubricant, sim.solver
-    film = _thermal_film(problem, lubricant)
+    lubricant, s = sim.case.lubricant, sim.solver
     supply = lubricant.supply_temperature
     walls = _walls(s, supply)
+    warm = WarmFilmBore.start(sim, walls) if film_driven(sim) else None  # TEHD
+    problem = sim.problem() if warm is None else warm.current.problem()
+    film = _thermal_film(problem, lubricant)
     heat_capacity = lubricant.density_at(supply) * lubricant.specific_heat
     temperature = np.full(film.deformation_shape(), float(supply))
-    iterations = s.thermal_iterations if lubricant.temperature_dependent else 1
+    iterations = (s.thermal_iterations if lubricant.temperature_dependent or warm is not None
+                  else 1)
     state, cycles = None, 0
     for iteration in range(1, max(iterations, 1) + 1):
         current = _problem_at(problem, film, lubricant, temperature)
@@ -73,29 +80,41 @@ def thermal_film_orbit(sim: Any, progress: Any = None) -> ThermalFilmOrbit:
                                on_cycle=_reporter(progress, f"thermal film {iteration}"))
         cycles += orbit.cycles
         cycle = cycle_characteristics(current, orbit.last)
-        flows = cycle_flows(current, cycle)
+        flows = cycle_flows(current, cycle, orbit.last.film_memory)
         answer = solve_energy(flows, heat_capacity, supply, walls)
         change = (float(np.max(np.abs(answer.temperature - temperature)))
                   if lubricant.temperature_dependent else 0.0)  # μ(T) constant: no feedback
-        done = change <= s.thermal_tolerance or iteration >= iterations
-        if done:
+        if warm is not None:  # the warm bore's temperatures settle too
+            change = max(change, warm.target_change(answer, flows.area, walls))
+        if change <= s.thermal_tolerance or iteration >= iterations:
             break
         temperature = temperature + RELAXATION * (answer.temperature - temperature)
+        if warm is not None:  # c + Δc and h₀(θ) of the relaxed temperatures
+            warm.update(answer, flows.area, walls)
+            problem = warm.current.problem()
+            film = _thermal_film(problem, lubricant)
         state = orbit.last.end_state
     asperity = film_asperity_force(current, cycle, orbit.last.film_memory)
     result = _results(answer, flows, film, walls, cycle, (iteration, change), s, lubricant)
+    if warm is not None:
+        result = dataclasses.replace(result, warm_bore=warm.results())
     return ThermalFilmOrbit(orbit, current, cycle, result.mean_temperature, cycles, iteration,
                             asperity, result)
 
 
-def cycle_flows(problem: OrbitProblem, cycle: CycleResults) -> FilmFlows:
+def cycle_flows(problem: OrbitProblem, cycle: CycleResults,
+                film_memory: list | None = None) -> FilmFlows:
     """Cycle-mean fluxes and dissipation: one warm-started film solve per output angle
-    (equally spaced in time at a constant crank speed) [m³/s, W]."""
+    (equally spaced in time at a constant crank speed) [m³/s, W]; a film on a deforming bore
+    (:class:`~conrod.film.capabilities.HasDeformedGap`) starts each from the memory the
+    orbit sampled there (``film_memory``: its bore deformation and crank angle)."""
     film = problem.film
     memory = film.initial_memory()
+    sampled = film_memory if isinstance(film, HasDeformedGap) else None
     samples = []
     for i in range(len(cycle.crank_angle)):
-        flows, memory = film.film_flows(problem.row_state(cycle, i), memory)
+        start = memory if sampled is None else sampled[i]
+        flows, memory = film.film_flows(problem.row_state(cycle, i), start)
         samples.append(flows)
     return mean_flows(samples)
 

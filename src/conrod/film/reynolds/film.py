@@ -259,9 +259,10 @@ class ReynoldsFilm:
         return evaluate_pressure(self, state, memory)
 
     def exact_thickness_response(self) -> bool:
-        """True when isoviscous without a viscosity field: a pressure-dependent viscosity
+        """True when isoviscous (with or without a viscosity field: its conductances are
+        those of h_μ, :mod:`conrod.film.reynolds.response`): a pressure-dependent viscosity
         maps the solved field nonlinearly to the pressure [-]."""
-        return self.pressure_viscosity is None and self.viscosity_field is None
+        return self.pressure_viscosity is None
 
     def thickness_response(self, state: FilmState, solved: Any, nodal: np.ndarray,
                            rate_step: float | None, tilt: tuple[float, float] | None = None):

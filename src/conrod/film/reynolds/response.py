@@ -7,7 +7,10 @@ a linear system K_AA(h) p_A = b(h, ḣ) (:mod:`conrod.film.linearised`). A displ
 film row j changes h by u_j at every axial node of the row (a 2-D housing deforms alike at
 every z) and, when the rate is in the squeeze term, ḣ by u_j/τ_r; a displacement u_jk of
 one film node (a housing that deforms along the width) changes h and ḣ at that node alone;
-a journal velocity v changes ḣ by −(v_x cos θ + v_y sin θ). For a fixed active set each
+a journal velocity v changes ḣ by −(v_x cos θ + v_y sin θ). With a viscosity field μ(θ, z)
+the conductances are those of h_μ = h (μ_r/μ)^{1/3}
+(:mod:`conrod.film.reynolds.viscosity_field`), which a direction moves by (h_μ/h) ∂h/∂q
+while the source moves with ∂h/∂q; one direction at a time. For a fixed active set each
 direction q costs one back-substitution with the same sparse LU factor, all directions in
 one compiled sweep (:mod:`conrod.numerics.sparse_lu`):
 
@@ -34,6 +37,7 @@ from scipy.sparse import coo_matrix
 from conrod.film.base import FilmResult
 from conrod.film.linearised import active_matrix
 from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds import viscosity_field as vf
 from conrod.film.reynolds.memory import ReynoldsMemory
 from conrod.film.reynolds.response_kernel import bore_node_imbalance, bore_row_imbalance
 from conrod.film.step_system import FilmResponse
@@ -44,7 +48,8 @@ from conrod.numerics.sparse_lu import ManyRightHandSides
 def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray,
                        rate_step: float | None,
                        tilt: tuple[float, float] | None = None) -> FilmResponse:
-    """∂f/∂u, ∂f/∂v, ∂F/∂u, ∂F/∂v of the isoviscous Reynolds ``film`` at the converged
+    """∂f/∂u, ∂f/∂v, ∂F/∂u, ∂F/∂v of the isoviscous Reynolds ``film`` (with its viscosity
+    field μ(θ, z), if any: :func:`_imbalance`) at the converged
     ``pressure`` [Pa] of the (deformed) ``state``; ``nodal`` W (n_θ, n_z + 1) [m²] for
     displacements of whole film rows, or w (n_θ (n_z + 1),) [m²] for displacements of single
     film nodes (row-major); ``rate_step`` τ_r [s] of the rate in the squeeze term (None: no
@@ -57,9 +62,13 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     problem = film.discrete_problem(state)
     grid = film.film_grid
     omega_sum = state.journal_speed + state.shell_speed
-    a_east, a_north, _ = kernel.assemble_coefficients(
-        problem.h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum,
-        state.viscosity)
+    conduction = problem.conduction  # a viscosity field: the conductances of h_μ
+    if conduction is None:
+        a_east, a_north, _ = kernel.assemble_coefficients(
+            problem.h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum,
+            state.viscosity)
+    else:
+        a_east, a_north = vf.field_conductances(conduction, grid)
     active = ~problem.fixed & (pressure > problem.cavitation)
     if not active.any():  # no film pressure (e.g. concentric, at rest): the full-film branch
         active = ~problem.fixed
@@ -69,12 +78,17 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     matrix, nodes = active_matrix(a_east, a_north, active)
     index = -np.ones(shape, dtype=np.int64)
     index[nodes] = np.arange(nodes[0].size)
-    right = (_node_directions if nodal.ndim == 1 else _row_directions)(
-        pressure, problem.h, rate, grid, omega_sum, state.viscosity, index)
+    if conduction is None:
+        right = (_node_directions if nodal.ndim == 1 else _row_directions)(
+            pressure, problem.h, rate, grid, omega_sum, state.viscosity, index)
+    else:
+        right = _field_directions(pressure, problem, rate, grid, omega_sum,
+                                  state.viscosity, nodal.ndim == 1, index)
     directions = _velocity_directions(film, shape, tilt)
     n_bore = right.shape[0]
     right = np.concatenate([right] + [-_imbalance(pressure, problem.h, dh, dh_rate, grid,
-                                                   omega_sum, state.viscosity)[nodes][None]
+                                                   omega_sum, state.viscosity,
+                                                   conduction)[nodes][None]
                                       for dh, dh_rate in directions])
     solved = _solve(matrix, right, many=nodal.ndim == 1)
     w_x, w_y = film.force_weights
@@ -166,11 +180,40 @@ def _node_directions(pressure, h, rate, grid, omega_sum, viscosity, index) -> np
     return -imbalance[:, active]
 
 
-def _imbalance(pressure, h, dh, dh_rate, grid, omega_sum, viscosity) -> np.ndarray:
+def _imbalance(pressure, h, dh, dh_rate, grid, omega_sum, viscosity,
+               conduction: np.ndarray | None = None) -> np.ndarray:
+    """∂r/∂q [Pa m^3] of a direction with ∂h/∂q = ``dh`` [-], ∂ḣ/∂q = ``dh_rate`` [1/s];
+    with a viscosity field (``conduction`` h_μ = h (μ_r/μ)^{1/3} [m]) the conductances move
+    with ∂h_μ/∂q = (h_μ/h) ∂h/∂q, the source with ∂h/∂q
+    (:mod:`conrod.film.reynolds.viscosity_field`)."""
+    dh, dh_rate = np.ascontiguousarray(dh), np.ascontiguousarray(dh_rate)
     d_east, d_north, d_source = kernel.coefficient_derivatives(
-        h, np.ascontiguousarray(dh), np.ascontiguousarray(dh_rate), grid.radius,
-        grid.d_theta, grid.d_z, omega_sum, viscosity)
+        h, dh, dh_rate, grid.radius, grid.d_theta, grid.d_z, omega_sum, viscosity)
+    if conduction is not None:
+        d_east, d_north, _ = kernel.coefficient_derivatives(
+            conduction, np.ascontiguousarray(dh * (conduction / h)), dh_rate, grid.radius,
+            grid.d_theta, grid.d_z, omega_sum, viscosity)
     return kernel.node_imbalance(pressure, d_east, d_north, d_source)
+
+
+def _field_directions(pressure, problem, rate, grid, omega_sum, viscosity,
+                      per_node: bool, index) -> np.ndarray:
+    """−∂r_A/∂u [Pa m^3] at the active nodes (``index`` as in :func:`_row_directions`) of
+    whole film rows (or, ``per_node``, single film nodes, row-major) on a film with a
+    viscosity field, one direction at a time (:func:`_imbalance`)."""
+    shape = pressure.shape
+    count = shape[0] * shape[1] if per_node else shape[0]
+    active = index >= 0
+    right = np.zeros((count, int(active.sum())))
+    for q in range(count):
+        dh = np.zeros(shape)
+        if per_node:
+            dh[divmod(q, shape[1])] = 1.0
+        else:
+            dh[q, :] = 1.0
+        right[q] = -_imbalance(pressure, problem.h, dh, rate * dh, grid, omega_sum,
+                               viscosity, problem.conduction)[active]
+    return right
 
 
 @dataclass(frozen=True)
