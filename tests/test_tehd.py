@@ -139,6 +139,11 @@ def test_the_tehd_run_converges_conserves_energy_and_reports_its_bore(tehd_run):
     items = elastic_summary_items(tehd_run)["thermal_film"]
     assert items["warm_bore_out_of_round_um"] == pytest.approx(warm.out_of_round * 1e6)
     assert "bore warm from the film" in film.headline_text()
+    from conrod.results.summary import headline
+
+    # one truth: the headline printed for the elastic run is summary.json's
+    assert headline(tehd_run)["temperature"] == film.headline_text()
+    assert headline(tehd_run) == headline(tehd_run.elastic) | dict(tehd_run.headline_extra)
     from conrod.output.registry import figures
     from conrod.output.thermal_tables import thermal_outputs
 

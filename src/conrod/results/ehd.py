@@ -207,6 +207,18 @@ class ElasticRunResults:
         """The case as run (:class:`conrod.results.case_record.CaseRecord`)."""
         return self.elastic.case_record
 
+    @property
+    def thermal_film(self) -> Any:
+        """The elastic answer's film temperature field (``[solver] thermal = "film"``), or
+        None (:class:`conrod.results.thermal.ThermalFilmResults`)."""
+        return self.elastic.thermal_film
+
+    @property
+    def thermal_maps(self) -> Any:
+        """The elastic answer's temperature maps at chosen crank angles, or None
+        (:class:`conrod.results.thermal_maps.ThermalMapsResults`)."""
+        return self.elastic.thermal_maps
+
     def firing_comparison(self) -> dict[str, Any]:
         """h_min and p_max, rigid and elastic, over the firing stroke (±90° around firing
         TDC) [µm, MPa, deg], with the relative difference [%]."""
