@@ -32,8 +32,10 @@ import ctypes
 import multiprocessing
 import os
 import pickle
+import queue
 import signal
 import sys
+import threading
 import warnings
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -180,6 +182,11 @@ def _serve(jobs: list[tuple[Any, Callable[[], Any]]], connection: Any) -> None:
         os.dup2(null, descriptor)
     sys.stdout = sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - for the process's life
     warnings.simplefilter("ignore")
+    # a result is larger than the pipe holds, and the run reads it only when it needs it:
+    # a thread sends while the next job computes (sending from here would stall the jobs)
+    outbox: queue.Queue = queue.Queue()
+    sender = threading.Thread(target=_send_all, args=(outbox, connection), daemon=True)
+    sender.start()
     for key, job in jobs:
         try:
             outcome = (key, DONE, job())
@@ -187,10 +194,18 @@ def _serve(jobs: list[tuple[Any, Callable[[], Any]]], connection: Any) -> None:
             outcome = (key, RAISED, error) if _sendable(error) else (key, LOST, None)
         except BaseException:  # anything else is computed again there
             outcome = (key, LOST, None)
+        outbox.put(outcome)
+    outbox.put(None)
+    sender.join()
+
+
+def _send_all(outbox: queue.Queue, connection: Any) -> None:
+    """Send the outcomes put in ``outbox`` in order until None (the sending thread)."""
+    while (outcome := outbox.get()) is not None:
         try:
             connection.send(outcome)
         except Exception:  # not picklable: computed again there
-            connection.send((key, LOST, None))
+            connection.send((outcome[0], LOST, None))
 
 
 def _sendable(error: BaseException) -> bool:
