@@ -90,15 +90,24 @@ def main() -> None:
     header = ("run", "h_min [µm]", "p_max [MPa]", "film max temperature [°C] (where)",
               "journal / shell [°C]", "friction power [W]",
               "heat [W] = oil + journal + shell", "cycles", "wall / CPU [s]")
-    lines = ["# Thermal film: cost and answers", "",
-             f"`python benchmarks/thermal_benchmarks.py` on {platform.processor() or 'cpu'}, "
-             f"{os.cpu_count()} cores (shared), Python {platform.python_version()}; "
-             "Reynolds 72 × 16, rigid bore, one run each after a coarse warm-up of each mode.",
+    write_table(OUTPUT, "# Thermal film: cost and answers", "",
+                "Reynolds 72 × 16, rigid bore, one run each after a coarse warm-up of each mode.",
+                header, [row(*r) for r in runs],
+                f"Cost of the thermal film on the thermal example: **{ratio:.2f}× wall, "
+                f"{cpu_ratio:.2f}× CPU** of the heat-balance run (target ≤ 2×).")
+
+
+def write_table(path, title: str, option: str, setting: str, header, rows, cost: str) -> None:
+    """The benchmark's markdown page (title, machine line, table, cost line), written and
+    printed."""
+    lines = [title, "",
+             f"`python benchmarks/thermal_benchmarks.py{option}` on "
+             f"{platform.processor() or 'cpu'}, {os.cpu_count()} cores (shared), Python "
+             f"{platform.python_version()}; {setting}",
              "", "| " + " | ".join(header) + " |", "|" + " --- |" * len(header)]
-    lines += ["| " + " | ".join(row(*r)) + " |" for r in runs]
-    lines += ["", f"Cost of the thermal film on the thermal example: **{ratio:.2f}× wall, "
-              f"{cpu_ratio:.2f}× CPU** of the heat-balance run (target ≤ 2×)."]
-    write_text(OUTPUT, "\n".join(lines) + "\n")
+    lines += ["| " + " | ".join(r) + " |" for r in rows]
+    lines += ["", cost]
+    write_text(path, "\n".join(lines) + "\n")
     print("\n".join(lines))
 
 
@@ -155,18 +164,14 @@ def main_elastic() -> None:
               "bore from the film: Δc / thermal out-of-round [µm] (T_j, T_b range, housing "
               "mean [°C])", "joint over the run", "thermal iterations", "cycles",
               "wall / CPU [s]")
-    lines = ["# Thermal film on the elastic bore (TEHD): cost and answers", "",
-             f"`python benchmarks/thermal_benchmarks.py --elastic` on "
-             f"{platform.processor() or 'cpu'}, {os.cpu_count()} cores (shared), Python "
-             f"{platform.python_version()}; Reynolds 72 × 16 on the built-in elastic rod, no "
-             "rigid companion run, one run each after a coarse warm-up of each mode.",
-             "", "| " + " | ".join(header) + " |", "|" + " --- |" * len(header)]
-    lines += ["| " + " | ".join(elastic_row(*r)) + " |" for r in runs]
-    lines += ["", f"Cost of the thermal film on the elastic bore (TEHD example without assembly "
-              f"and warm bore): **{ratio:.2f}× wall, {cpu_ratio:.2f}× CPU** of the elastic "
-              "heat-balance run (target ≤ 2×)."]
-    write_text(OUTPUT.with_name("thermal_benchmarks_elastic.md"), "\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_table(OUTPUT.with_name("thermal_benchmarks_elastic.md"),
+                "# Thermal film on the elastic bore (TEHD): cost and answers", " --elastic",
+                "Reynolds 72 × 16 on the built-in elastic rod, no rigid companion run, one run "
+                "each after a coarse warm-up of each mode.", header,
+                [elastic_row(*r) for r in runs],
+                f"Cost of the thermal film on the elastic bore (TEHD example without assembly "
+                f"and warm bore): **{ratio:.2f}× wall, {cpu_ratio:.2f}× CPU** of the elastic "
+                "heat-balance run (target ≤ 2×).")
 
 
 if __name__ == "__main__":

@@ -40,21 +40,30 @@ def _setup():
     return film, theta, bore, np.array([0.01, -0.02]), evaluate
 
 
+def bore_differences(evaluate, bore: np.ndarray, velocity: np.ndarray
+                     ) -> tuple[np.ndarray, np.ndarray]:
+    """Central differences (step 1e-10 m) of the nodal loads (n × n) [N/m per m] and the
+    film force (2 × n) [N/m] by each bore displacement, ``evaluate(u, v)`` returning
+    (state, pressure, nodal loads, force)."""
+    nodal = np.empty((len(bore), len(bore)))
+    force = np.empty((2, len(bore)))
+    for j in range(len(bore)):
+        step = np.zeros(len(bore))
+        step[j] = 1e-10
+        _, _, f_plus, force_plus = evaluate(bore + step, velocity)
+        _, _, f_minus, force_minus = evaluate(bore - step, velocity)
+        nodal[:, j] = (f_plus - f_minus) / 2e-10
+        force[:, j] = (force_plus - force_minus) / 2e-10
+    return nodal, force
+
+
 def test_response_matches_central_differences():
     film, theta, bore, velocity, evaluate = _setup()
     deformed, pressure, forces, _ = evaluate(bore, velocity)
     weights = nodal_force_weights(film, theta, RADIUS)
     assert np.allclose(np.sum(weights * pressure, axis=1), forces, rtol=1e-13, atol=0.0)
     response = film.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
-    nodal = np.empty((len(theta), len(theta)))
-    force = np.empty((2, len(theta)))
-    for j in range(len(theta)):
-        step = np.zeros(len(theta))
-        step[j] = 1e-10
-        _, _, f_plus, force_plus = evaluate(bore + step, velocity)
-        _, _, f_minus, force_minus = evaluate(bore - step, velocity)
-        nodal[:, j] = (f_plus - f_minus) / 2e-10
-        force[:, j] = (force_plus - force_minus) / 2e-10
+    nodal, force = bore_differences(evaluate, bore, velocity)
     assert np.max(np.abs(nodal - response.nodal_by_bore)) <= 1e-6 * np.max(np.abs(nodal))
     assert np.max(np.abs(force - response.force_by_bore)) <= 1e-6 * np.max(np.abs(force))
     # the check is not vacuous: a third of the rows carry pressure

@@ -15,6 +15,7 @@ from conrod.film.rated_state import rated
 from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.film.reynolds.memory import ReynoldsMemory
 from conrod.housing.transfer import nodal_forces
+from test_ehd_response import bore_differences
 
 RADIUS, CLEARANCE, STEP = 0.04, 5.0e-5, 1.0e-4  # [m], [m], rate time step [s]
 
@@ -52,15 +53,7 @@ def test_response_with_a_viscosity_field_matches_central_differences():
     deformed, pressure, _, _ = evaluate(bore, velocity)
     weights = nodal_force_weights(film, theta, RADIUS)
     response = film.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
-    nodal = np.empty((len(theta), len(theta)))
-    force = np.empty((2, len(theta)))
-    for j in range(len(theta)):
-        step = np.zeros(len(theta))
-        step[j] = 1e-10
-        _, _, f_plus, force_plus = evaluate(bore + step, velocity)
-        _, _, f_minus, force_minus = evaluate(bore - step, velocity)
-        nodal[:, j] = (f_plus - f_minus) / 2e-10
-        force[:, j] = (force_plus - force_minus) / 2e-10
+    nodal, force = bore_differences(evaluate, bore, velocity)
     assert np.max(np.abs(nodal - response.nodal_by_bore)) <= 1e-6 * np.max(np.abs(nodal))
     assert np.max(np.abs(force - response.force_by_bore)) <= 1e-6 * np.max(np.abs(force))
     assert np.count_nonzero(np.max(np.abs(response.nodal_by_bore), axis=0)) >= len(theta) // 3

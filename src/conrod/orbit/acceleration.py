@@ -43,7 +43,7 @@ class CycleMapHistory:
     depth : int  Differences of pairs used [-].
     """
 
-    def __init__(self, limit: float, depth: int):
+    def __init__(self, limit: float, depth: int = DEPTH):
         self.limit = limit
         self.depth = depth
         self.starts: list[np.ndarray] = []
@@ -80,9 +80,6 @@ class AndersonMixing(CycleMapHistory):
     limit : float  Largest |position| of a proposal, scaled like the state [-].
     depth : int  Residual differences used [-].
     """
-
-    def __init__(self, limit: float, depth: int = DEPTH):
-        super().__init__(limit, depth)
 
     def propose(self, start: np.ndarray, image: np.ndarray) -> np.ndarray | None:
         """Next start after the cycle ``start`` → ``image`` (scaled states, positions

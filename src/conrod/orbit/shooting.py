@@ -55,7 +55,7 @@ class CycleShooting(CycleMapHistory):
     """
 
     def __init__(self, limit: float, depth: int = DEPTH):
-        super().__init__(limit, depth)
+        super().__init__(limit, depth)  # its own default: more pairs than Anderson's
 
     def propose(self, start: np.ndarray, image: np.ndarray) -> np.ndarray | None:
         """Next start after the cycle ``start`` → ``image`` (scaled states, positions
