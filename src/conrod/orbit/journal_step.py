@@ -10,8 +10,7 @@ inertia and the load: with e = e_r + τ v and a = (v − v_r)/τ its balance is
 
 (A the Greenwood–Tripp asperity force on the rigid shell when the film does not carry it,
 left out of the Jacobian), and the Newton iteration of :mod:`conrod.numerics.newton` solves
-y and v together, with a fresh Jacobian after the first update of a step
-(``refresh_after_first``).
+y and v together, the inverse Jacobian carried from step to step with Broyden's updates.
 """
 
 from __future__ import annotations
@@ -87,8 +86,6 @@ def solve_journal_step(film, request: StepRequest, guess: np.ndarray, velocity_s
         newton = solve_step(JournalStep(system, request, extra_force), guess, request.load,
                             NewtonControls(system.scale, velocity_scale, system.tolerance,
                                            system.max_solves, system.chord,
-                                           refresh_after_first=getattr(
-                                               system, "refresh_after_first", True),
                                            force_tolerance=getattr(
                                                system, "force_tolerance", FORCE_TOLERANCE)))
     except (CaseError, ConvergenceError):

@@ -109,7 +109,6 @@ class SolveSystem:
     """A film's solve at the end of the step; ∂Q/∂v by forward differences. The Jacobian is
     carried from step to step while it contracts (a rigid film's changes slowly)."""
 
-    refresh_after_first = False
     force_tolerance = FORCE_TOLERANCE
 
     def __init__(self, owner: FilmTiltSystems, request: StepRequest, chord: ChordJacobian):

@@ -23,8 +23,10 @@ def sweep(film: Any, level: Any, pressure: np.ndarray, state: FilmState, toleran
     ``film`` in place on ``pressure`` [Pa] (its Dirichlet values already there when
     ``fixed_set``); (sweeps, last relative change [-]); the coefficients are left in
     ``level.coefficients``. :class:`ConvergenceError` beyond ``film.max_iterations``."""
-    symmetric = (film.symmetric and state.deformation is None and not state.tilted
-                 and level.grid.n_z % 4 == 0 and vf.mirror_symmetric(level.conduction))
+    symmetric = (film.symmetric and not state.tilted and level.grid.n_z % 4 == 0
+                 and (state.deformation is None or (vf.mirror_symmetric(level.h)
+                                                    and vf.mirror_symmetric(level.h_rate)))
+                 and vf.mirror_symmetric(level.conduction))
     g = level.grid
     a_east, a_north, source = kernel.assemble_coefficients(
         level.h, level.h_rate, g.radius, g.d_theta, g.d_z,
