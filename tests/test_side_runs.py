@@ -151,3 +151,40 @@ def _untimed(value):
     if isinstance(value, str):
         return re.sub(r"\(\d+(\.\d+)? s\)", "", value)
     return value
+
+
+STAT_BEFORE = """cpu  300 0 100 1600 0 0 0 0 0 0
+cpu0 200 0 50 750 0 0 0 0 0 0
+cpu1 100 0 50 850 0 0 0 0 0 0
+intr 12345
+"""
+STAT_AFTER = """cpu  390 0 110 1700 0 0 0 0 0 0
+cpu0 290 0 60 750 0 0 0 0 0 0
+cpu1 100 0 50 950 0 0 0 0 0 0
+intr 12399
+"""
+
+
+def test_busy_cores_from_the_per_core_counters():
+    """Between the readings core 0 was busy all 100 ticks, core 1 idle all 100: one core in
+    use, whichever cores are usable."""
+    assert side_runs.busy_cores(STAT_BEFORE, STAT_AFTER, None) == pytest.approx(1.0)
+    assert side_runs.busy_cores(STAT_BEFORE, STAT_AFTER, [1]) == pytest.approx(0.0)
+    assert side_runs.busy_cores(STAT_BEFORE, STAT_AFTER, [0]) == pytest.approx(1.0)
+    assert side_runs.busy_cores(STAT_BEFORE, STAT_AFTER, [2]) is None  # not counted
+    assert side_runs.busy_cores(STAT_BEFORE, STAT_BEFORE, None) is None  # no time passed
+
+
+def test_load_falls_back_to_the_load_average_without_counters(monkeypatch, tmp_path):
+    monkeypatch.setattr(side_runs, "PROC_STAT", str(tmp_path / "missing"))
+    monkeypatch.setattr(side_runs.os, "getloadavg", lambda: (0.7, 0.5, 0.4))
+    assert side_runs._load() == 0.7
+
+
+def test_load_of_this_machine_is_a_share_of_its_usable_cores():
+    """Read from this machine's counters (or its load average): between 0 and the usable
+    cores (the load average may exceed them)."""
+    os = side_runs.os
+    load = side_runs._load()
+    usable = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    assert 0.0 <= load <= max(usable, os.getloadavg()[0]) + 1e-9

@@ -13,8 +13,9 @@ again in the run's own process. The forked process writes nothing (its output go
 null device) and ends with the run.
 
 Not in a worker process (a sweep's workers have their cores), not where ``fork`` is
-missing or only one core is usable, and only while the load average leaves a core idle (on
-a busy machine the second process would only take the CPU time it saves);
+missing or only one core is usable, and only while a core is idle now (sampled over 0.1 s
+from the per-core counters; on a busy machine the second process would only take the CPU
+time it saves);
 ``CONROD_SIDE_RUNS=0`` turns it off.
 
 .. code-block:: python
@@ -36,6 +37,7 @@ import queue
 import signal
 import sys
 import threading
+import time
 import warnings
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -67,12 +69,60 @@ def wanted() -> bool:
     return len(usable) > 1 and _load() < len(usable) - 1  # a core that nothing else uses
 
 
+LOAD_WINDOW = 0.1
+"""How long the usable cores' use is sampled before the process starts [s]."""
+PROC_STAT = "/proc/stat"
+"""Linux's CPU time counters per core."""
+
+
 def _load() -> float:
-    """1-minute load average [-] (0 where the system has none)."""
+    """Cores in use by other processes now [-]: the usable cores' busy share over
+    :data:`LOAD_WINDOW` (this process sleeps meanwhile), from Linux's per-core counters;
+    the 1-minute load average where there are none, 0 where neither exists. The load
+    average lags a minute: right after ``pip install .`` or another run it reads 1 on an
+    idle 2-core machine and kept the second process off."""
+    usable = sorted(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else None
+    try:
+        with open(PROC_STAT, encoding="ascii") as stat:
+            before = stat.read()
+        time.sleep(LOAD_WINDOW)
+        with open(PROC_STAT, encoding="ascii") as stat:
+            after = stat.read()
+        busy = busy_cores(before, after, usable)
+    except (OSError, ValueError):
+        busy = None
+    if busy is not None:
+        return busy
     try:
         return os.getloadavg()[0]
     except (AttributeError, OSError):
         return 0.0
+
+
+def busy_cores(before: str, after: str, cores: list[int] | None) -> float | None:
+    """Σ over ``cores`` (None: all) of the busy share of each core between two readings of
+    /proc/stat (``cpuN user nice system idle iowait ...`` in clock ticks; idle and iowait
+    count as idle) [-]; None where a core is missing or no time passed."""
+    def ticks(text: str) -> dict[int, tuple[int, int]]:
+        out = {}
+        for line in text.splitlines():
+            name, *fields = line.split()
+            if name.startswith("cpu") and name[3:].isdigit():
+                values = [int(v) for v in fields]
+                out[int(name[3:])] = (sum(values), values[3] + (values[4] if len(values) > 4
+                                                                 else 0))
+        return out
+    first, second = ticks(before), ticks(after)
+    chosen = sorted(first) if cores is None else cores
+    busy = 0.0
+    for core in chosen:
+        if core not in first or core not in second:
+            return None
+        total = second[core][0] - first[core][0]
+        if total <= 0:
+            return None
+        busy += 1.0 - (second[core][1] - first[core][1]) / total
+    return busy
 
 
 class SideRuns:
