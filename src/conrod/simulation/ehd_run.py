@@ -96,11 +96,10 @@ def _elastic_run(simulation, progress) -> ElasticRunResults:
     fields = {angle: diagnostics.pressures[row] for angle, row in rows.items()}
     stresses = _peak_load_stresses(film.housing, results, diagnostics)
     elastic_seconds = time.perf_counter() - start
-    rigid = side_runs.take(side_runs.RIGID)
+    companion = simulation.rigid_companion(integrator=name)  # same journal model as above
+    rigid = None if companion is None else side_runs.take(side_runs.RIGID)
     if rigid is side_runs.MISSING:
-        companion = simulation.rigid_companion(integrator=name)  # same journal model as above
-        rigid = None if companion is None else companion.run_orbit(
-            _staged(progress, "rigid "))[0]
+        rigid = companion.run_orbit(_staged(progress, "rigid "))[0]
     info = {
         "housing_model": simulation.case.housing.model,
         "bore_nodes": int(len(film.housing.angles)),

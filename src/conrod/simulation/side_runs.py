@@ -5,18 +5,18 @@ An elastic run (``conrod run`` on an elastic ``[housing]``) computes, besides it
 orbit, the same bearing on a rigid bore and, for the grid error, its orbit on two coarser
 grids; none of them needs the elastic orbit's answer. Where a second core is idle, a forked
 process computes them one after the other while the elastic orbit runs, and hands each
-result over the moment the run needs it; numba's kernels it compiles on the way stay in
-the disk cache. The process runs the same code on the same input, so the answer is the same
-bit for bit; a solver's error there is raised in the run as it would have been, and a job it
-could not finish otherwise (a result that cannot be sent, the process ended) is computed
-again in the run's own process. The forked process writes nothing (its output goes to the
-null device) and ends with the run.
+result over the moment the run needs it; a job it has not started when the run needs it,
+or while the run waits for another, the run computes itself (work stealing). numba's
+kernels it compiles on the way stay in the disk cache. The process runs the same code on
+the same input, so the answer is the same bit for bit; a solver's error there is raised in
+the run as it would have been, and a job it could not finish otherwise (a result that
+cannot be sent, the process ended) is computed again in the run's own process. The forked
+process writes nothing (its output goes to the null device) and ends with the run.
 
 Not in a worker process (a sweep's workers have their cores), not where ``fork`` is
 missing or only one core is usable, and only while a core is idle now (sampled over 0.1 s
 from the per-core counters; on a busy machine the second process would only take the CPU
-time it saves);
-``CONROD_SIDE_RUNS=0`` turns it off.
+time it saves); ``CONROD_SIDE_RUNS=0`` turns it off.
 
 .. code-block:: python
 
@@ -37,12 +37,13 @@ import queue
 import signal
 import sys
 import threading
-import time
 import warnings
 from collections.abc import Callable, Iterator
 from typing import Any
 
 from conrod.errors import ConrodError
+from conrod.io.cores import load as _load
+from conrod.io.cores import spare_core
 
 SWITCH = "CONROD_SIDE_RUNS"
 """Environment variable: ``0`` turns the second process off."""
@@ -58,87 +59,41 @@ _active: contextvars.ContextVar[SideRuns | None] = contextvars.ContextVar(
 
 def wanted() -> bool:
     """True when a second process can pay here (see the module docstring)."""
-    if os.environ.get(SWITCH, "1") == "0":
-        return False
-    if multiprocessing.parent_process() is not None:  # a worker: its cores are taken
-        return False
-    if "fork" not in multiprocessing.get_all_start_methods():
-        return False
-    usable = os.sched_getaffinity(0) if hasattr(os, "sched_getaffinity") else range(
-        os.cpu_count() or 1)
-    return len(usable) > 1 and _load() < len(usable) - 1  # a core that nothing else uses
+    return os.environ.get(SWITCH, "1") != "0" and spare_core(_load)
 
 
-LOAD_WINDOW = 0.1
-"""How long the usable cores' use is sampled before the process starts [s]."""
-PROC_STAT = "/proc/stat"
-"""Linux's CPU time counters per core."""
-
-
-def _load() -> float:
-    """Cores in use by other processes now [-]: the usable cores' busy share over
-    :data:`LOAD_WINDOW` (this process sleeps meanwhile), from Linux's per-core counters;
-    the 1-minute load average where there are none, 0 where neither exists. The load
-    average lags a minute: right after ``pip install .`` or another run it reads 1 on an
-    idle 2-core machine and kept the second process off."""
-    usable = sorted(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else None
-    try:
-        with open(PROC_STAT, encoding="ascii") as stat:
-            before = stat.read()
-        time.sleep(LOAD_WINDOW)
-        with open(PROC_STAT, encoding="ascii") as stat:
-            after = stat.read()
-        busy = busy_cores(before, after, usable)
-    except (OSError, ValueError):
-        busy = None
-    if busy is not None:
-        return busy
-    try:
-        return os.getloadavg()[0]
-    except (AttributeError, OSError):
-        return 0.0
-
-
-def busy_cores(before: str, after: str, cores: list[int] | None) -> float | None:
-    """Σ over ``cores`` (None: all) of the busy share of each core between two readings of
-    /proc/stat (``cpuN user nice system idle iowait ...`` in clock ticks; idle and iowait
-    count as idle) [-]; None where a core is missing or no time passed."""
-    def ticks(text: str) -> dict[int, tuple[int, int]]:
-        out = {}
-        for line in text.splitlines():
-            name, *fields = line.split()
-            if name.startswith("cpu") and name[3:].isdigit():
-                values = [int(v) for v in fields]
-                out[int(name[3:])] = (sum(values), values[3] + (values[4] if len(values) > 4
-                                                                 else 0))
-        return out
-    first, second = ticks(before), ticks(after)
-    chosen = sorted(first) if cores is None else cores
-    busy = 0.0
-    for core in chosen:
-        if core not in first or core not in second:
-            return None
-        total = second[core][0] - first[core][0]
-        if total <= 0:
-            return None
-        busy += 1.0 - (second[core][1] - first[core][1]) / total
-    return busy
+OPEN, THERE, HERE = 0, 1, 2
+"""Who took a job: nobody yet, the second process, the run's own process [-]."""
 
 
 class SideRuns:
-    """The forked process and the pipe its results come through, in the order of its jobs."""
+    """The forked process, the pipe its results come through, and who took each job (a
+    shared array: the process takes the next job nobody took, the run a job the process
+    has not started)."""
 
-    def __init__(self, process: Any, connection: Any, keys: list[Any]):
-        self.process, self.connection, self.keys = process, connection, keys
+    def __init__(self, process: Any, connection: Any, jobs: list[tuple[Any, Any]],
+                 claims: Any):
+        self.process, self.connection, self.claims = process, connection, claims
+        self.jobs = dict(jobs)
+        self.keys = [key for key, _ in jobs]
         self.received: dict[Any, Any] = {}
+        self.taken: set[Any] = set()
 
     def take(self, key: Any) -> Any:
         """The job's result, waiting for it; the :class:`~conrod.errors.ConrodError` it
         raised, raised here; :data:`MISSING` when the process does not have it (not one of
-        its jobs, failed otherwise, or the process ended)."""
-        if key not in self.keys:
+        its jobs, not started there yet, failed otherwise, or the process ended): the run
+        computes it. While the job runs there, the run computes the jobs nobody took yet
+        itself, last first (work stealing: on a cold numba cache the process compiles the
+        rigid companion's kernels while the run does the coarse orbits)."""
+        if key not in self.keys or key in self.taken:
             return MISSING
+        self.taken.add(key)
         while key not in self.received and self.process is not None:
+            if _claim(self.claims, self.keys.index(key), HERE):
+                return MISSING
+            if self._compute_one_here(key):
+                continue
             try:
                 got, outcome, value = self.connection.recv()
             except (EOFError, OSError):  # the process ended: what is left is computed here
@@ -151,6 +106,18 @@ class SideRuns:
             raise value
         return value
 
+    def _compute_one_here(self, waiting_for: Any) -> bool:
+        """Compute the last job nobody took (not ``waiting_for``) here; True if one ran."""
+        for index in reversed(range(len(self.keys))):
+            other = self.keys[index]
+            if other != waiting_for and _claim(self.claims, index, HERE):
+                try:
+                    self.received[other] = (DONE, self.jobs[other]())
+                except ConrodError as error:  # raised when that job is taken, as there
+                    self.received[other] = (RAISED, error)
+                return True
+        return False
+
     def stop(self) -> None:
         """End the process now (its jobs are taken, or the run failed)."""
         process, self.process = self.process, None
@@ -161,6 +128,15 @@ class SideRuns:
             self.connection.close()
 
 
+def _claim(claims: Any, index: int, who: int) -> bool:
+    """Take job ``index`` for ``who`` if nobody took it; True if taken now."""
+    with claims.get_lock():
+        if claims[index] != OPEN:
+            return False
+        claims[index] = who
+        return True
+
+
 def start(jobs: list[tuple[Any, Callable[[], Any]]]) -> SideRuns | None:
     """A forked process running ``jobs`` ((key, function) in order; None when it cannot
     pay or there is nothing to run)."""
@@ -168,10 +144,11 @@ def start(jobs: list[tuple[Any, Callable[[], Any]]]) -> SideRuns | None:
         return None
     context = multiprocessing.get_context("fork")
     receiving, sending = context.Pipe(duplex=False)
-    process = context.Process(target=_serve, args=(jobs, sending), daemon=True)
+    claims = context.Array("b", len(jobs))
+    process = context.Process(target=_serve, args=(jobs, sending, claims), daemon=True)
     process.start()
     sending.close()
-    return SideRuns(process, receiving, [key for key, _ in jobs])
+    return SideRuns(process, receiving, jobs, claims)
 
 
 @contextlib.contextmanager
@@ -224,8 +201,9 @@ def _rigid_companion(simulation: Any) -> Any:
     return simulation.rigid_companion(integrator=name).run_orbit()[0]
 
 
-def _serve(jobs: list[tuple[Any, Callable[[], Any]]], connection: Any) -> None:
-    """The forked process: each job in turn, its result sent (or MISSING), silent."""
+def _serve(jobs: list[tuple[Any, Callable[[], Any]]], connection: Any, claims: Any) -> None:
+    """The forked process: each job nobody took in turn, its result sent (or MISSING),
+    silent."""
     _die_with_parent()
     null = os.open(os.devnull, os.O_WRONLY)
     for descriptor in (1, 2):  # the streams below Python's (which may be replaced)
@@ -237,7 +215,9 @@ def _serve(jobs: list[tuple[Any, Callable[[], Any]]], connection: Any) -> None:
     outbox: queue.Queue = queue.Queue()
     sender = threading.Thread(target=_send_all, args=(outbox, connection), daemon=True)
     sender.start()
-    for key, job in jobs:
+    for index, (key, job) in enumerate(jobs):
+        if not _claim(claims, index, THERE):  # the run computes it
+            continue
         try:
             outcome = (key, DONE, job())
         except ConrodError as error:  # raised there as here, where it survives the pipe

@@ -1,0 +1,84 @@
+"""How many of this machine's usable cores other processes use now: whether a second
+process of conrod's can pay (the rigid companion and coarse orbits beside an elastic orbit,
+:mod:`conrod.simulation.side_runs`; the figures of a result set,
+:mod:`conrod.output.registry`)."""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import time
+from collections.abc import Callable
+
+LOAD_WINDOW = 0.1
+"""How long the usable cores' use is sampled before the process starts [s]."""
+PROC_STAT = "/proc/stat"
+"""Linux's CPU time counters per core."""
+
+
+def load() -> float:
+    """Cores in use by other processes now [-]: the usable cores' busy share over
+    :data:`LOAD_WINDOW` (this process sleeps meanwhile), from Linux's per-core counters;
+    the 1-minute load average where there are none, 0 where neither exists. The load
+    average lags a minute: right after ``pip install .`` or another run it reads 1 on an
+    idle 2-core machine and kept the second process off."""
+    try:
+        with open(PROC_STAT, encoding="ascii") as stat:
+            before = stat.read()
+        time.sleep(LOAD_WINDOW)
+        with open(PROC_STAT, encoding="ascii") as stat:
+            after = stat.read()
+        busy = busy_cores(before, after, usable_cores())
+    except (OSError, ValueError):
+        busy = None
+    if busy is not None:
+        return busy
+    try:
+        return os.getloadavg()[0]
+    except (AttributeError, OSError):
+        return 0.0
+
+
+def busy_cores(before: str, after: str, cores: list[int] | None) -> float | None:
+    """Σ over ``cores`` (None: all) of the busy share of each core between two readings of
+    /proc/stat (``cpuN user nice system idle iowait ...`` in clock ticks; idle and iowait
+    count as idle) [-]; None where a core is missing or no time passed."""
+    def ticks(text: str) -> dict[int, tuple[int, int]]:
+        out = {}
+        for line in text.splitlines():
+            name, *fields = line.split()
+            if name.startswith("cpu") and name[3:].isdigit():
+                values = [int(v) for v in fields]
+                out[int(name[3:])] = (sum(values), values[3] + (values[4] if len(values) > 4
+                                                                 else 0))
+        return out
+    first, second = ticks(before), ticks(after)
+    chosen = sorted(first) if cores is None else cores
+    busy = 0.0
+    for core in chosen:
+        if core not in first or core not in second:
+            return None
+        total = second[core][0] - first[core][0]
+        if total <= 0:
+            return None
+        busy += 1.0 - (second[core][1] - first[core][1]) / total
+    return busy
+
+
+def usable_cores() -> list[int]:
+    """The cores this process may run on (its affinity; all where that is unknown)."""
+    if hasattr(os, "sched_getaffinity"):
+        return sorted(os.sched_getaffinity(0))
+    return list(range(os.cpu_count() or 1))
+
+
+def spare_core(busy: Callable[[], float] = load) -> bool:
+    """True where a forked second process gets a core of its own now: ``fork`` exists,
+    this is not itself a worker process (a sweep's workers have their cores), more than
+    one core is usable and fewer than all but one are ``busy`` (:func:`load`)."""
+    if multiprocessing.parent_process() is not None:
+        return False
+    if "fork" not in multiprocessing.get_all_start_methods():
+        return False
+    usable = usable_cores()
+    return len(usable) > 1 and busy() < len(usable) - 1
