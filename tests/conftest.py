@@ -15,6 +15,7 @@ for _variable in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 # workers already take the cores, and a run's behaviour must not depend on the load average
 # (tests/test_side_runs.py turns it on where it tests it).
 os.environ.setdefault("CONROD_SIDE_RUNS", "0")
+os.environ.setdefault("CONROD_FIGURE_PROCESS", "0")  # nor one drawing figures (its test)
 
 import matplotlib  # noqa: E402
 import pytest  # noqa: E402
