@@ -174,8 +174,9 @@ def draw_figures(specs: tuple[FigureSpec, ...], folder: Path) -> list[Path]:
     at least :data:`TWO_PROCESSES_FROM` figures and an idle core
     (:func:`conrod.io.cores.spare_core`) a forked process draws every second one meanwhile:
     the same code on the same data, the same bytes (README main job, 2-core machine: 14
-    figures in 2.0 s against 3.2 s in one process). What that process does not deliver (it failed or ended) is drawn here, where a
-    failure raises as it would have. ``CONROD_FIGURE_PROCESS=0`` turns it off."""
+    figures in 2.0 s against 3.2 s in one process). What that process does not deliver
+    (it failed or ended) is drawn here, where a failure raises as it would have.
+    ``CONROD_FIGURE_PROCESS=0`` turns it off."""
     here = [(spec, folder / spec.file) for spec in specs]
     if len(specs) < TWO_PROCESSES_FROM or os.environ.get(FIGURE_SWITCH, "1") == "0" \
             or not spare_core():
