@@ -90,3 +90,21 @@ def test_a_failing_figure_raises_in_the_writing_process(two_processes, tmp_path)
 
     with pytest.raises(RuntimeError, match="figure 1 cannot be drawn"):
         draw_figures(_specs(build_of), tmp_path)
+
+
+def test_a_stuck_process_is_ended_and_its_figures_drawn_here(two_processes, tmp_path,
+                                                             monkeypatch):
+    monkeypatch.setattr(registry, "FIGURE_WAIT_MIN", 0.5)
+    parent = os.getpid()
+
+    def build_of(i):
+        def build():
+            if os.getpid() != parent:
+                import time
+
+                time.sleep(60)  # stuck
+            return _Figure(f"figure {i}")
+        return build
+
+    paths = draw_figures(_specs(build_of), tmp_path)
+    assert all(p.read_text() == f"figure {i} drawn by {parent}" for i, p in enumerate(paths))

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import singledispatch
@@ -186,12 +187,17 @@ def draw_figures(specs: tuple[FigureSpec, ...], folder: Path) -> list[Path]:
     process = context.Process(target=_draw_there, args=(here[1::2], sending), daemon=True)
     process.start()
     sending.close()
+    started = time.perf_counter()
     for spec, path in here[0::2]:
         _save(spec.build(), path)
-    try:
-        delivered = receiving.recv()
+    mine = time.perf_counter() - started
+    try:  # its half takes about as long as this one: a process stuck much longer is ended
+        delivered = receiving.recv() if receiving.poll(
+            FIGURE_WAIT_SHARE * mine + FIGURE_WAIT_MIN) else False
     except (EOFError, OSError):  # the process ended without a word
         delivered = False
+    if process.is_alive() and delivered is not True:
+        process.kill()
     process.join()
     receiving.close()
     if delivered is not True:
@@ -202,6 +208,9 @@ def draw_figures(specs: tuple[FigureSpec, ...], folder: Path) -> list[Path]:
 
 TWO_PROCESSES_FROM = 3
 """Fewest figures drawn in two processes (below, the fork is not worth it) [-]."""
+FIGURE_WAIT_SHARE, FIGURE_WAIT_MIN = 3.0, 10.0
+"""The writer waits for the forked process at most this many times its own half's time
+plus this many seconds [-, s], then draws the rest itself."""
 FIGURE_SWITCH = "CONROD_FIGURE_PROCESS"
 """Environment variable: ``0`` draws every figure in the writing process."""
 
