@@ -268,3 +268,35 @@ def test_warm_started_force_is_smooth_enough_for_jacobians():
                                           eccentricity_y=0.1 * C, **base)))
     central = (plus - minus) / (2 * wide)
     assert np.linalg.norm(forward - central) < 1e-3 * np.linalg.norm(central)
+
+
+def test_symmetry_shortcut_on_a_bore_deformed_alike_over_the_width(monkeypatch):
+    """A bore displacement that is the same at every z (a 2-D housing) keeps the problem
+    mirror-symmetric: solved on z ≤ 0, equal to the full-width solve; a displacement that
+    differs between the halves is solved on the full width."""
+    from conrod.film.reynolds import sweep as sweep_module
+
+    taken = []
+    solve_on_grid = sweep_module.multigrid.solve_on_grid
+
+    def spied(*args):
+        taken.append(args[-1])
+        return solve_on_grid(*args)
+
+    monkeypatch.setattr(sweep_module.multigrid, "solve_on_grid", spied)
+    g = geometry(0.5)
+    theta = np.linspace(0.0, 2.0 * np.pi, 72, endpoint=False)
+    row = 0.2 * C * np.cos(theta - 0.4)
+    alike = np.repeat(row[:, None], 17, axis=1)
+    uneven = alike + 0.05 * C * np.linspace(-1.0, 1.0, 17)[None, :]
+    base = dict(eccentricity_x=0.5 * C, eccentricity_y=-0.2 * C, velocity_x=1e-3,
+                journal_speed=OMEGA, viscosity=MU)
+    for deformation, symmetric in ((alike, True), (uneven, False)):
+        state = FilmState(deformation=deformation, **base)
+        taken.clear()
+        half = ReynoldsFilm(g, n_theta=72, n_z=16, tolerance=1e-10).solve(
+            state, with_pressure=True)
+        assert taken == [symmetric]
+        full = ReynoldsFilm(g, n_theta=72, n_z=16, tolerance=1e-10,
+                            use_symmetry=False).solve(state, with_pressure=True)
+        assert np.max(np.abs(half.pressure - full.pressure)) < 1e-8 * full.max_pressure
