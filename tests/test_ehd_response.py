@@ -79,3 +79,36 @@ def test_response_matches_central_differences():
             np.abs(nodal))
         assert np.max(np.abs(force - response.force_by_velocity[:, k])) <= 1e-6 * np.max(
             np.abs(force))
+
+
+def test_half_width_response_equals_the_full_width_one(monkeypatch):
+    """The bore deformed alike over the width keeps the film mirror-symmetric: the
+    response solved on z ≤ 0 (the mirrored couplings folded) equals the one on all active
+    nodes (to round-off), and it is the one taken (the test above checks it against
+    differences)."""
+    from conrod.film.reynolds import response as response_module
+
+    film, theta, bore, velocity, evaluate = _setup()
+    deformed, pressure, _, _ = evaluate(bore, velocity)
+    weights = nodal_force_weights(film, theta, RADIUS)
+    halves = []
+    mirror_half = response_module._mirror_half
+
+    def spied(*args):
+        halves.append(mirror_half(*args))
+        return halves[-1]
+
+    monkeypatch.setattr(response_module, "_mirror_half", spied)
+    half = film.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
+    assert halves[0] is not None and halves[0][0].size < 0.6 * halves[0][1].size
+    monkeypatch.setattr(response_module, "MIRROR_HALF", False)
+    full = film.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
+    for name in ("nodal_by_bore", "nodal_by_velocity", "force_by_bore", "force_by_velocity"):
+        a, b = getattr(half, name), getattr(full, name)
+        assert np.max(np.abs(a - b)) <= 1e-10 * np.max(np.abs(b)), name
+    # an uneven bore over the width is not mirror-symmetric: all active nodes
+    uneven = dataclasses.replace(deformed, deformation=deformed.deformation
+                                 + np.linspace(0.0, 1e-7, deformed.deformation.shape[1]))
+    problem = film.discrete_problem(uneven)
+    active = ~problem.fixed & (pressure > problem.cavitation)
+    assert mirror_half(active, np.nonzero(active), pressure, problem) is None

@@ -23,6 +23,13 @@ response is the sum over k of the per-node one. This is the derivative of the di
 film wherever the active set does not
 switch under an infinitesimal move, which makes a Newton iteration of the film with a
 deforming bore converge in a few steps (semismooth Newton where it switches).
+
+Where the film is the same in both halves of its width (gap, rate, active set and pressure
+mirror-symmetric about the mid-plane: a bore deformed alike over the width, no tilt), the
+directions of whole film rows and of the journal velocity are symmetric too, and so are
+their ∂p_A/∂q: they are solved on the active nodes with z ≤ 0, with the couplings to the
+mirrored nodes folded onto their images (K_H = K_{H,A} E, E the expansion from the half to
+all active nodes), one LU of half the size.
 """
 
 from __future__ import annotations
@@ -90,7 +97,17 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
                                                    omega_sum, state.viscosity,
                                                    conduction)[nodes][None]
                                       for dh, dh_rate in directions])
-    solved = _solve(matrix, right, many=nodal.ndim == 1)
+    half = (_mirror_half(active, nodes, pressure, problem)
+            if MIRROR_HALF and tilt is None and nodal.ndim == 2 else None)
+    if half is None:
+        solved = _solve(matrix, right, many=nodal.ndim == 1)
+    else:  # one half of the width (module docstring)
+        keep, representative = half
+        expand = coo_matrix((np.ones(representative.size), (np.arange(representative.size),
+                                                            representative)),
+                            shape=(representative.size, keep.size)).tocsr()
+        reduced = (matrix.tocsr()[keep] @ expand).tocsc()
+        solved = ManyRightHandSides(reduced).solve_rows(right[:, keep])[:, representative]
     w_x, w_y = film.force_weights
     force = -np.stack([solved @ w_x[nodes], solved @ w_y[nodes]])
     response = FilmResponse(*_split(_nodal_response(solved, nodal, nodes, shape), n_bore),
@@ -101,6 +118,29 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     moment = -np.stack([solved @ m_x[nodes], solved @ m_y[nodes]])
     return replace(response, moment_by_bore=moment[:, :n_bore],
                    moment_by_velocity=moment[:, n_bore:])
+
+
+MIRROR_HALF = True
+"""Solve the directions of whole film rows on one half of the width where the film is
+mirror-symmetric about the mid-plane (module docstring) [-]."""
+
+
+def _mirror_half(active: np.ndarray, nodes, pressure: np.ndarray, problem
+                 ) -> tuple[np.ndarray, np.ndarray] | None:
+    """(the active nodes with z ≤ 0 (their places among the active nodes), each active
+    node's place among those: itself or its mirror image) where the film — active set,
+    pressure, gap, its rate and conductances — is the same in both halves of the width, an
+    odd number of axial nodes; else None."""
+    n_nodes = active.shape[1]
+    if n_nodes % 2 == 0 or not all(vf.mirror_symmetric(field) for field in (
+            active, pressure, problem.h, problem.h_rate, problem.conduction, problem.fixed)):
+        return None
+    rows_i, rows_j = nodes
+    mirrored = np.minimum(rows_j, n_nodes - 1 - rows_j)
+    keep = np.nonzero(rows_j <= (n_nodes - 1) // 2)[0]
+    place = -np.ones(active.shape, dtype=np.int64)
+    place[rows_i[keep], rows_j[keep]] = np.arange(keep.size)
+    return keep, place[rows_i, mirrored]
 
 
 def _solve(matrix, right: np.ndarray, many: bool) -> np.ndarray:
