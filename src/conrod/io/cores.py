@@ -18,21 +18,26 @@ PROC_STAT = "/proc/stat"
 
 def load() -> float:
     """Cores in use by other processes now [-]: the usable cores' busy share over
-    :data:`LOAD_WINDOW` (this process sleeps meanwhile), from Linux's per-core counters;
+    :data:`LOAD_WINDOW`, from Linux's per-core counters, less what this process used
+    meanwhile (its main thread sleeps, but a BLAS thread pool may spin on a core for a
+    while after its last call: a whole core in a program that imported NumPy before
+    conrod set BLAS to one thread);
     the 1-minute load average where there are none, 0 where neither exists. The load
     average lags a minute: right after ``pip install .`` or another run it reads 1 on an
     idle 2-core machine and kept the second process off."""
     try:
+        own, started = time.process_time(), time.monotonic()
         with open(PROC_STAT, encoding="ascii") as stat:
             before = stat.read()
         time.sleep(LOAD_WINDOW)
         with open(PROC_STAT, encoding="ascii") as stat:
             after = stat.read()
+        own = (time.process_time() - own) / max(time.monotonic() - started, 1e-9)
         busy = busy_cores(before, after, usable_cores())
     except (OSError, ValueError):
         busy = None
-    if busy is not None:
-        return busy
+    if busy is not None:  # less this process's own threads
+        return max(busy - own, 0.0)
     try:
         return os.getloadavg()[0]
     except (AttributeError, OSError):
