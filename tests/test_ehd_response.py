@@ -17,9 +17,17 @@ from conrod.housing.transfer import nodal_forces
 RADIUS, CLEARANCE, STEP = 0.04, 5.0e-5, 1.0e-4  # [m], [m], rate time step [s]
 
 
-def _setup():
+def plain_film() -> ReynoldsFilm:
+    """The isoviscous 36 × 8 film of these checks, with the bore's rate in its squeeze."""
     geometry = BearingGeometry(diameter=2 * RADIUS, width=0.03, radial_clearance=CLEARANCE)
-    film = ReynoldsFilm(geometry, n_theta=36, n_z=8).with_deformation_rate()
+    return ReynoldsFilm(geometry, n_theta=36, n_z=8).with_deformation_rate()
+
+
+def setup(film: ReynoldsFilm | None = None):
+    """(film, θ, a bore u, a journal velocity v, ``evaluate(u, v)`` → (state, pressure,
+    nodal loads, force)) of ``film`` (default :func:`plain_film`) at a fixed journal
+    position with a random bore and a bore rate over :data:`STEP`."""
+    film = plain_film() if film is None else film
     theta, z = film.grid()
     rng = np.random.default_rng(1)
     bore = 3e-6 * np.cos(2 * theta) + 1e-6 * rng.standard_normal(len(theta))
@@ -58,7 +66,7 @@ def bore_differences(evaluate, bore: np.ndarray, velocity: np.ndarray
 
 
 def test_response_matches_central_differences():
-    film, theta, bore, velocity, evaluate = _setup()
+    film, theta, bore, velocity, evaluate = setup()
     deformed, pressure, forces, _ = evaluate(bore, velocity)
     weights = nodal_force_weights(film, theta, RADIUS)
     assert np.allclose(np.sum(weights * pressure, axis=1), forces, rtol=1e-13, atol=0.0)
@@ -88,7 +96,7 @@ def test_half_width_response_equals_the_full_width_one(monkeypatch):
     differences)."""
     from conrod.film.reynolds import response as response_module
 
-    film, theta, bore, velocity, evaluate = _setup()
+    film, theta, bore, velocity, evaluate = setup()
     deformed, pressure, _, _ = evaluate(bore, velocity)
     weights = nodal_force_weights(film, theta, RADIUS)
     halves = []

@@ -4,25 +4,19 @@ field is the scalar answer), and the thermal film run on the elastic bore."""
 
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 import pytest
 
 from conrod.ehd.bore_system import nodal_force_weights
-from conrod.film.base import BearingGeometry, FilmState
+from conrod.film.base import FilmState
 from conrod.film.rated_state import rated
 from conrod.film.reynolds.film import ReynoldsFilm
 from conrod.film.reynolds.memory import ReynoldsMemory
-from conrod.housing.transfer import nodal_forces
-from test_ehd_response import bore_differences
-
-RADIUS, CLEARANCE, STEP = 0.04, 5.0e-5, 1.0e-4  # [m], [m], rate time step [s]
+from test_ehd_response import CLEARANCE, RADIUS, STEP, bore_differences, plain_film, setup
 
 
 def _field_film():
-    geometry = BearingGeometry(diameter=2 * RADIUS, width=0.03, radial_clearance=CLEARANCE)
-    film = ReynoldsFilm(geometry, n_theta=36, n_z=8).with_deformation_rate()
+    film = plain_film()
     theta, z = film.grid()
     # a hot zone after the load, cooler edges: μ between 0.5 and 1.6 times μ_r
     mu = 0.0095 * (1.0 + 0.5 * np.cos(theta - 0.8)[:, None]) * (
@@ -31,25 +25,8 @@ def _field_film():
 
 
 def test_response_with_a_viscosity_field_matches_central_differences():
-    film, theta, z = _field_film()
+    film, theta, bore, velocity, evaluate = setup(_field_film()[0])
     assert film.exact_thickness_response()
-    rng = np.random.default_rng(1)
-    bore = 3e-6 * np.cos(2 * theta) + 1e-6 * rng.standard_normal(len(theta))
-    reference = bore - 2e-7 * np.sin(theta)
-    state = FilmState(eccentricity_x=0.7 * CLEARANCE * np.cos(0.3),
-                      eccentricity_y=0.7 * CLEARANCE * np.sin(0.3), velocity_x=0.01,
-                      velocity_y=-0.02, journal_speed=272.0, viscosity=0.0095)
-
-    def evaluate(u, velocity):
-        moving = dataclasses.replace(state, velocity_x=velocity[0], velocity_y=velocity[1])
-        field = np.repeat(u[:, None], len(z), axis=1)
-        rate = np.repeat(((u - reference) / STEP)[:, None], len(z), axis=1)
-        deformed = rated(moving, field, rate)
-        result = film.solve(deformed, with_pressure=True)
-        return (deformed, result.pressure, nodal_forces(result.pressure, z, theta, RADIUS),
-                np.array([result.force_x, result.force_y]))
-
-    velocity = np.array([0.01, -0.02])
     deformed, pressure, _, _ = evaluate(bore, velocity)
     weights = nodal_force_weights(film, theta, RADIUS)
     response = film.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
@@ -66,8 +43,7 @@ def test_response_with_a_viscosity_field_matches_central_differences():
         assert np.max(np.abs(numeric - response.nodal_by_velocity[:, k])) <= 1e-6 * np.max(
             np.abs(numeric))
     # the scalar response is not the answer: the field matters in the response
-    scalar = ReynoldsFilm(film.geometry, n_theta=36, n_z=8).with_deformation_rate()
-    plain = scalar.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
+    plain = plain_film().thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
     assert np.max(np.abs(plain.nodal_by_bore - response.nodal_by_bore)) > 1e-2 * np.max(
         np.abs(nodal))
 
