@@ -181,15 +181,14 @@ def draw_figures(specs: tuple[FigureSpec, ...], folder: Path) -> list[Path]:
     here = [(spec, folder / spec.file) for spec in specs]
     if len(specs) < TWO_PROCESSES_FROM or os.environ.get(FIGURE_SWITCH, "1") == "0" \
             or not spare_core():
-        return [_save(spec.build(), path) for spec, path in here]
+        return _draw(here)
     context = multiprocessing.get_context("fork")
     receiving, sending = context.Pipe(duplex=False)
     process = context.Process(target=_draw_there, args=(here[1::2], sending), daemon=True)
     process.start()
     sending.close()
     started = time.perf_counter()
-    for spec, path in here[0::2]:
-        _save(spec.build(), path)
+    _draw(here[0::2])
     mine = time.perf_counter() - started
     try:  # its half takes about as long as this one: a process stuck much longer is ended
         delivered = receiving.recv() if receiving.poll(
@@ -201,8 +200,7 @@ def draw_figures(specs: tuple[FigureSpec, ...], folder: Path) -> list[Path]:
     process.join()
     receiving.close()
     if delivered is not True:
-        for spec, path in here[1::2]:
-            _save(spec.build(), path)
+        _draw(here[1::2])
     return [path for _, path in here]
 
 
@@ -215,11 +213,15 @@ FIGURE_SWITCH = "CONROD_FIGURE_PROCESS"
 """Environment variable: ``0`` draws every figure in the writing process."""
 
 
+def _draw(pairs: list[tuple[FigureSpec, Path]]) -> list[Path]:
+    """Build and save each figure of ``pairs`` (spec, path) in turn."""
+    return [_save(spec.build(), path) for spec, path in pairs]
+
+
 def _draw_there(pairs: list[tuple[FigureSpec, Path]], connection: Any) -> None:
     """The forked process: draw ``pairs`` and say whether all were saved."""
     try:
-        for spec, path in pairs:
-            _save(spec.build(), path)
+        _draw(pairs)
         connection.send(True)
     except BaseException:  # drawn again by the writing process, which raises
         connection.send(False)
