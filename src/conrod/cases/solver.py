@@ -65,9 +65,10 @@ class SolverSection(Section):
         default=1.0, gt=0.0, le=10.0, description="Crank-angle spacing of the results [deg]"
 )
     massless_start: bool = Field(
-        default=True,
+        default=False,
         description="Start the implicit orbit with mass from the periodic massless orbit "
-        "(fewer cycles); false: from the concentric position [-]",
+        "instead of the concentric position (with the shooting accelerator it saves no "
+        "time: docs/orbit.md) [-]",
 )
     accelerate_cycles: bool = Field(
         default=True,

@@ -1,12 +1,14 @@
 """Repeat cycles from the concentric start until the orbit is periodic.
 
 The orbit with mass by the ``implicit`` integrator (also through ``auto``) starts, when
-``[solver] massless_start`` is on, from the end of the periodic massless (quasi-static)
-orbit instead of the concentric position: the mass changes the orbit little, so it is
-periodic within two cycles (passenger car: 3 → 2 cycles; constant load on a Reynolds
-film: 5 → 2), and the massless cycles cost a fraction of one with mass. Cycles and
-periodicity error are those of the orbit with mass. Not on an elastic bore: there the
-massless orbit costs as much as the one with mass, which is periodic as fast from rest.
+``[solver] massless_start`` is on (off by default), from the end of the periodic massless
+(quasi-static) orbit instead of the concentric position: the mass changes the orbit
+little, so it is periodic within two cycles with mass (without the shooting accelerator:
+passenger car 3 → 2 cycles; constant load on a Reynolds film 5 → 2). With shooting (the
+default) the concentric start is periodic within two cycles on the shipped examples as
+well and the massless cycles only cost time (docs/orbit.md). Cycles and periodicity error
+are those of the orbit with mass. Not on an elastic bore: there the massless orbit costs
+as much as the one with mass, which is periodic as fast from rest.
 
 With ``[solver] accelerate_cycles`` (default) a cycle does not start where the last one
 ended but at the Anderson extrapolation of the cycle-to-cycle map
