@@ -114,7 +114,10 @@ def _coarse(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
 
 
 def coarse_cycle(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
-    """The periodic cycle of ``simulation`` on ``grid`` (elastic where it is elastic)."""
+    """The periodic cycle of ``simulation`` on ``grid`` (elastic where it is elastic): the
+    orbit and its characteristics alone (:meth:`~conrod.simulation.simulation.Simulation.
+    run_orbit`), without the elastic run's diagnostics (bore, stresses, film maps), which
+    the estimate does not read."""
     from conrod.simulation.simulation import Simulation
 
     staged = None
@@ -125,8 +128,11 @@ def coarse_cycle(simulation: Any, grid: tuple[int, int], progress: Any) -> Any:
                         integrator=simulation.solver.integrator, rigid_companion=False,
                         signoff=False,
                         **{**_overrides(simulation), "n_theta": grid[0], "n_z": grid[1]})
-    results = coarse.run(staged)
-    return getattr(results, "elastic", results).cycle
+    if coarse.elastic():
+        from conrod.simulation.ehd_run import check_integrator
+
+        check_integrator(coarse)
+    return coarse.run_orbit(staged)[0].cycle
 
 
 def _overrides(simulation: Any) -> dict[str, Any]:
