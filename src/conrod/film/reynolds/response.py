@@ -39,7 +39,7 @@ from typing import Any
 
 import numpy as np
 from scipy.linalg import lu_factor, lu_solve
-from scipy.sparse import coo_matrix
+from scipy.sparse import coo_matrix, csr_matrix
 
 from conrod.film.base import FilmResult
 from conrod.film.linearised import active_matrix
@@ -99,19 +99,20 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
                                       for dh, dh_rate in directions])
     half = (_mirror_half(active, nodes, pressure, problem)
             if MIRROR_HALF and tilt is None and nodal.ndim == 2 else None)
+    w_x, w_y = film.force_weights
     if half is None:
         solved = _solve(matrix, right, many=nodal.ndim == 1)
-    else:  # one half of the width (module docstring)
+        force = -np.stack([solved @ w_x[nodes], solved @ w_y[nodes]])
+        nodal_response = _nodal_response(solved, nodal, nodes, shape)
+    else:  # one half of the width (module docstring); its answer stays on the half
         keep, representative = half
-        expand = coo_matrix((np.ones(representative.size), (np.arange(representative.size),
-                                                            representative)),
-                            shape=(representative.size, keep.size)).tocsr()
-        reduced = (matrix.tocsr()[keep] @ expand).tocsc()
-        solved = ManyRightHandSides(reduced).solve_rows(right[:, keep])[:, representative]
-    w_x, w_y = film.force_weights
-    force = -np.stack([solved @ w_x[nodes], solved @ w_y[nodes]])
-    response = FilmResponse(*_split(_nodal_response(solved, nodal, nodes, shape), n_bore),
-                            force[:, :n_bore], force[:, n_bore:])
+        solved = ManyRightHandSides(_folded(matrix, keep, representative)).solve_rows(
+            right[:, keep])
+        force = -np.stack([solved @ _fold(w_x[nodes], representative, keep.size),
+                           solved @ _fold(w_y[nodes], representative, keep.size)])
+        nodal_response = _nodal_response(solved, nodal, nodes, shape, representative)
+    response = FilmResponse(*_split(nodal_response, n_bore), force[:, :n_bore],
+                            force[:, n_bore:])
     if tilt is None:
         return response
     m_x, m_y = film.moment_weights
@@ -143,6 +144,24 @@ def _mirror_half(active: np.ndarray, nodes, pressure: np.ndarray, problem
     return keep, place[rows_i, mirrored]
 
 
+def _folded(matrix, keep: np.ndarray, representative: np.ndarray):
+    """K_H = K_{H,A} E of :func:`_mirror_half` (CSC): the rows ``keep`` of the active
+    matrix with each column added onto its representative's."""
+    rows = matrix.tocsr()
+    starts, ends = rows.indptr[keep], rows.indptr[keep + 1]
+    lengths = ends - starts
+    taken = np.repeat(starts - np.concatenate(([0], np.cumsum(lengths)[:-1])), lengths) \
+        + np.arange(lengths.sum())
+    return csr_matrix((rows.data[taken], representative[rows.indices[taken]],
+                       np.concatenate(([0], np.cumsum(lengths)))),
+                      shape=(keep.size, keep.size)).tocsc()
+
+
+def _fold(weights: np.ndarray, representative: np.ndarray, size: int) -> np.ndarray:
+    """E^T w: the weights of the active nodes added onto their representatives [-]."""
+    return np.bincount(representative, weights=weights, minlength=size)
+
+
 def _solve(matrix, right: np.ndarray, many: bool) -> np.ndarray:
     """∂p_A/∂q (n_q, n_A) [Pa per unit q] of K_AA ∂p_A/∂q = −r_q for the rows of ``right``
     (−r_q, (n_q, n_A)); ``many``: directions of single film nodes."""
@@ -153,16 +172,19 @@ def _solve(matrix, right: np.ndarray, many: bool) -> np.ndarray:
     return ManyRightHandSides(matrix, "MMD_AT_PLUS_A").solve_rows(right)  # K_AA symmetric
 
 
-def _nodal_response(solved: np.ndarray, nodal: np.ndarray, nodes, shape) -> np.ndarray:
+def _nodal_response(solved: np.ndarray, nodal: np.ndarray, nodes, shape,
+                    representative: np.ndarray | None = None) -> np.ndarray:
     """∂f/∂q (n_f, n_q) of the nodal loads: per film row (``nodal`` W (n_θ, n_z + 1)) or
-    per film node (w flattened row-major) [N per unit q]."""
+    per film node (w flattened row-major) [N per unit q]; ``representative``: ``solved`` is
+    on the half of :func:`_mirror_half` (per film row only)."""
     if nodal.ndim == 1:
         flat = np.ravel_multi_index(nodes, shape)
         out = np.zeros((nodal.size, solved.shape[0]))
         out[flat] = (solved * nodal[flat]).T
         return out
-    rows = coo_matrix((nodal[nodes], (nodes[0], np.arange(nodes[0].size))),
-                      shape=(shape[0], nodes[0].size)).tocsr()
+    columns = np.arange(nodes[0].size) if representative is None else representative
+    rows = coo_matrix((nodal[nodes], (nodes[0], columns)),
+                      shape=(shape[0], solved.shape[1])).tocsr()
     return np.asarray(rows @ solved.T)
 
 
