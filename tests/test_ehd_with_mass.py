@@ -147,3 +147,43 @@ def test_vanishing_mass_approaches_the_massless_elastic_orbit():
     # steps with the backward rate), measured 0.4 % of the clearance
     assert abs(distances[2] - distances[1]) < 0.2 * distances[1]
     assert distances[2] < 1e-2
+
+
+def test_accepted_rows_read_the_steps_own_answer():
+    """The rows of the orbit with mass on the elastic bore are read from the memory of the
+    implicit step that ended there (its converged pressure on the bore it solved): the
+    same force, p_max and h_min as the film solved again from that memory, to the film
+    solver's tolerance, and side flow to 1e-6; no answer for another journal state or for a
+    memory whose pressure another solve replaced, nor at the start of the orbit (the run then
+    solves again)."""
+    import dataclasses
+
+    from conrod.film.reynolds.memory import ReynoldsMemory
+    from conrod.orbit.characteristics import cycle_characteristics
+    from conrod.orbit.periodic import periodic_orbit
+
+    simulation = Simulation(kamaz_case(**{**GRID, "integrator": "implicit", "max_cycles": 1,
+                                          "min_cycles": 1}), rigid_companion=False)
+    problem = simulation.problem()
+    film = problem.film
+    trajectory = periodic_orbit(problem, simulation.solver).last
+    cycle = cycle_characteristics(problem, trajectory)
+    start = trajectory.film_memory[0]  # the concentric start: no step ended there
+    assert film.accepted_result(problem.row_state(cycle, 0), start) is None
+    for i in range(1, len(cycle.crank_angle), 15):
+        state = problem.row_state(cycle, i)
+        memory = trajectory.film_memory[i]
+        answer = film.accepted_result(state, memory, with_pressure=True)
+        again, _ = film.solve_with_memory(state, memory, with_pressure=True)
+        assert answer is not None
+        scale = abs(complex(again.force_x, again.force_y))
+        assert abs(complex(answer.force_x - again.force_x, answer.force_y - again.force_y)) \
+            <= 1e-6 * scale
+        assert answer.max_pressure == pytest.approx(again.max_pressure, rel=1e-6)
+        assert answer.min_film_thickness == pytest.approx(again.min_film_thickness, rel=1e-9)
+        assert answer.side_flow == pytest.approx(again.side_flow, rel=1e-6)
+        assert answer.extra["coupling_residual_m"] == memory.residual
+        moved = dataclasses.replace(state, eccentricity_x=state.eccentricity_x * (1 + 1e-9))
+        assert film.accepted_result(moved, memory) is None
+        replaced = dataclasses.replace(memory, inner=ReynoldsMemory(memory.inner.pressure.copy()))
+        assert film.accepted_result(state, replaced) is None

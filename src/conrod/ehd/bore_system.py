@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from conrod.ehd.memory import content_bdf2, start_deformation
+from conrod.ehd.memory import answer_key, content_bdf2, start_deformation
 from conrod.film.base import FilmState
 from conrod.film.step_system import FilmResponse, StepRequest
 from conrod.film.tilt import pressure_moments
@@ -229,8 +229,10 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
             if free else columns
 
     def finish(outcome: NewtonOutcome):
+        inner = outcome.payload.memory()
         after = dataclasses.replace(
-            at_end, inner=outcome.payload.memory(), deformation=outcome.own,
+            at_end, inner=inner, deformation=outcome.own,
+            answered=(answer_key(outcome.payload.state), inner.pressure),
             iterations=outcome.solves, updates=outcome.updates, residual=outcome.residual,
             increment=outcome.increment,
             deformation_rate=float(np.max(np.abs(outcome.own - memory.deformation)))

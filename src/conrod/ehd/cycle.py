@@ -1,7 +1,11 @@
 """Per-crank-angle diagnostics of an elastohydrodynamic orbit.
 
-At every output crank angle the elastic film is solved once more from the memory sampled
-there (the coupling is already converged, so this is one film solve) and gives:
+At every output crank angle the elastic film's answer is read from the memory sampled
+there: the end of the implicit step that the orbit with mass accepted there holds that
+step's converged pressure on the deformation it solved
+(:meth:`conrod.ehd.film.ElasticFilm.accepted_result`); elsewhere (the massless orbit) the
+film is solved once more from that memory (the coupling is already converged, so this is
+one film solve). It gives:
 
 * ``coupling_iterations`` — film solves of the couplings on the accepted path of that step
   (the orbit's own trial solves for its Jacobian are not counted) [-];
@@ -30,6 +34,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
+from conrod.film.capabilities import accepted_film
 
 
 @dataclass(frozen=True)
@@ -87,7 +93,7 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool,
     pressures = {}
     for i, memory in enumerate(film_memory):
         state = problem.row_state(cycle, i)
-        result, after = film.solve_with_memory(state, memory, with_pressure=i in wanted)
+        result, after = accepted_film(film, state, memory, with_pressure=i in wanted)
         if i in wanted:
             pressures[i] = result.pressure
         force[i] = result.force_x, result.force_y
@@ -120,7 +126,7 @@ def asperity_forces(problem, cycle, film_memory: list) -> np.ndarray:
     film = problem.film
     forces = np.zeros(len(cycle.crank_angle))
     for i, memory in enumerate(film_memory):
-        result, _ = film.solve_with_memory(problem.row_state(cycle, i), memory)
+        result, _ = accepted_film(film, problem.row_state(cycle, i), memory)
         forces[i] = float(result.extra.get("asperity_force_N", 0.0))
     return forces
 

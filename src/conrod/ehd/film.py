@@ -77,6 +77,7 @@ from conrod.ehd.memory import (
     RATE_REFUSAL,
     ElasticMemory,
     ElasticSettings,
+    answer_key,
     extrapolated_deformation,
 )
 from conrod.ehd.viscosity_field import film_flows, with_viscosity_field
@@ -201,13 +202,8 @@ class ElasticFilm(FilmWrapper):
         result = dataclasses.replace(result, pressure=result.pressure if with_pressure
                                      else None, extra=dict(result.extra))
         u = outcome.deformation
-        result.extra.update({
-            "coupling_iterations": float(memory.iterations + outcome.iterations),
-            "coupling_residual_m": outcome.residual,
-            "deformation_increment_m": outcome.increment,
-            "bore_displacement_min_m": float(u.min()),
-            "bore_displacement_max_m": float(u.max()),
-            "deformation_rate_m_per_s": memory.deformation_rate})
+        result.extra.update(_coupling_extra(memory, u, memory.iterations + outcome.iterations,
+                                            outcome.residual, outcome.increment))
         return result, dataclasses.replace(
             memory, inner=inner, deformation=u, iterations=memory.iterations
             + outcome.iterations, residual=outcome.residual, increment=outcome.increment)
@@ -355,13 +351,10 @@ class ElasticFilm(FilmWrapper):
         """u [m] → (nodal forces [N], h_min [m], payload) of the base film on the bore
         deformed by u, with the rate (u − reference)/dt in the squeeze term; the payload is
         the film's pressure evaluation (exact path) or a :class:`SolvedPayload`."""
-        inner, reference = memory.inner, memory.reference
-        use_rate = self.settings.deformation_rate and reference is not None and (
-            memory.reference_dt > 0.0)
+        inner = memory.inner
 
         def evaluate(u: np.ndarray):
-            rate = self.film_field((u - reference) / memory.reference_dt) if use_rate else None
-            deformed = rated(state, self.film_field(u), rate)
+            deformed = self._deformed(state, memory, u)
             if self.exact:  # pressure only; the characteristics once, for the answer
                 solved = self.base.evaluate_pressure(deformed, inner)
                 if self.contact is not None:  # asperity pressure on the deformed film
@@ -372,6 +365,39 @@ class ElasticFilm(FilmWrapper):
             forces = self.housing.nodal_forces(result.pressure, self._z)
             return forces, result.min_film_thickness, SolvedPayload(result, after)
         return evaluate
+
+    def _deformed(self, state: FilmState, memory: ElasticMemory, u: np.ndarray) -> FilmState:
+        """``state`` on the bore deformed by u [m], with the rate (u − reference)/dt in the
+        squeeze term where the settings and ``memory`` have one."""
+        reference = memory.reference
+        use_rate = self.settings.deformation_rate and reference is not None and (
+            memory.reference_dt > 0.0)
+        rate = self.film_field((u - reference) / memory.reference_dt) if use_rate else None
+        return rated(state, self.film_field(u), rate)
+
+    def accepted_result(self, state: FilmState, memory: ElasticMemory, *,
+                        with_pressure: bool = False) -> FilmResult | None:
+        """The answer of the implicit step that ended at ``state`` with ``memory`` (its
+        converged pressure on the bore deformation it solved; :attr:`ElasticMemory.answered`)
+        with that step's coupling diagnostics; None when ``memory`` is not such an answer
+        (:class:`~conrod.film.capabilities.HasAcceptedAnswer`: the run solves the film
+        again there). Exact path only."""
+        answered = memory.answered
+        if (not self.exact or answered is None or state.journal_feed is not None
+                or answered[1] is not getattr(memory.inner, "pressure", None)
+                or answered[0] != answer_key(state)):
+            return None
+        solved = self.base.answered_evaluation(self._deformed(state, memory,
+                                                              memory.deformation),
+                                               memory.inner)
+        if self.contact is not None:  # asperity pressure on the deformed film
+            solved = self.contact.attach(solved)
+        result, _ = solved.finish()
+        result = dataclasses.replace(result, pressure=result.pressure if with_pressure
+                                     else None, extra=dict(result.extra))
+        result.extra.update(_coupling_extra(memory, memory.deformation, memory.iterations,
+                                            memory.residual, memory.increment))
+        return result
 
     def _responder(self, memory: ElasticMemory):
         """payload of :meth:`evaluator` → the film's exact response there
@@ -447,3 +473,12 @@ class ElasticFilm(FilmWrapper):
         return CouplingOutcome(outcome.own, outcome.payload, outcome.solves, outcome.residual,
                                outcome.increment, outcome.residual <= self.coupling.tolerance)
 
+
+def _coupling_extra(memory: ElasticMemory, u: np.ndarray, iterations: int, residual: float,
+                    increment: float) -> dict[str, float]:
+    """The coupling diagnostics of a result in ``FilmResult.extra`` (bore deformation u [m],
+    film solves, residual [m], last increment [m])."""
+    return {"coupling_iterations": float(iterations), "coupling_residual_m": residual,
+            "deformation_increment_m": increment, "bore_displacement_min_m": float(u.min()),
+            "bore_displacement_max_m": float(u.max()),
+            "deformation_rate_m_per_s": memory.deformation_rate}

@@ -35,6 +35,10 @@ class ElasticMemory:
     acceleration : ndarray or None  Journal acceleration (2,) at the end of an implicit step
         of the orbit with mass [m/s²]
         (:func:`conrod.ehd.bore_system.pressure_step_system`); None otherwise.
+    answered : tuple or None  (:func:`answer_key` of the journal state, the pressure array)
+        when ``inner`` holds the converged pressure of that state on ``deformation`` (the
+        end of such a step); None otherwise. The pressure is ``inner``'s own array, so a
+        memory whose inner answer another solve replaced no longer matches.
     """
 
     inner: Any
@@ -51,6 +55,15 @@ class ElasticMemory:
     reference_dt: float = 0.0
     clocked: bool = False
     acceleration: np.ndarray | None = None
+    answered: tuple | None = None
+
+
+def answer_key(state: Any) -> tuple[float, ...]:
+    """The journal's part of a film state (position, velocity, speeds, viscosity, tilt):
+    what :attr:`ElasticMemory.answered` is matched on [SI]."""
+    return (state.eccentricity_x, state.eccentricity_y, state.velocity_x, state.velocity_y,
+            state.journal_speed, state.shell_speed, state.viscosity, state.tilt_x,
+            state.tilt_y, state.tilt_rate_x, state.tilt_rate_y)
 
 
 @dataclass(frozen=True)

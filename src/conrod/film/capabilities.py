@@ -353,6 +353,11 @@ class HasPressureEvaluation(Protocol):
         """The pressure evaluation of ``state`` from ``memory`` (None: a cold start)."""
         ...
 
+    def answered_evaluation(self, state: FilmState, memory: Any) -> Any:
+        """The evaluation of ``state`` whose converged pressure ``memory`` already holds
+        (the answer of the step that solved it), without a solve."""
+        ...
+
 
 @runtime_checkable
 class HasAcceptedAnswer(Protocol):

@@ -258,6 +258,13 @@ class ReynoldsFilm:
 
         return evaluate_pressure(self, state, memory)
 
+    def answered_evaluation(self, state: FilmState, memory: ReynoldsMemory):
+        """The evaluation of ``state`` whose converged pressure ``memory`` holds, no solve
+        (:func:`~conrod.film.reynolds.response.answered_evaluation`)."""
+        from conrod.film.reynolds.response import answered_evaluation
+
+        return answered_evaluation(self, state, memory)
+
     def exact_thickness_response(self) -> bool:
         """True when isoviscous (with or without a viscosity field: its conductances are
         those of h_μ, :mod:`conrod.film.reynolds.response`): a pressure-dependent viscosity

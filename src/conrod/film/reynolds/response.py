@@ -344,6 +344,16 @@ class PressureEvaluation:
         return ReynoldsMemory(self.pressure)
 
 
+def answered_evaluation(film: Any, state, memory: ReynoldsMemory) -> PressureEvaluation:
+    """The evaluation of ``state`` by the isoviscous Reynolds ``film`` whose converged
+    pressure is ``memory``'s (the answer of the implicit step that solved it at this very
+    state): its characteristics are that answer's, not those of one more solve within the
+    solver's tolerance of it (no sweeps)."""
+    return PressureEvaluation(film, state, film.discrete_problem(state), memory.pressure,
+                              {"sweeps": 0.0, "relative_update": 0.0, "warm_start": 1.0,
+                               "multigrid": float(film.method == "multigrid")})
+
+
 def evaluate_pressure(film: Any, state, memory: ReynoldsMemory | None) -> PressureEvaluation:
     """Pressure of the isoviscous Reynolds ``film`` at ``state`` warm-started from
     ``memory`` (None: a cold start)."""
