@@ -38,11 +38,19 @@ from typing import Any
 
 import numpy as np
 
-from conrod.ehd.memory import answer_key, content_bdf2, start_deformation
+from conrod.ehd.coupling import CouplingOutcome
+from conrod.ehd.memory import answer_key, content_bdf2, coupling_extra, start_deformation
 from conrod.film.base import FilmState
 from conrod.film.step_system import FilmResponse, StepRequest
 from conrod.film.tilt import pressure_moments
-from conrod.numerics.newton import ChordJacobian, NewtonOutcome, StepBlocks, UpdateLimits
+from conrod.numerics.newton import (
+    ChordJacobian,
+    NewtonControls,
+    NewtonOutcome,
+    StepBlocks,
+    UpdateLimits,
+    solve_step,
+)
 
 STEP_SOLVES = 40
 """Most film steps of the mass-conserving film's step system before the step is left to the
@@ -252,6 +260,47 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
         share * film.inertia_deformation(request.crank_angle), start,
         UpdateLimits(settings.increment_share, travel), film.clearance,
         film.coupling.tolerance, 5 * settings.max_iterations, carried_chord(film, key), finish)
+
+
+def step_answer(film, state: FilmState, memory, with_pressure: bool):
+    """The answer of the implicit step of :func:`pressure_step_system` that ended at
+    ``state`` with ``memory``: its converged pressure on the bore deformation it solved
+    (``memory.answered``, matched to the journal state and to the pressure array ``inner``
+    holds), the characteristics from it and that step's coupling diagnostics; None when
+    ``memory`` is not such an answer (the run solves the film again there:
+    :class:`~conrod.film.capabilities.HasAcceptedAnswer`)."""
+    answered = memory.answered
+    if (answered is None or state.journal_feed is not None
+            or answered[1] is not getattr(memory.inner, "pressure", None)
+            or answered[0] != answer_key(state)):
+        return None
+    solved = film.base.answered_evaluation(film.deformed(state, memory, memory.deformation),
+                                           memory.inner)
+    if film.contact is not None:  # asperity pressure on the deformed film
+        solved = film.contact.attach(solved)
+    result, _ = solved.finish()
+    result = dataclasses.replace(result, pressure=result.pressure if with_pressure else None,
+                                 extra=dict(result.extra))
+    result.extra.update(coupling_extra(memory, memory.deformation, memory.iterations,
+                                       memory.residual, memory.increment))
+    return result
+
+
+def newton_coupling(film, memory, evaluate, inertia, operator) -> CouplingOutcome:
+    """G(u) = 0 of the elastic ``film`` at fixed kinematics (``evaluate``: u → nodal forces,
+    h_min, payload) by :func:`conrod.numerics.newton.solve_step` with no journal degree of
+    freedom, from ``memory``'s deformation."""
+    def fixed(u: np.ndarray, _v: np.ndarray):
+        forces, h_min, payload = evaluate(u)
+        return forces, np.zeros(0), h_min, payload
+
+    system = BoreSystem(fixed, film.responder(memory), operator, inertia, memory.deformation,
+                        UpdateLimits(film.settings.increment_share), film.clearance)
+    outcome = solve_step(system, np.zeros(0), np.zeros(0), NewtonControls(
+        film.clearance, 1.0, film.coupling.tolerance, film.settings.max_iterations,
+        film.chords["coupling"]))
+    return CouplingOutcome(outcome.own, outcome.payload, outcome.solves, outcome.residual,
+                           outcome.increment, outcome.residual <= film.coupling.tolerance)
 
 
 def content_step_system(film, request: StepRequest) -> BoreSystem:

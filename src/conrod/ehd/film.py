@@ -61,7 +61,9 @@ from conrod.ehd.bore_system import (
     BoreSystem,
     bore_force_weights,
     bore_loads,
+    newton_coupling,
     pressure_step_system,
+    step_answer,
 )
 from conrod.ehd.coupling import (
     CouplingOutcome,
@@ -77,7 +79,7 @@ from conrod.ehd.memory import (
     RATE_REFUSAL,
     ElasticMemory,
     ElasticSettings,
-    answer_key,
+    coupling_extra,
     extrapolated_deformation,
 )
 from conrod.ehd.viscosity_field import film_flows, with_viscosity_field
@@ -202,8 +204,8 @@ class ElasticFilm(FilmWrapper):
         result = dataclasses.replace(result, pressure=result.pressure if with_pressure
                                      else None, extra=dict(result.extra))
         u = outcome.deformation
-        result.extra.update(_coupling_extra(memory, u, memory.iterations + outcome.iterations,
-                                            outcome.residual, outcome.increment))
+        result.extra.update(coupling_extra(memory, u, memory.iterations + outcome.iterations,
+                                           outcome.residual, outcome.increment))
         return result, dataclasses.replace(
             memory, inner=inner, deformation=u, iterations=memory.iterations
             + outcome.iterations, residual=outcome.residual, increment=outcome.increment)
@@ -268,7 +270,7 @@ class ElasticFilm(FilmWrapper):
             return forces, payload.force(), h_min, payload
 
         if self.exact:
-            system = BoreSystem(evaluate, self._responder(memory), operator, inertia, start,
+            system = BoreSystem(evaluate, self.responder(memory), operator, inertia, start,
                                 UpdateLimits(self.settings.increment_share), c)
             outcome = solve_step(system, velocity, np.asarray(load, dtype=float), NewtonControls(
                 c, scale, self.coupling.tolerance, 5 * self.settings.max_iterations,
@@ -354,7 +356,7 @@ class ElasticFilm(FilmWrapper):
         inner = memory.inner
 
         def evaluate(u: np.ndarray):
-            deformed = self._deformed(state, memory, u)
+            deformed = self.deformed(state, memory, u)
             if self.exact:  # pressure only; the characteristics once, for the answer
                 solved = self.base.evaluate_pressure(deformed, inner)
                 if self.contact is not None:  # asperity pressure on the deformed film
@@ -366,9 +368,9 @@ class ElasticFilm(FilmWrapper):
             return forces, result.min_film_thickness, SolvedPayload(result, after)
         return evaluate
 
-    def _deformed(self, state: FilmState, memory: ElasticMemory, u: np.ndarray) -> FilmState:
-        """``state`` on the bore deformed by u [m], with the rate (u − reference)/dt in the
-        squeeze term where the settings and ``memory`` have one."""
+    def deformed(self, state: FilmState, memory: ElasticMemory, u: np.ndarray) -> FilmState:
+        """``state`` on the bore deformed by u [m], with ``memory``'s rate in the squeeze
+        term where the settings have it."""
         reference = memory.reference
         use_rate = self.settings.deformation_rate and reference is not None and (
             memory.reference_dt > 0.0)
@@ -377,29 +379,11 @@ class ElasticFilm(FilmWrapper):
 
     def accepted_result(self, state: FilmState, memory: ElasticMemory, *,
                         with_pressure: bool = False) -> FilmResult | None:
-        """The answer of the implicit step that ended at ``state`` with ``memory`` (its
-        converged pressure on the bore deformation it solved; :attr:`ElasticMemory.answered`)
-        with that step's coupling diagnostics; None when ``memory`` is not such an answer
-        (:class:`~conrod.film.capabilities.HasAcceptedAnswer`: the run solves the film
-        again there). Exact path only."""
-        answered = memory.answered
-        if (not self.exact or answered is None or state.journal_feed is not None
-                or answered[1] is not getattr(memory.inner, "pressure", None)
-                or answered[0] != answer_key(state)):
-            return None
-        solved = self.base.answered_evaluation(self._deformed(state, memory,
-                                                              memory.deformation),
-                                               memory.inner)
-        if self.contact is not None:  # asperity pressure on the deformed film
-            solved = self.contact.attach(solved)
-        result, _ = solved.finish()
-        result = dataclasses.replace(result, pressure=result.pressure if with_pressure
-                                     else None, extra=dict(result.extra))
-        result.extra.update(_coupling_extra(memory, memory.deformation, memory.iterations,
-                                            memory.residual, memory.increment))
-        return result
+        """The answer of the implicit step that ended at ``state`` with ``memory``; None
+        when ``memory`` is not such an answer (:func:`conrod.ehd.bore_system.step_answer`)."""
+        return step_answer(self, state, memory, with_pressure) if self.exact else None
 
-    def _responder(self, memory: ElasticMemory):
+    def responder(self, memory: ElasticMemory):
         """payload of :meth:`evaluator` → the film's exact response there
         (:meth:`~conrod.film.capabilities.HasThicknessResponse.thickness_response`)."""
         use_rate = self.settings.deformation_rate and memory.reference is not None and (
@@ -446,7 +430,7 @@ class ElasticFilm(FilmWrapper):
                 evaluate, memory.deformation, inertia, operator, self.settings.relaxation,
                 self.coupling.tolerance, 100 * self.settings.max_iterations)
         elif self.exact:
-            outcome = self._newton_coupling(state, memory, evaluate, inertia, operator)
+            outcome = newton_coupling(self, memory, evaluate, inertia, operator)
         else:
             outcome = solve_coupling(evaluate, memory.deformation, inertia, operator,
                                      self.jacobian, self.coupling, self.clearance)
@@ -457,28 +441,3 @@ class ElasticFilm(FilmWrapper):
                 residual=outcome.residual)
         return outcome
 
-    def _newton_coupling(self, state, memory, evaluate, inertia, operator) -> CouplingOutcome:
-        """G(u) = 0 at fixed kinematics by :func:`conrod.numerics.newton.solve_step` with no
-        journal degree of freedom."""
-        def fixed(u: np.ndarray, _v: np.ndarray):
-            forces, h_min, payload = evaluate(u)
-            return forces, np.zeros(0), h_min, payload
-
-        system = BoreSystem(fixed, self._responder(memory), operator, inertia,
-                            memory.deformation, UpdateLimits(self.settings.increment_share),
-                            self.clearance)
-        outcome = solve_step(system, np.zeros(0), np.zeros(0), NewtonControls(
-            self.clearance, 1.0, self.coupling.tolerance, self.settings.max_iterations,
-            self.chords["coupling"]))
-        return CouplingOutcome(outcome.own, outcome.payload, outcome.solves, outcome.residual,
-                               outcome.increment, outcome.residual <= self.coupling.tolerance)
-
-
-def _coupling_extra(memory: ElasticMemory, u: np.ndarray, iterations: int, residual: float,
-                    increment: float) -> dict[str, float]:
-    """The coupling diagnostics of a result in ``FilmResult.extra`` (bore deformation u [m],
-    film solves, residual [m], last increment [m])."""
-    return {"coupling_iterations": float(iterations), "coupling_residual_m": residual,
-            "deformation_increment_m": increment, "bore_displacement_min_m": float(u.min()),
-            "bore_displacement_max_m": float(u.max()),
-            "deformation_rate_m_per_s": memory.deformation_rate}

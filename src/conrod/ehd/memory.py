@@ -58,6 +58,16 @@ class ElasticMemory:
     answered: tuple | None = None
 
 
+def coupling_extra(memory: ElasticMemory, u: np.ndarray, iterations: int, residual: float,
+                   increment: float) -> dict[str, float]:
+    """The coupling diagnostics of a result in ``FilmResult.extra`` (bore deformation u [m],
+    film solves, residual [m], last increment [m])."""
+    return {"coupling_iterations": float(iterations), "coupling_residual_m": residual,
+            "deformation_increment_m": increment, "bore_displacement_min_m": float(u.min()),
+            "bore_displacement_max_m": float(u.max()),
+            "deformation_rate_m_per_s": memory.deformation_rate}
+
+
 def answer_key(state: Any) -> tuple[float, ...]:
     """The journal's part of a film state (position, velocity, speeds, viscosity, tilt):
     what :attr:`ElasticMemory.answered` is matched on [SI]."""

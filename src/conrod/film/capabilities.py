@@ -12,12 +12,10 @@ declares what its inner model declares by delegating the methods.
   (:func:`refuse_deformation`), never ignore it;
 * :class:`SupportsDeformationRate` — a version of the model that also puts the bore's rate
   ``RatedFilmState.deformation_rate`` in its squeeze term;
-* :class:`HasMemory` — the answer depends on an explicit memory value (warm start, film
-  content) that the integrator owns;
+* :class:`HasMemory` — the answer depends on a memory value the integrator owns;
 * :class:`HasContentStep` — an implicit (BDF2 / backward Euler) step of a transported film
   content (mass-conserving film), the orbit's step for films with content;
-* :class:`HasMixableContent` — the content as a vector, for the acceleration of the
-  cycle-to-cycle map;
+* :class:`HasMixableContent` — the content as a vector, for the cycle-to-cycle map;
 * :class:`HasStepSystem` — unknowns of the film's own (a bore displacement, ...) solved
   together with the journal's implicit step, as a step system with exact Jacobian blocks;
 * :class:`HasThicknessResponse` — the exact response of the film's nodal loads and force to
@@ -28,8 +26,7 @@ declares what its inner model declares by delegating the methods.
   converged answer, which the characteristics at the step's end report;
 * :class:`HasForceJacobian` — the film's own ∂F/∂(e, ė) at a state (the implicit orbit
   integrator's Newton matrix);
-* :class:`HasTiltJacobian` — the film's own ∂(F, M)/∂(e, γ, ė, γ̇) (the implicit step of a
-  tilted journal);
+* :class:`HasTiltJacobian` — the film's own ∂(F, M)/∂(e, γ, ė, γ̇) (a tilted journal);
 * :class:`HasSensitivities` — force, stiffness and damping from the film's own solver;
 * :class:`HasFlightKernel` — a compiled force and Jacobian with a warm start that the
   implicit orbit integrator runs inside its compiled free flight;
@@ -345,18 +342,16 @@ class HasThicknessResponse(Protocol):
 
 @runtime_checkable
 class HasPressureEvaluation(Protocol):
-    """A film that answers a state by its pressure alone, warm-started from its memory; the
-    other characteristics (friction, flows) are computed once, for the accepted answer
-    (:class:`~conrod.film.reynolds.response.PressureEvaluation`)."""
+    """A film that answers a state by its pressure alone, warm-started from its memory (the
+    other characteristics, friction and flows, computed once, for the accepted answer:
+    :class:`~conrod.film.reynolds.response.PressureEvaluation`), or, without a solve, from
+    the converged pressure a memory holds (the answer of the step that solved it)."""
 
     def evaluate_pressure(self, state: FilmState, memory: Any) -> Any:
         """The pressure evaluation of ``state`` from ``memory`` (None: a cold start)."""
-        ...
 
     def answered_evaluation(self, state: FilmState, memory: Any) -> Any:
-        """The evaluation of ``state`` whose converged pressure ``memory`` already holds
-        (the answer of the step that solved it), without a solve."""
-        ...
+        """The evaluation of ``state`` whose converged pressure ``memory`` holds."""
 
 
 @runtime_checkable

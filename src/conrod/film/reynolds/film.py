@@ -259,10 +259,8 @@ class ReynoldsFilm:
         return evaluate_pressure(self, state, memory)
 
     def answered_evaluation(self, state: FilmState, memory: ReynoldsMemory):
-        """The evaluation of ``state`` whose converged pressure ``memory`` holds, no solve
-        (:func:`~conrod.film.reynolds.response.answered_evaluation`)."""
+        """The evaluation of ``state`` whose converged pressure ``memory`` holds (no solve)."""
         from conrod.film.reynolds.response import answered_evaluation
-
         return answered_evaluation(self, state, memory)
 
     def exact_thickness_response(self) -> bool:
