@@ -147,13 +147,8 @@ def _mirror_half(active: np.ndarray, nodes, pressure: np.ndarray, problem
 def _folded(matrix, keep: np.ndarray, representative: np.ndarray):
     """K_H = K_{H,A} E of :func:`_mirror_half` (CSC): the rows ``keep`` of the active
     matrix with each column added onto its representative's."""
-    rows = matrix.tocsr()
-    starts, ends = rows.indptr[keep], rows.indptr[keep + 1]
-    lengths = ends - starts
-    taken = np.repeat(starts - np.concatenate(([0], np.cumsum(lengths)[:-1])), lengths) \
-        + np.arange(lengths.sum())
-    return csr_matrix((rows.data[taken], representative[rows.indices[taken]],
-                       np.concatenate(([0], np.cumsum(lengths)))),
+    rows = matrix.tocsr()[keep]
+    return csr_matrix((rows.data, representative[rows.indices], rows.indptr),
                       shape=(keep.size, keep.size)).tocsc()
 
 
