@@ -1,6 +1,7 @@
 """The local worker pool of a sweep: every item once, batches sized from measured times,
 exceptions and worker deaths as outcomes, Ctrl-C not seen by the workers, no worker left
-behind (also when the sweep's process is killed), and the forkserver where threads run."""
+behind (also when the sweep's process is killed), the forkserver where threads run, and one
+BLAS thread per worker."""
 
 from __future__ import annotations
 
@@ -48,6 +49,12 @@ def die_always(value: int) -> int:
 def sleep_and_pid(seconds: float) -> int:
     time.sleep(seconds)
     return os.getpid()
+
+
+def blas_threads(_: int) -> int:
+    from threadpoolctl import threadpool_info
+
+    return max(pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas")
 
 
 def _alive(pid: int) -> bool:
@@ -123,6 +130,22 @@ def test_workers_ignore_ctrl_c_and_end_with_the_pool():
     finally:
         pool.close()
     assert not any(_alive(pid) for pid in pids)
+
+
+def test_each_worker_runs_blas_on_one_thread():
+    """The workers start with the sweep's NumPy loaded; a BLAS pool in each would spin on the
+    cores the other workers compute on."""
+    import numpy  # noqa: F401  (its BLAS loaded before the workers start)
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=2, user_api="blas"):
+        if blas_threads(0) != 2:
+            pytest.skip("this machine's BLAS runs on one thread anyway")
+        with LocalPool(blas_threads, 2) as pool:
+            counts = [value for _, kind, value in pool.imap([(i,) for i in range(4)])
+                      if kind == DONE]
+        assert blas_threads(0) == 2  # the sweep's own process keeps its pool
+    assert counts == [1, 1, 1, 1]
 
 
 def test_workers_are_forked_from_a_forkserver_where_threads_run():

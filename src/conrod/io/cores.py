@@ -70,6 +70,18 @@ def busy_cores(before: str, after: str, cores: list[int] | None) -> float | None
     return busy
 
 
+def one_blas_thread() -> None:
+    """Limit the BLAS libraries this process has loaded (NumPy's and SciPy's OpenBLAS) to one
+    thread from now on, for a process that has a core of its own (a sweep's worker). An
+    environment variable cannot do it there: the worker starts with NumPy already loaded.
+    A BLAS pool per worker on a machine whose cores all run workers only takes their time:
+    its threads spin after each call of the small dense algebra (the elastic bore's
+    matrices) on the cores the other workers need."""
+    from threadpoolctl import threadpool_limits
+
+    threadpool_limits(limits=1, user_api="blas")
+
+
 def usable_cores() -> list[int]:
     """The cores this process may run on (its affinity; all where that is unknown)."""
     if hasattr(os, "sched_getaffinity"):

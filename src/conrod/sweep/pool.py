@@ -10,6 +10,8 @@ processes and yields each item's outcome as soon as it is known:
   and keeps them for the rest of the sweep. (Where the process already runs other threads,
   a fork could copy a held lock, so the workers are forked from a clean ``forkserver``
   process instead, which imports the same modules once.)
+* **One BLAS thread each.** A worker has a core of its own; NumPy's BLAS pool, loaded
+  before the fork, is cut to one thread there (:func:`conrod.io.cores.one_blas_thread`).
 * **Batches.** Items go out in batches sized to about :data:`BATCH_SECONDS` of work each
   (:class:`BatchSizer`, from the item times measured so far), so that a cheap item costs
   one message, not one round trip; outcomes come back one by one.
@@ -39,6 +41,7 @@ from multiprocessing.connection import Connection, wait
 from typing import Any
 
 from conrod.errors import CaseError
+from conrod.io.cores import one_blas_thread
 from conrod.io.interrupts import raise_if_interrupted
 
 BATCH_SECONDS = 0.5
@@ -213,6 +216,7 @@ def serve(conn: Connection, parent_pid: int | None) -> None:
     if parent_pid is not None and parent != parent_pid:
         return  # the sweep ended while this worker started
     _die_with_parent()
+    one_blas_thread()  # the worker has its core; NumPy is loaded already
     while True:
         try:
             while not conn.poll(POLL_SECONDS * 10):
