@@ -16,6 +16,23 @@ def test_csv_round_trip(tmp_path):
     assert target.read_text().splitlines() == ["a,b", "1,3", "2,4"]
 
 
+def test_csv_text_is_numpy_savetxt_s(tmp_path):
+    """The rows are formatted in one go; the text is np.savetxt's, byte for byte (signed
+    zeros, subnormals, huge, integral and integer values)."""
+    import io
+
+    rng = np.random.default_rng(7)
+    columns = {f"c{i}": rng.normal(size=50) * 10.0 ** rng.integers(-14, 12, size=50)
+               for i in range(5)}
+    columns["c0"][:6] = [0.0, -0.0, 5e-324, 1e300, 720.0, -123456789012.0]
+    columns["n"] = np.arange(50)
+    target = write_csv(tmp_path / "x.csv", columns)
+    expected = io.StringIO()
+    np.savetxt(expected, np.column_stack([v.astype(float) for v in columns.values()]),
+               delimiter=",", fmt="%.9g")
+    assert target.read_text(encoding="utf-8") == ",".join(columns) + "\n" + expected.getvalue()
+
+
 def test_failure_keeps_previous_file_and_leaves_no_temp(tmp_path):
     target = tmp_path / "summary.json"
     write_json(target, {"h_min_m": 1e-6})

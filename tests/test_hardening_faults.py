@@ -82,13 +82,15 @@ def test_disk_full_while_writing_keeps_the_old_result(tmp_path, monkeypatch):
     assert _cli("run", str(case), "--out", str(out), "--no-figures",
                 "--accept-warnings").exit_code == 0
     before = {p.name: p.read_bytes() for p in out.iterdir()}
-    real = np.savetxt
+    from conrod.output import registry
 
-    def full_disk(*args, **kwargs):
+    real = registry.write_csv
+
+    def full_disk(*args, **kwargs):  # the table is written, then the disk is full
         real(*args, **kwargs)
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
 
-    monkeypatch.setattr(np, "savetxt", full_disk)
+    monkeypatch.setattr(registry, "write_csv", full_disk)
     result = _cli("run", str(case), "--out", str(out), "--no-figures", "--accept-warnings")
     assert result.exit_code == 5  # could not write the results
     assert result.output.strip() == ("error: cannot write the results (No space left on "

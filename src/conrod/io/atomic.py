@@ -127,8 +127,9 @@ def write_csv(
         table = np.column_stack(
             [a.astype(float) if a.dtype.kind in "biuf" else a for a in arrays]
 )
-        if all(a.dtype.kind in "biuf" for a in arrays):
-            np.savetxt(handle, table, delimiter=",", fmt=float_format)
+        if all(a.dtype.kind in "biuf" for a in arrays):  # np.savetxt's text, one % for all
+            row = ",".join([float_format] * table.shape[1]) + "\n"
+            handle.write((row * table.shape[0]) % tuple(table.ravel().tolist()))
         else:
             for row in table:
                 handle.write(",".join(str(v) for v in row) + "\n")
