@@ -102,3 +102,17 @@ def test_a_stale_jacobian_converges_superlinearly_without_being_rebuilt():
     ratios = [b / a for a, b in zip(errors, errors[1:], strict=False) if a > 1e-13]
     assert ratios[0] == pytest.approx(chord_rate, rel=0.2)  # the first update is a chord one
     assert min(ratios[-3:]) < 0.1 * chord_rate  # superlinear at the end
+
+
+def test_a_carried_jacobian_whose_update_fails_is_rebuilt_not_cut_back():
+    """A carried inverse of the wrong sign points uphill: its full update raises the
+    residual, and the iteration builds the Jacobian there at once (one wasted solve) instead
+    of halving the uphill update :data:`~conrod.numerics.newton.LINE_SEARCH_CUTS` times."""
+    root = _roots()
+    outcome, chord = _solve(root + 1e-3, -1.0 / _jacobian(root))
+    np.testing.assert_allclose(outcome.own, root, rtol=0, atol=1e-12)
+    assert chord.builds == 1
+    # the start, the failed carried update, then four updates from the exact Jacobian (with
+    # Broyden's updates after the first): 6 solves, where halving the uphill update first
+    # took 11
+    assert (outcome.solves, outcome.updates) == (6, 4)
