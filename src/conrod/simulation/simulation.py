@@ -10,8 +10,7 @@
 Steps: loads (``[engine]`` via :mod:`conrod.loads.engine_loads` or ``[load]`` table) →
 film model (``[solver] film``) → periodic orbit from the concentric start → heat balance
 (viscosity from ``[lubricant]``, iterated when it depends on temperature) → characteristics
-→ contact post-processing of :mod:`conrod.contact.analysis` when that module exists.
-"""
+→ contact post-processing (:mod:`conrod.contact.analysis`)."""
 
 from __future__ import annotations
 
@@ -30,6 +29,7 @@ from conrod.errors import CaseError
 from conrod.film.base import BearingGeometry, FilmModel
 from conrod.film.capabilities import HasEccentricityRange, SupportsDeformation
 from conrod.film.factory import build_film_model
+from conrod.io.cores import one_blas_thread
 from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
 from conrod.loads.oil_feed import feed_schedule, wear_diagram_angle
@@ -235,21 +235,21 @@ class Simulation:
     def run(self, progress: ProgressCallback | None = None) -> RunResults | Any:
         """Periodic orbit, heat balance, characteristics and contact post-processing; with
         an elastic housing the elastic answer, its diagnostics and the rigid companion
-        (:class:`conrod.results.ehd.ElasticRunResults`)."""
-        if not self.elastic():
-            results = signed_off(*self.run_orbit(progress), self.case, self.signoff)
-            if self.housing() is None:
-                return results
-            note = (f"[housing] model = {self.case.housing.model!r} not coupled: film "
-                    f"{results.summary.film_model!r} cannot take a bore deformation (allowed: "
-                    "reynolds, mass_conserving); the bore is rigid")
-            summary = dataclasses.replace(results.summary,
-                                          warnings=(*results.summary.warnings, note))
-            return dataclasses.replace(results, summary=summary)
-        check_journal_holes(self.geometry(), self._film_name(), None, elastic=True)
-        from conrod.simulation.ehd_run import elastic_run
+        (:class:`conrod.results.ehd.ElasticRunResults`). BLAS on one thread meanwhile."""
+        with one_blas_thread():  # also where NumPy was loaded first (conrod.io.cores)
+            if not self.elastic():
+                results = signed_off(*self.run_orbit(progress), self.case, self.signoff)
+                if self.housing() is None:
+                    return results
+                note = (f"[housing] model = {self.case.housing.model!r} not coupled: film "
+                        f"{results.summary.film_model!r} cannot take a bore deformation "
+                        "(allowed: reynolds, mass_conserving); the bore is rigid")
+                return dataclasses.replace(results, summary=dataclasses.replace(
+                    results.summary, warnings=(*results.summary.warnings, note)))
+            check_journal_holes(self.geometry(), self._film_name(), None, elastic=True)
+            from conrod.simulation.ehd_run import elastic_run
 
-        return elastic_run(self, progress)
+            return elastic_run(self, progress)
 
     def rigid_companion(self, integrator: str | None = None,
                         **overrides: Any) -> Simulation | None:
