@@ -1,10 +1,13 @@
-"""Sweep scaling: 1 worker against N workers on cheap (short-bearing) and expensive (EHD)
+r"""Sweep scaling: 1 worker against N workers on cheap (short-bearing) and expensive (EHD)
 variants, the per-variant overhead beyond the computation, and a cold ``conrod sweep``.
 
 Run from the repository root (the defaults suit a 2-core machine)::
 
     python benchmarks/sweep_benchmarks.py
-    python benchmarks/sweep_benchmarks.py --workers 1,16 --short 400 --ehd 32   # 16 cores
+    python benchmarks/sweep_benchmarks.py --workers 1,16 --short 400 --ehd 32 \
+        --ehd-one 8 --repeat 1 --cold 0
+
+(the second on a 16-core machine: about 9 minutes, within a 10-minute command).
 
 Writes ``benchmarks/sweep_benchmarks.md`` (``--out`` to choose), a markdown table headed by
 the machine's core count and load. Each timed run is a whole ``Sweep(study, out,
@@ -132,6 +135,22 @@ def compare(make_study, workers: list[int], n: int, repeat: int,
     return runs, ceiling
 
 
+def ehd_runs(workers: list[int], n: int, one: int) -> dict[int, list[dict]]:
+    """One EHD sweep per worker count; with ``one`` the fewest workers run ``one`` variants
+    and their wall time is scaled by n/one (a variant costs the same on one worker: the
+    16-core record in ``sweep_benchmarks_16core.md``)."""
+    runs: dict[int, list[dict]] = {}
+    for index, count in enumerate(workers):
+        size = one if one and count == min(workers) else n
+        run = timed_run(ehd_study(size, offset=1 + index), count)
+        if size != n:
+            run = {**run, "wall": run["wall"] * n / size, "n": n}
+        runs[count] = [run]
+        print(f"  {count:>3} workers: {run['wall']:.2f} s ({size} variants run; "
+              f"load {os.getloadavg()[0]:.1f})", flush=True)
+    return runs
+
+
 def speedups(runs: dict[int, list[dict]], count: int) -> list[float]:
     """Paired speed-ups of ``count`` workers over the fewest, one per repetition."""
     return [b["wall"] / r["wall"] for b, r in zip(runs[min(runs)], runs[count], strict=True)]
@@ -212,6 +231,9 @@ def main() -> None:
     parser.add_argument("--workers", default="1,2", help="worker counts, e.g. 1,16")
     parser.add_argument("--short", type=int, default=60, help="short-bearing variants")
     parser.add_argument("--ehd", type=int, default=4, help="EHD variants (0: none)")
+    parser.add_argument("--ehd-one", type=int, default=0, help=(
+        "EHD variants of the 1-worker run, its time scaled to --ehd (0: all); on a 16-core "
+        "machine 8 keeps the command within 10 minutes"))
     parser.add_argument("--repeat", type=int, default=3, help="repetitions (cheap variants)")
     parser.add_argument("--cold", type=int, default=1000, help="variants of the cold row")
     parser.add_argument("--out", default=str(ROOT / "benchmarks" / "sweep_benchmarks.md"))
@@ -220,7 +242,8 @@ def main() -> None:
     load = os.getloadavg()[0]
     from conrod.sweep import Sweep  # noqa: F401  (imports outside the timings)
 
-    warm = timed_run(short_study(4 * max(workers), offset=0), 1)  # kernels on disk
+    timed_run(short_study(4 * max(workers), offset=0), 1)  # kernels on disk
+    warm = timed_run(short_study(4 * max(workers), offset=-1), 1)  # the ceiling's item length
     loops = int(warm["compute"] / warm["n"] / _seconds_per_loop())
     print("short-bearing variants, each followed by the machine's ceiling", flush=True)
     short, ceiling = compare(short_study, workers, args.short, args.repeat, loops)
@@ -229,8 +252,10 @@ def main() -> None:
     if args.ehd:
         print("EHD variants", flush=True)
         timed_run(ehd_study(1, offset=0), 1)  # compiles the EHD kernels if needed
-        rows += scaling_rows("EHD: Reynolds 36×8 on the elastic rod + rigid companion",
-                             compare(ehd_study, workers, args.ehd, 1)[0])
+        label = "EHD: Reynolds 36×8 on the elastic rod + rigid companion"
+        if args.ehd_one:
+            label += f" (1 worker: {args.ehd_one} variants, time × {args.ehd}/{args.ehd_one})"
+        rows += scaling_rows(label, ehd_runs(workers, args.ehd, args.ehd_one))
     cold = cold_cli(args.cold, max(workers)) if args.cold else None
     write_table(args, workers, rows, overhead_rows(short[min(workers)]) + [""] + [
         "CPU time of the short-bearing runs (median): the workers' (all of them) and the sweep "
@@ -248,7 +273,8 @@ def write_table(args, workers: list[int], rows: list[str], overhead: list[str],
         f"{os.getloadavg()[0]:.1f} at the end (above the core count the workers share the "
         "cores with other jobs, which bounds the speed-up). Command: `python "
         f"benchmarks/sweep_benchmarks.py --workers {','.join(map(str, workers))} --short "
-        f"{args.short} --ehd {args.ehd} --repeat {args.repeat} --cold {args.cold}`.", "",
+        f"{args.short} --ehd {args.ehd} --ehd-one {args.ehd_one} --repeat {args.repeat} "
+        f"--cold {args.cold}`.", "",
         "Each run: `Sweep(study, new_folder, workers=N).run()` — validation, worker start "
         "(kernels loaded from numba's disk cache), computing, writing every variant folder "
         "and the table. Speed-up: 1-worker time / N-worker time of the runs made one after "
@@ -270,7 +296,8 @@ def write_table(args, workers: list[int], rows: list[str], overhead: list[str],
     if (os.cpu_count() or 1) < 16:
         lines += ["", f"Not measured here: the 16-worker rows (this machine has "
                   f"{os.cpu_count()} cores). On a 16-core machine run `python "
-                  "benchmarks/sweep_benchmarks.py --workers 1,16 --short 400 --ehd 32`."]
+                  "benchmarks/sweep_benchmarks.py --workers 1,16 --short 400 --ehd 32 "
+                  "--ehd-one 8 --repeat 1 --cold 0` (about 9 minutes there)."]
     Path(args.out).write_text("\n".join(lines) + "\n", encoding="utf-8")
     print("\n".join(lines))
 
