@@ -45,6 +45,7 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
     rows: dict[str, list[np.ndarray]] = {}
     specs: dict[str, FieldSpec] = {}
     extremes: list[tuple[float, float, float, float]] = []
+    declares = (isinstance(film, HasFilmFields), isinstance(film, HasMixableContent))
     for i in range(len(cycle.crank_angle)):
         state = problem.row_state(cycle, i)
         if film_memory:
@@ -57,7 +58,7 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
         extremes.append((result.max_pressure, result.max_pressure_angle,
                          result.min_film_thickness, result.min_film_angle))
         for name, (values, spec) in _row(problem, state, session.memory, result.pressure,
-                                         theta, z).items():
+                                         theta, z, declares).items():
             rows.setdefault(name, []).append(values)
             specs.setdefault(name, spec)
     g, reported = film.geometry, np.array(extremes)
@@ -70,15 +71,17 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
                       "film_thickness": (reported[:, 2], reported[:, 3])})
 
 
-def _row(problem, state, memory, pressure, theta, z) -> dict:
-    """name → (field (n_θ, n_z), spec) at one output angle."""
+def _row(problem, state, memory, pressure, theta, z, declares: tuple[bool, bool]) -> dict:
+    """name → (field (n_θ, n_z), spec) at one output angle; ``declares``: whether the film
+    declares fields of its own and a mixable content (checked once per cycle)."""
     film = problem.film
+    has_fields, mixable = declares
     out = {"pressure": (np.asarray(pressure, dtype=float), FIELD_SPECS["pressure"])}
-    declared = film.film_fields(state, memory) if isinstance(film, HasFilmFields) else {}
+    declared = film.film_fields(state, memory) if has_fields else {}
     deformation = declared["deformation"].values if "deformation" in declared else None
     h = film_thickness_field(film.geometry, state, theta, z, deformation)
     out["film_thickness"] = (h, FIELD_SPECS["film_thickness"])
-    if isinstance(film, HasMixableContent) and memory is not None:
+    if mixable and memory is not None:
         fraction = film.content_vector(memory).reshape(h.shape)
         out["film_fraction"] = (fraction, FIELD_SPECS["film_fraction"])
     for name, item in declared.items():  # the declaration's own unit and long name

@@ -223,7 +223,7 @@ class ShortBearingFilm:
         if speed == 0.0:
             return 0.0, 0.0
         g = self.geometry
-        theta_rel = alpha + math.pi + np.linspace(0.0, math.pi, 721)
+        theta_rel = alpha + math.pi + PEAK_SAMPLES
         shape = -np.sin(theta_rel - alpha) / (1.0 - eps * np.cos(theta_rel)) ** 3
         k = int(np.argmax(shape))
         scale = 3.0 * state.viscosity * speed * g.width**2 / (4.0 * g.radial_clearance**2)
@@ -246,6 +246,10 @@ class ShortBearingFilm:
         if self.pressure_viscosity is not None:
             pressure = self.pressure_viscosity.from_reduced(pressure, state.viscosity)
         return pressure
+
+
+PEAK_SAMPLES = np.linspace(0.0, math.pi, 721)
+"""Angles past the start of the pressure arc where the peak pressure is sampled [rad]."""
 
 
 def central_groove_width(geometry: BearingGeometry) -> float:
