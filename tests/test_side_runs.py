@@ -12,6 +12,7 @@ import time
 import pytest
 from typer.testing import CliRunner
 
+from blas_helpers import blas_threads, two_blas_threads
 from conrod.cli.app import _register_commands, app
 from conrod.io import cores
 from conrod.simulation import side_runs
@@ -66,28 +67,17 @@ def test_jobs_run_in_order_silently_and_their_results_are_handed_over(fresh, cap
     assert "to stdout" not in out and "to stderr" not in err
 
 
-def _blas_threads() -> int:
-    from threadpoolctl import threadpool_info
-
-    return max(pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas")
-
-
 def test_the_process_runs_blas_on_one_thread(fresh):
     """Forked with the run's BLAS pool (NumPy loaded before the CLI could set it to one
     thread), the process would spin its threads on the core the run computes on."""
-    import numpy  # noqa: F401  (its BLAS loaded before the fork)
-    from threadpoolctl import threadpool_limits
-
-    with threadpool_limits(limits=2, user_api="blas"):
-        if _blas_threads() != 2:
-            pytest.skip("this machine's BLAS runs on one thread anyway")
-        side = side_runs.start([("threads", _blas_threads)])
+    with two_blas_threads():
+        side = side_runs.start([("threads", blas_threads)])
         assert side is not None
         while side_runs.OPEN in side.claims[:]:  # taken by the process
             time.sleep(0.01)
         assert side.take("threads") == 1
         side.stop()
-        assert _blas_threads() == 2  # the run keeps its own
+        assert blas_threads() == 2  # the run keeps its own
 
 
 def test_an_ended_process_leaves_its_jobs_to_the_run(fresh):

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import conrod.simulation.simulation as simulation_module
+from blas_helpers import blas_threads, two_blas_threads
 from conrod import Case, Simulation
 from conrod.errors import CaseError
 from conrod.film.reynolds.film import ReynoldsFilm
@@ -92,28 +93,18 @@ def test_a_housing_is_refused_until_the_elastic_coupling_exists(case):
         Simulation(case, housing=object())
 
 
-def _blas_threads() -> int:
-    from threadpoolctl import threadpool_info
-
-    return max(pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas")
-
-
 def test_a_run_computes_on_one_blas_thread_and_gives_the_pool_back(case, monkeypatch):
     """A program that loaded NumPy first keeps its BLAS pool; the run limits it to one
     thread while it computes (its dense algebra is small) and restores it afterwards."""
-    from threadpoolctl import threadpool_limits
-
     seen = []
     original = simulation_module.cycle_characteristics
 
     def watched(problem, trajectory):
-        seen.append(_blas_threads())
+        seen.append(blas_threads())
         return original(problem, trajectory)
 
     monkeypatch.setattr(simulation_module, "cycle_characteristics", watched)
-    with threadpool_limits(limits=2, user_api="blas"):
-        if _blas_threads() != 2:
-            pytest.skip("this machine's BLAS runs on one thread anyway")
+    with two_blas_threads():
         Simulation(case, **QUICK).run()
-        assert _blas_threads() == 2
+        assert blas_threads() == 2
     assert seen and set(seen) == {1}

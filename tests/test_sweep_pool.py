@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+from blas_helpers import blas_threads, two_blas_threads
 from conrod.errors import CaseError
 from conrod.sweep.pool import DIED, DONE, ERROR, MAX_DEATHS, BatchSizer, LocalPool
 
@@ -49,12 +50,6 @@ def die_always(value: int) -> int:
 def sleep_and_pid(seconds: float) -> int:
     time.sleep(seconds)
     return os.getpid()
-
-
-def blas_threads(_: int) -> int:
-    from threadpoolctl import threadpool_info
-
-    return max(pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas")
 
 
 def _alive(pid: int) -> bool:
@@ -135,16 +130,11 @@ def test_workers_ignore_ctrl_c_and_end_with_the_pool():
 def test_each_worker_runs_blas_on_one_thread():
     """The workers start with the sweep's NumPy loaded; a BLAS pool in each would spin on the
     cores the other workers compute on."""
-    import numpy  # noqa: F401  (its BLAS loaded before the workers start)
-    from threadpoolctl import threadpool_limits
-
-    with threadpool_limits(limits=2, user_api="blas"):
-        if blas_threads(0) != 2:
-            pytest.skip("this machine's BLAS runs on one thread anyway")
+    with two_blas_threads():
         with LocalPool(blas_threads, 2) as pool:
             counts = [value for _, kind, value in pool.imap([(i,) for i in range(4)])
                       if kind == DONE]
-        assert blas_threads(0) == 2  # the sweep's own process keeps its pool
+        assert blas_threads() == 2  # the sweep's own process keeps its pool
     assert counts == [1, 1, 1, 1]
 
 
