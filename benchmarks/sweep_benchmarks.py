@@ -115,17 +115,22 @@ def ceiling_run(n: int, workers: int, loops: int) -> dict:
     return {"wall": time.perf_counter() - start, "n": n, "failed": 0}
 
 
-def compare(make_study, workers: list[int], n: int, repeat: int,
-            ceiling_loops: int = 0) -> tuple[dict[int, list[dict]], dict[int, list[dict]]]:
+def compare(make_study, workers: list[int], n: int, repeat: int, ceiling_loops: int = 0,
+            one: int = 0) -> tuple[dict[int, list[dict]], dict[int, list[dict]]]:
     """Every worker count ``repeat`` times, alternating within each repetition; with
-    ``ceiling_loops`` each sweep is followed by :func:`ceiling_run` on as many workers.
+    ``ceiling_loops`` each sweep is followed by :func:`ceiling_run` on as many workers; with
+    ``one`` the fewest workers run ``one`` variants and their wall time is scaled by n/one
+    (a variant costs the same on one worker: ``sweep_benchmarks_16core.md``).
     Returns (sweep runs, ceiling runs) per worker count."""
     runs: dict[int, list[dict]] = {w: [] for w in workers}
     ceiling: dict[int, list[dict]] = {w: [] for w in workers}
     for rep in range(repeat):
         for count in workers:
-            run = timed_run(make_study(n, offset=1 + rep * len(workers) + workers.index(count)),
-                            count)
+            size = one if one and count == min(workers) else n
+            run = timed_run(make_study(size, offset=1 + rep * len(workers)
+                                       + workers.index(count)), count)
+            if size != n:
+                run = {**run, "wall": run["wall"] * n / size, "n": n}
             runs[count].append(run)
             if ceiling_loops:
                 ceiling[count].append(ceiling_run(n, count, ceiling_loops))
@@ -133,22 +138,6 @@ def compare(make_study, workers: list[int], n: int, repeat: int,
                   + (f"; ceiling {ceiling[count][-1]['wall']:.2f} s" if ceiling_loops else "")
                   + f"; load {os.getloadavg()[0]:.1f})", flush=True)
     return runs, ceiling
-
-
-def ehd_runs(workers: list[int], n: int, one: int) -> dict[int, list[dict]]:
-    """One EHD sweep per worker count; with ``one`` the fewest workers run ``one`` variants
-    and their wall time is scaled by n/one (a variant costs the same on one worker: the
-    16-core record in ``sweep_benchmarks_16core.md``)."""
-    runs: dict[int, list[dict]] = {}
-    for index, count in enumerate(workers):
-        size = one if one and count == min(workers) else n
-        run = timed_run(ehd_study(size, offset=1 + index), count)
-        if size != n:
-            run = {**run, "wall": run["wall"] * n / size, "n": n}
-        runs[count] = [run]
-        print(f"  {count:>3} workers: {run['wall']:.2f} s ({size} variants run; "
-              f"load {os.getloadavg()[0]:.1f})", flush=True)
-    return runs
 
 
 def speedups(runs: dict[int, list[dict]], count: int) -> list[float]:
@@ -255,7 +244,8 @@ def main() -> None:
         label = "EHD: Reynolds 36×8 on the elastic rod + rigid companion"
         if args.ehd_one:
             label += f" (1 worker: {args.ehd_one} variants, time × {args.ehd}/{args.ehd_one})"
-        rows += scaling_rows(label, ehd_runs(workers, args.ehd, args.ehd_one))
+        rows += scaling_rows(label, compare(ehd_study, workers, args.ehd, 1,
+                                            one=args.ehd_one)[0])
     cold = cold_cli(args.cold, max(workers)) if args.cold else None
     write_table(args, workers, rows, overhead_rows(short[min(workers)]) + [""] + [
         "CPU time of the short-bearing runs (median): the workers' (all of them) and the sweep "
