@@ -163,7 +163,8 @@ def test_accepted_rows_read_the_steps_own_answer():
     from conrod.orbit.periodic import periodic_orbit
 
     simulation = Simulation(kamaz_case(**{**GRID, "integrator": "implicit", "max_cycles": 1,
-                                          "min_cycles": 1}), rigid_companion=False)
+                                          "min_cycles": 1, "lead_in": 0.0}),
+                            rigid_companion=False)  # the first cycle from the concentric start
     problem = simulation.problem()
     film = problem.film
     trajectory = periodic_orbit(problem, simulation.solver).last

@@ -81,6 +81,13 @@ class SolverSection(Section):
         "map at every cycle, each cycle measured by its own closure) or anderson (Anderson "
         "extrapolation while the repeated cycles converge slowly) [-]",
 )
+    lead_in: float = Field(
+        default=0.5, ge=0.0, lt=1.0,
+        description="With the shooting accelerator, the orbit with mass on an elastic bore "
+        "(the bore solved with the journal's implicit step) starts concentric this share of "
+        "a cycle before φ = 0 instead of a whole cycle; then each cycle is measured by its "
+        "own closure (0: a whole first cycle) [cycles]",
+)
     max_cycles: int = Field(default=8, ge=1, le=200, description="Most cycles to integrate [-]")
     min_cycles: int = Field(default=2, ge=1, le=200, description="Fewest cycles to integrate [-]")
     periodicity_tolerance: float = Field(

@@ -72,14 +72,19 @@ class _Progress:
     def in_cycle(self, stage: str, cycle: int, angle_deg: float, cycle_deg: float) -> None:
         """The integrator has reached ``angle_deg`` of ``cycle_deg`` in ``cycle`` [deg]."""
         raise_if_interrupted()
+        if cycle == 0:  # the lead-in before the first cycle: cycle 1's clock starts after it
+            self.cycle_start = time.perf_counter()
         if self.bar is None:
             return
         fraction = min(max(angle_deg / cycle_deg, 0.0), 1.0)
-        self.bar.update(self.task, completed=min(cycle - 1 + fraction, self.max_cycles),
+        self.bar.update(self.task, completed=min(max(cycle - 1 + fraction, 0.0),
+                                                 self.max_cycles),
                         description=self._text(stage, cycle, angle_deg, cycle_deg, fraction))
 
     def _text(self, stage, cycle, angle_deg, cycle_deg, fraction) -> str:
         where = (f", {angle_deg:.0f}/{cycle_deg:.0f}°" if angle_deg is not None else " done")
+        if cycle == 0:
+            return f"{stage}: lead-in{where}"
         error = f", Δe/c {self.errors[-1]:.2g}" if self.errors else ""
         left = self._time_left(fraction)
         return (f"{stage}: cycle {cycle}{where}{error}"

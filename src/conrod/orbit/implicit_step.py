@@ -153,10 +153,16 @@ class StepPoint:
 
 
 def implicit_step_cycle(problem: OrbitProblem, state: OrbitState, step_deg: float,
-                        output_step_deg: float, *, with_mass: bool) -> CycleTrajectory:
+                        output_step_deg: float, *, with_mass: bool,
+                        lead_in: float = 0.0) -> CycleTrajectory:
     """One cycle from ``state`` by implicit steps of ``step_deg`` [deg] (BDF2 after a first
-    backward Euler step); massless (``with_mass`` False) or with the problem's masses."""
+    backward Euler step); massless (``with_mass`` False) or with the problem's masses.
+    ``lead_in`` > 0: only the last ``lead_in`` share of the cycle (whole output intervals,
+    at least one), ending at φ = cycle ≡ 0 — the lead-in of :mod:`conrod.orbit.periodic`."""
     phi, record_every, n_out = step_grid(problem, step_deg, output_step_deg)
+    if lead_in > 0.0:
+        rows = min(max(round(lead_in * n_out), 1), n_out)
+        phi, n_out = phi[(n_out - rows) * record_every:], rows
     steps_of = _strategy(problem)(problem, with_mass)
     memory = state.film_memory if state.film_memory is not None else problem.film.initial_memory()
     point = StepPoint(*_start(steps_of, state), memory)

@@ -20,6 +20,10 @@ default for an integrator that does not make it):
   [False];
 * ``massless_start`` — with ``[solver] massless_start`` it starts from the periodic
   massless orbit (:mod:`conrod.orbit.periodic`) [False].
+
+An integrator may also offer ``lead_in(problem, state, settings)``: the last
+``[solver] lead_in`` share of a cycle from the concentric ``state``, ending at φ = 0, or
+None where it has none for ``problem`` (:mod:`conrod.orbit.periodic`).
 """
 
 from __future__ import annotations
@@ -92,6 +96,11 @@ class AdaptiveIntegrator:
 )
         return adaptive_cycle(problem, state, settings, settings.output_step_deg)
 
+    def lead_in(self, problem: OrbitProblem, state: OrbitState,
+                settings: Any) -> CycleTrajectory | None:
+        """The lead-in of the fixed implicit steps (:func:`_fixed_step_lead_in`)."""
+        return _fixed_step_lead_in(problem, state, settings)
+
 
 @dataclass(frozen=True)
 class AutomaticIntegrator:
@@ -114,6 +123,12 @@ class AutomaticIntegrator:
     def cycle(self, problem: OrbitProblem, state: OrbitState, settings: Any) -> CycleTrajectory:
         """One cycle with :meth:`choose`."""
         return self.choose(problem).cycle(problem, state, settings)
+
+    def lead_in(self, problem: OrbitProblem, state: OrbitState,
+                settings: Any) -> CycleTrajectory | None:
+        """The lead-in of :meth:`choose`'s integrator, if it has one."""
+        chosen = getattr(self.choose(problem), "lead_in", None)
+        return None if chosen is None else chosen(problem, state, settings)
 
 
 @dataclass(frozen=True)
@@ -140,6 +155,11 @@ class ImplicitIntegrator:
         if steps_implicitly(problem):
             return _fixed_step_cycle(problem, state, settings)
         return implicit_cycle(problem, state, settings)
+
+    def lead_in(self, problem: OrbitProblem, state: OrbitState,
+                settings: Any) -> CycleTrajectory | None:
+        """The lead-in of the fixed implicit steps (:func:`_fixed_step_lead_in`)."""
+        return _fixed_step_lead_in(problem, state, settings)
 
 
 @dataclass(frozen=True)
@@ -193,3 +213,16 @@ def _fixed_step_cycle(problem: OrbitProblem, state: OrbitState,
     largest step ≤ ``max_step_deg`` that divides ``output_step_deg``."""
     return implicit_step_cycle(problem, state, implicit_step_deg(settings),
                                settings.output_step_deg, with_mass=True)
+
+
+def _fixed_step_lead_in(problem: OrbitProblem, state: OrbitState,
+                        settings: Any) -> CycleTrajectory | None:
+    """The last ``[solver] lead_in`` share of a cycle by the fixed implicit steps with mass
+    where the film's own unknowns are solved only with the journal's step (the elastic
+    Reynolds bore, whose deformation follows the journal from any start); None for another
+    film or a lead-in of 0."""
+    share = getattr(settings, "lead_in", 0.0)
+    if share <= 0.0 or not needs_journal_step(problem.film):
+        return None
+    return implicit_step_cycle(problem, state, implicit_step_deg(settings),
+                               settings.output_step_deg, with_mass=True, lead_in=share)

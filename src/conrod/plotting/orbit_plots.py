@@ -47,7 +47,7 @@ def plot_orbit(results: RunResults) -> Figure:
     ax.set_xlabel("e_x [µm] (film frame)")
     ax.set_ylabel("e_y [µm]")
     s = results.summary
-    title = f"Journal-centre orbit — {s.film_model}, {s.cycles} cycles"
+    title = f"Journal-centre orbit — {s.film_model}, {s.cycles:g} cycles"
     if results.contact_circle_widened:
         title += "\ndeforming bore: the journal may pass the rigid clearance circle"
     if not s.periodic:

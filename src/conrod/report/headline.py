@@ -36,7 +36,7 @@ SUMMARY_ROWS = (
     ("viscosity of the final orbit", "viscosity_Pa_s", 1e3, "mPa s", "{:.4g}"),
     ("nominal specific load W_max/(B·D)", "nominal_specific_load_Pa", 1e-6, "MPa", "{:.3g}"),
     ("largest hard-contact force", "max_orbit_contact_force_N", 1e-3, "kN", "{:.3g}"),
-    ("cycles integrated", "cycles", 1.0, "-", "{:.0f}"),
+    ("cycles integrated (a lead-in by its share)", "cycles", 1.0, "-", "{:g}"),
     ("periodicity error", "periodicity_error", 1.0, "c", "{:.2g}"),
     ("exit code of conrod run", "exit_code", 1.0, "-", "{:.0f}"),
 )

@@ -128,8 +128,9 @@ class RunSummary:
     """Effective film temperature from the heat balance [°C] (None if no flow)."""
     viscosity: float
     """Viscosity used for the final orbit [Pa s]."""
-    cycles: int
-    """Number of cycles integrated [-]."""
+    cycles: float
+    """Cycles integrated; a lead-in from the concentric start counts by its share of a cycle
+    (``[solver] lead_in``: 1.5 = half a cycle of lead-in, then one cycle) [cycles]."""
     periodicity_error: float
     """max |e_k − e_{k−1}|/c between the last two cycles at the same angles [-]."""
     periodic: bool

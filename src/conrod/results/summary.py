@@ -51,7 +51,7 @@ def film_minimum(cycle: CycleResults) -> tuple[float, float] | None:
 
 def summarise(
     cycle: CycleResults, orbit, problem, solver, temperature: float | None,
-    cycles: int, thermal_iterations: int, integrator: str | None = None,
+    cycles: float, thermal_iterations: int, integrator: str | None = None,
 ) -> RunSummary:
     """Minimum h_min and maximum p_max with their angles, cycle means, diagnostics.
 
@@ -63,7 +63,7 @@ def summarise(
     warnings = []
     if not orbit.periodic:
         warnings.append(
-            f"orbit not periodic after {orbit.cycles} cycles: periodicity error "
+            f"orbit not periodic after {orbit.cycles_run:g} cycles: periodicity error "
             f"{orbit.periodicity_error:.3g} > tolerance {solver.periodicity_tolerance:.3g} "
             "(raise solver.max_cycles)"
 )
@@ -149,8 +149,11 @@ def headline(results: RunResults) -> dict[str, str]:
     thermal = getattr(results, "thermal_film", None)
     if thermal is not None:  # the film's temperature field
         lines["temperature"] = thermal.headline_text()
-    lines["orbit"] = (f"{'periodic' if s.periodic else 'NOT periodic'} after {s.cycles} "
-                      f"cycles (error {s.periodicity_error:.2g} c)")
+    lead_in = s.cycles % 1.0  # a lead-in from the concentric start: a share of a cycle
+    lines["orbit"] = (f"{'periodic' if s.periodic else 'NOT periodic'} after {s.cycles:g} "
+                      "cycles (" + (f"the first {lead_in:g} of a cycle a lead-in from the "
+                                    "concentric start; " if lead_in else "")
+                      + f"error {s.periodicity_error:.2g} c)")
     if results.signoff is not None:  # margins against [limits], the erosion indicator
         lines.update(results.signoff.headline())
     lines["warnings"] = str(len(s.warnings)) if s.warnings else "none"

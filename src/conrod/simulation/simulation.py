@@ -330,7 +330,7 @@ class Simulation:
             stage = "orbit" if iteration == 0 else f"heat balance {iteration}"
             current = problem.with_viscosity(viscosity)
             orbit = self._orbit(current, state, stage, progress)
-            cycles += orbit.cycles
+            cycles += orbit.cycles_run
             cycle = cycle_characteristics(current, orbit.last)
             asperity = film_asperity_force(current, cycle, orbit.last.film_memory)
             boundary = asperity_friction_power(self.case, cycle, asperity)

@@ -78,7 +78,7 @@ def thermal_film_orbit(sim: Any, progress: Any = None) -> ThermalFilmOrbit:
         current = _problem_at(problem, film, lubricant, temperature)
         orbit = periodic_orbit(current, s, integrator=sim.integrator(), start=state,
                                on_cycle=_reporter(progress, f"thermal film {iteration}"))
-        cycles += orbit.cycles
+        cycles += orbit.cycles_run
         cycle = cycle_characteristics(current, orbit.last)
         flows = cycle_flows(current, cycle, orbit.last.film_memory)
         answer = solve_energy(flows, heat_capacity, supply, walls)
