@@ -15,7 +15,8 @@ made periodic from the concentric start with the case's own integrator and film 
   (``massless_start`` off: the default now).
 
 Each column gives the cycles integrated with mass (massless cycles of the massless start
-in brackets), the periodicity error of the accepted cycle [-] and the wall time [s] (numba
+in brackets; on an elastic bore the shooting's half-cycle lead-in counts 0.5,
+``[solver] lead_in``), the periodicity error of the accepted cycle [-] and the wall time [s] (numba
 compilation excluded: a warm-up cycle runs first). The last column: max |Δe|/c between the
 accepted cycle of ``shooting`` and of ``plain`` at equal output angles [-] (the
 periodicity tolerance is 1e-3). Grids coarsened where named (to keep runs short on a
@@ -89,7 +90,7 @@ def measure(stem: str, overrides: dict, strategy: dict) -> dict:
         wall = time.perf_counter() - start
     finally:
         periodic_module._massless_start = original
-    return {"cycles": orbit.cycles, "massless": sum(massless), "error": orbit.periodicity_error,
+    return {"cycles": orbit.cycles_run, "massless": sum(massless), "error": orbit.periodicity_error,
             "periodic": orbit.periodic, "wall": wall, "history": orbit.history,
             "x": orbit.last.x, "y": orbit.last.y, "c": problem.clearance}
 
@@ -105,7 +106,7 @@ def _cell(run: dict) -> str:
         return f"as {run['same']} (same run)"
     mark = "" if run["periodic"] else " (not periodic)"
     extra = f" (+{run['massless']})" if run["massless"] else ""
-    return f"{run['cycles']}{extra}{mark}, {run['error']:.1e}, {run['wall']:.3g} s"
+    return f"{run['cycles']:g}{extra}{mark}, {run['error']:.1e}, {run['wall']:.3g} s"
 
 
 SAME_AS = {"main": "plain", "shooting, concentric start": "shooting"}
