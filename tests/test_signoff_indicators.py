@@ -188,3 +188,33 @@ def test_limits_section_is_validated_and_optional():
     with pytest.raises(CaseError, match="max_presure"):
         Case.from_dict({**base, "limits": {"max_presure": 1e8}})
     assert isinstance(Margin("max_pressure", "POFP", "Pa", 1e8, 2e8).margin, float)
+
+
+def test_extremes_over_rows_are_numpys_with_the_first_row_on_a_tie():
+    """largest/smallest_over_rows give max/min(axis=0) and argmax/argmin(axis=0) — the
+    first row reaching the extreme where several do (coarse values: many ties)."""
+    from conrod.results.indicators import largest_over_rows, smallest_over_rows
+
+    rows = np.round(np.random.default_rng(5).uniform(-3.0, 3.0, (40, 7, 3)))
+    values, when = largest_over_rows(rows)
+    np.testing.assert_array_equal(values, rows.max(axis=0))
+    np.testing.assert_array_equal(when, rows.argmax(axis=0))
+    values, when = smallest_over_rows(rows)
+    np.testing.assert_array_equal(values, rows.min(axis=0))
+    np.testing.assert_array_equal(when, rows.argmin(axis=0))
+
+
+def test_reynolds_proxy_is_the_dense_formula_bit_for_bit():
+    """The proxy computed at the crossing cells alone equals the formula over every cell
+    and interval: (p_(i+1) − p_i)/Δt where p_i is cavitated and p_(i+1) is not, else 0."""
+    rng = np.random.default_rng(11)
+    pressure = rng.uniform(-1e5, 8e6, (N_ROWS, N_THETA, N_Z))
+    pressure[rng.random(pressure.shape) < 0.5] = 0.0
+    fields = _fields({"pressure": pressure})
+    following = np.roll(pressure, -1, axis=0)
+    level = max(float(np.max(np.abs(pressure))), 1.0) * 1e-9
+    crossing = (pressure <= level) & (following > level)
+    dense = np.where(crossing, (following - pressure) / interval_times(fields)[:, None, None],
+                     0.0)
+    assert crossing.any()
+    np.testing.assert_array_equal(boundary_pressure_rate(fields), dense)

@@ -30,7 +30,7 @@ import math
 import numpy as np
 
 from conrod.results.fields import CycleFields
-from conrod.results.indicators import CellMap, middle_of_ties
+from conrod.results.indicators import CellMap, largest_over_rows, middle_of_ties
 
 FULL_FILM = 1.0 - 1e-9
 """Film fraction below which a cell counts as cavitated [-]."""
@@ -62,14 +62,16 @@ def reformation_intensity(fields: CycleFields) -> np.ndarray:
 
 
 def boundary_pressure_rate(fields: CycleFields) -> np.ndarray:
-    """The Reynolds proxy per interval and cell (n, n_θ, n_z) [Pa/s] (module docstring)."""
+    """The Reynolds proxy per interval and cell (n, n_θ, n_z) [Pa/s] (module docstring);
+    the rate computed at the crossing cells alone (a few per cell and cycle)."""
     p_now = fields["pressure"]
-    p_next = np.roll(p_now, -1, axis=0)
-    p_cav = fields.cavitation_pressure
-    scale = max(float(np.max(np.abs(p_now))), 1.0) * CAVITATED_SHARE
-    crossing = (p_now <= p_cav + scale) & (p_next > p_cav + scale)
-    dt = interval_times(fields)[:, None, None]
-    return np.where(crossing, (p_next - p_now) / dt, 0.0)
+    scale = max(float(p_now.max()), -float(p_now.min()), 1.0) * CAVITATED_SHARE
+    cavitated = p_now <= fields.cavitation_pressure + scale
+    i, j, k = np.nonzero(cavitated & ~np.roll(cavitated, -1, axis=0))
+    rate = np.zeros(p_now.shape)
+    following = (i + 1) % p_now.shape[0]
+    rate[i, j, k] = (p_now[following, j, k] - p_now[i, j, k]) / interval_times(fields)[i]
+    return rate
 
 
 def erosion_map(fields: CycleFields) -> tuple[CellMap | None, str]:
@@ -82,8 +84,7 @@ def erosion_map(fields: CycleFields) -> tuple[CellMap | None, str]:
         per_interval, words = reformation_intensity(fields), MASS_CONSERVING
     else:
         per_interval, words = boundary_pressure_rate(fields), REYNOLDS_PROXY
-    values = per_interval.max(axis=0)
-    when = per_interval.argmax(axis=0)
+    values, when = largest_over_rows(per_interval)
     after = (when + 1) % fields.crank_angle.size  # the interval ends at φ_(i+1)
     j, node = np.unravel_index(int(values.argmax()), values.shape)
     k = middle_of_ties(values[j], int(node))

@@ -153,19 +153,19 @@ def journal_frame(history: np.ndarray, fields: CycleFields) -> np.ndarray:
     n_theta = fields.theta.size
     shifts = journal_shifts(fields)
     index = (np.arange(n_theta)[None, :] + shifts[:, None]) % n_theta
-    return np.take_along_axis(history, index[:, :, None], axis=1)
+    return history[np.arange(history.shape[0])[:, None], index]  # whole axial rows at once
 
 
 def _cell_map(name, long_name, units, frame, rows, how, fields, shell_rows,
               source) -> CellMap:
     """The indicator of ``rows`` (n, n_θ, n_z) per cell and its worst value."""
-    high, low = rows.argmax(axis=0), rows.argmin(axis=0)
     if how == "min":
-        values, when, worst = rows.min(axis=0), low, "min"
+        (values, when), worst = smallest_over_rows(rows), "min"
     elif how == "max":
-        values, when, worst = rows.max(axis=0), high, "max"
+        (values, when), worst = largest_over_rows(rows), "max"
     else:
-        values, when, worst = rows.max(axis=0) - rows.min(axis=0), high, "max"
+        (high_values, when), worst = largest_over_rows(rows), "max"
+        values = high_values - rows.min(axis=0)
     if name in ("max_pressure", "min_film_thickness"):
         value, theta, z, i = _refined(how, shell_rows, fields, source)
         if frame == "journal":
@@ -178,6 +178,20 @@ def _cell_map(name, long_name, units, frame, rows, how, fields, shell_rows,
         value, theta, z = float(values[j, k]), float(fields.theta[j]), float(fields.z[k])
     return CellMap(name, long_name, units, frame, values, fields.crank_angle[when], worst,
                    value, theta, z, float(fields.crank_angle[i]))
+
+
+def largest_over_rows(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(max over the rows, the first row reaching it) per cell of ``rows`` (n, ...): what
+    ``max(axis=0)`` and ``argmax(axis=0)`` give, the row found on a boolean array (numpy's
+    argmax along the first axis of a float array copies it transposed) [-]."""
+    values = rows.max(axis=0)
+    return values, (rows == values).argmax(axis=0)
+
+
+def smallest_over_rows(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(min over the rows, the first row reaching it) per cell (:func:`largest_over_rows`)."""
+    values = rows.min(axis=0)
+    return values, (rows == values).argmax(axis=0)
 
 
 def middle_of_ties(column: np.ndarray, k: int) -> int:

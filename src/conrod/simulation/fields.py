@@ -46,6 +46,7 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
     specs: dict[str, FieldSpec] = {}
     extremes: list[tuple[float, float, float, float]] = []
     declares = (isinstance(film, HasFilmFields), isinstance(film, HasMixableContent))
+    nodes = (theta, z, np.cos(theta)[:, None], np.sin(theta)[:, None])  # once per cycle
     for i in range(len(cycle.crank_angle)):
         state = problem.row_state(cycle, i)
         if film_memory:
@@ -58,7 +59,7 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
         extremes.append((result.max_pressure, result.max_pressure_angle,
                          result.min_film_thickness, result.min_film_angle))
         for name, (values, spec) in _row(problem, state, session.memory, result.pressure,
-                                         theta, z, declares).items():
+                                         nodes, declares).items():
             rows.setdefault(name, []).append(values)
             specs.setdefault(name, spec)
     g, reported = film.geometry, np.array(extremes)
@@ -71,15 +72,16 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
                       "film_thickness": (reported[:, 2], reported[:, 3])})
 
 
-def _row(problem, state, memory, pressure, theta, z, declares: tuple[bool, bool]) -> dict:
-    """name → (field (n_θ, n_z), spec) at one output angle; ``declares``: whether the film
-    declares fields of its own and a mixable content (checked once per cycle)."""
+def _row(problem, state, memory, pressure, nodes, declares: tuple[bool, bool]) -> dict:
+    """name → (field (n_θ, n_z), spec) at one output angle; ``nodes`` (θ, z, cos θ, sin θ)
+    of the film grid and ``declares`` (whether the film declares fields of its own and a
+    mixable content), both once per cycle."""
     film = problem.film
     has_fields, mixable = declares
     out = {"pressure": (np.asarray(pressure, dtype=float), FIELD_SPECS["pressure"])}
     declared = film.film_fields(state, memory) if has_fields else {}
     deformation = declared["deformation"].values if "deformation" in declared else None
-    h = film_thickness_field(film.geometry, state, theta, z, deformation)
+    h = film_thickness_field(film.geometry, state, *nodes[:2], deformation, nodes[2:])
     out["film_thickness"] = (h, FIELD_SPECS["film_thickness"])
     if mixable and memory is not None:
         fraction = film.content_vector(memory).reshape(h.shape)
@@ -95,9 +97,11 @@ def _row(problem, state, memory, pressure, theta, z, declares: tuple[bool, bool]
 
 
 def film_thickness_field(geometry, state: FilmState, theta: np.ndarray, z: np.ndarray,
-                         deformation: np.ndarray | None = None) -> np.ndarray:
-    """h(θ, z) [m] of ``state`` on the nodes θ × z (module docstring)."""
-    cos, sin = np.cos(theta)[:, None], np.sin(theta)[:, None]
+                         deformation: np.ndarray | None = None,
+                         trig: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+    """h(θ, z) [m] of ``state`` on the nodes θ × z (module docstring); ``trig``: cos θ and
+    sin θ as columns (n_θ, 1), when the caller has them."""
+    cos, sin = trig if trig is not None else (np.cos(theta)[:, None], np.sin(theta)[:, None])
     zz = z[None, :]
     h = (geometry.radial_clearance - (state.eccentricity_x + zz * state.tilt_y) * cos
          - (state.eccentricity_y - zz * state.tilt_x) * sin)
