@@ -287,7 +287,8 @@ def write_table(args, workers: list[int], rows: list[str], overhead: list[str],
         lines += ["", f"Not measured here: the 16-worker rows (this machine has "
                   f"{os.cpu_count()} cores). On a 16-core machine run `python "
                   "benchmarks/sweep_benchmarks.py --workers 1,16 --short 400 --ehd 32 "
-                  "--ehd-one 8 --repeat 1 --cold 0` (about 9 minutes there)."]
+                  "--ehd-one 8 --repeat 1 --cold 0` (about 9 minutes there); one such run "
+                  "is in `sweep_benchmarks_16core.md`."]
     Path(args.out).write_text("\n".join(lines) + "\n", encoding="utf-8")
     print("\n".join(lines))
 
