@@ -70,8 +70,18 @@ def resolved(integrator: Any, problem: OrbitProblem) -> Any:
     return choose(problem) if choose is not None else integrator
 
 
+class _FixedStepLeadIn:
+    """The lead-in of an integrator that runs an elastic bore by the fixed implicit steps
+    (:func:`_fixed_step_lead_in`)."""
+
+    def lead_in(self, problem: OrbitProblem, state: OrbitState,
+                settings: Any) -> CycleTrajectory | None:
+        """The last ``[solver] lead_in`` share of a cycle, or None (module docstring)."""
+        return _fixed_step_lead_in(problem, state, settings)
+
+
 @dataclass(frozen=True)
-class AdaptiveIntegrator:
+class AdaptiveIntegrator(_FixedStepLeadIn):
     """Implicit, error-controlled (SciPy Radau/BDF/LSODA) with contact phases."""
 
     name: str = "adaptive"
@@ -95,11 +105,6 @@ class AdaptiveIntegrator:
                 "quasi_static)"
 )
         return adaptive_cycle(problem, state, settings, settings.output_step_deg)
-
-    def lead_in(self, problem: OrbitProblem, state: OrbitState,
-                settings: Any) -> CycleTrajectory | None:
-        """The lead-in of the fixed implicit steps (:func:`_fixed_step_lead_in`)."""
-        return _fixed_step_lead_in(problem, state, settings)
 
 
 @dataclass(frozen=True)
@@ -132,7 +137,7 @@ class AutomaticIntegrator:
 
 
 @dataclass(frozen=True)
-class ImplicitIntegrator:
+class ImplicitIntegrator(_FixedStepLeadIn):
     """TR-BDF2 (L-stable, second order, error-controlled, steps ≤ ``max_step_deg``) with
     contact phases; compiled with the film force for films with a compiled kernel."""
 
@@ -155,11 +160,6 @@ class ImplicitIntegrator:
         if steps_implicitly(problem):
             return _fixed_step_cycle(problem, state, settings)
         return implicit_cycle(problem, state, settings)
-
-    def lead_in(self, problem: OrbitProblem, state: OrbitState,
-                settings: Any) -> CycleTrajectory | None:
-        """The lead-in of the fixed implicit steps (:func:`_fixed_step_lead_in`)."""
-        return _fixed_step_lead_in(problem, state, settings)
 
 
 @dataclass(frozen=True)
