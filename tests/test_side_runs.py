@@ -214,7 +214,7 @@ def test_load_of_this_machine_is_a_share_of_its_usable_cores():
 def test_the_run_computes_the_jobs_the_process_has_not_started(fresh):
     """Work stealing: the process is busy with "slow"; the run needs "late" and computes it
     (MISSING: the caller's own path), and while it waits for "slow" it computes the others
-    nobody took, last first, with a solver's error raised when that job is taken."""
+    nobody took, in their order, with a solver's error raised when that job is taken."""
     started = []
     side = side_runs.start([("slow", lambda: time.sleep(1.0) or "slow done"),
                             ("mid", lambda: started.append("mid") or 1),
@@ -222,7 +222,7 @@ def test_the_run_computes_the_jobs_the_process_has_not_started(fresh):
     while side.claims[0] == side_runs.OPEN:
         time.sleep(0.01)
     assert side.take("late") is side_runs.MISSING
-    assert side.take("slow") == "slow done"  # computed "last", then "mid" here meanwhile
+    assert side.take("slow") == "slow done"  # computed "mid", then "last" here meanwhile
     assert started == ["mid"]  # here: this process's list
     assert list(side.claims[:]) == [side_runs.THERE] + [side_runs.HERE] * 3
     assert side.take("mid") == 1

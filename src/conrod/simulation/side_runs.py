@@ -86,8 +86,10 @@ class SideRuns:
         raised, raised here; :data:`MISSING` when the process does not have it (not one of
         its jobs, not started there yet, failed otherwise, or the process ended): the run
         computes it. While the job runs there, the run computes the jobs nobody took yet
-        itself, last first (work stealing: on a cold numba cache the process compiles the
-        rigid companion's kernels while the run does the coarse orbits)."""
+        itself, in their order, the largest first as the process takes them (work stealing:
+        on a cold numba cache the process compiles the rigid companion's kernels while the
+        run does the coarse orbits, the finer first, so that the process, once free, takes
+        the smaller one instead of waiting)."""
         if key not in self.keys or key in self.taken:
             return MISSING
         self.taken.add(key)
@@ -109,8 +111,8 @@ class SideRuns:
         return value
 
     def _compute_one_here(self, waiting_for: Any) -> bool:
-        """Compute the last job nobody took (not ``waiting_for``) here; True if one ran."""
-        for index in reversed(range(len(self.keys))):
+        """Compute the first job nobody took (not ``waiting_for``) here; True if one ran."""
+        for index in range(len(self.keys)):
             other = self.keys[index]
             if other != waiting_for and _claim(self.claims, index, HERE):
                 try:
