@@ -85,7 +85,7 @@ def _descend(k, errors, sources, work, stencils, masks, symmetric):
     """Pre-smooth the correction on coarse level k and restrict its residual to k + 1
     (``sources`` hold normalised sources b/a_P, ``work`` the residuals; no allocation)."""
     w_e, w_w, w_n, w_s, a_p = stencils[k]
-    gauss_seidel(errors[k], w_e, w_w, w_n, w_s, sources[k], -np.inf, PRE_SWEEPS)
+    gauss_seidel(errors[k], w_e, w_w, w_n, w_s, sources[k], -np.inf, np.int64(PRE_SWEEPS))
     residual(errors[k], w_e, w_w, w_n, w_s, sources[k], a_p, masks[k], work[k])
     restrict(work[k], masks[k + 1], symmetric, stencils[k + 1][4], sources[k + 1])
     errors[k + 1][:] = 0.0
@@ -96,7 +96,7 @@ def _ascend(k, errors, sources, stencils, masks):
     """Add the prolongated correction of level k + 1 to level k and post-smooth."""
     add_prolongated(errors[k + 1], errors[k], masks[k])
     w_e, w_w, w_n, w_s, _ = stencils[k]
-    gauss_seidel(errors[k], w_e, w_w, w_n, w_s, sources[k], -np.inf, POST_SWEEPS)
+    gauss_seidel(errors[k], w_e, w_w, w_n, w_s, sources[k], -np.inf, np.int64(POST_SWEEPS))
 
 
 @nb.njit(cache=True)
@@ -235,7 +235,7 @@ def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, 
     k = 0
     while True:
         while k < last:
-            _descend(k, errors, sources, work, stencils, masks, symmetric)
+            _descend(np.int64(k), errors, sources, work, stencils, masks, symmetric)
             k += 1
         relax(errors[last], w_e, w_w, w_n, w_s, sources[last], omega, -np.inf,
               COARSEST_SWEEPS)
@@ -250,7 +250,7 @@ def correction(rhs_fine, masks, stencils, coarse_east, coarse_north, symmetric, 
             visits[k] = 0
             if k == 0:
                 return errors[0]
-        _descend(k, errors, sources, work, stencils, masks, symmetric)
+        _descend(np.int64(k), errors, sources, work, stencils, masks, symmetric)
         k += 1
 
 
@@ -275,7 +275,9 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
     estimate of the remaining error when that stopped the cycles).
     """
     a_east, a_north = conductances(h, radius, d_theta, d_z)
-    w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, fixed, symmetric)
+    w_e, w_w, w_n, w_s, a_p = stencil(a_east, a_north, fixed.copy(), symmetric)  # writable, as
+    # the coarse masks: one specialisation of the stencil (sweep counts and levels are int64
+    # at every call for the same reason: a literal argument compiles a callee once more)
     s = source / a_p
     n, m = p.shape
     for i in range(n):
@@ -310,7 +312,7 @@ def multigrid_solve(p, h, source, fixed, radius, d_theta, d_z, cavitation_pressu
                                      symmetric, coarse_cycles, errors, sources, work),
                           p, mask, cavitation_pressure)
         else:
-            gauss_seidel(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, 1)
+            gauss_seidel(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, np.int64(1))
         gauss_seidel(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, POST_SWEEPS - 1)
         change = relax_with_change(p, w_e, w_w, w_n, w_s, s, cavitation_pressure, previous)
         if change <= tolerance:
@@ -378,7 +380,7 @@ def solve_on_grid(pressure, h, source, fixed, grid, cavitation_pressure, toleran
         return multigrid_solve(pressure, h, source, read_only(fixed), grid.radius, grid.d_theta,
                                grid.d_z, cavitation_pressure, tolerance, max_cycles,
                                coarse_levels(grid.n_theta, grid.n_z), False)
-    half, h_half, source_half, fixed_half = _fold(pressure, h, source, fixed)
+    half, h_half, source_half, fixed_half = _fold(pressure, h, source, read_only(fixed))
     cycles, change = multigrid_solve(
         half, h_half, source_half, read_only(fixed_half), grid.radius, grid.d_theta, grid.d_z,
         cavitation_pressure, tolerance, max_cycles, coarse_levels(grid.n_theta, grid.n_z // 2),
