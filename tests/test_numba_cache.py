@@ -132,3 +132,8 @@ def test_every_path_hands_the_multigrid_one_read_only_mask():
     assert np.array_equal(fields[0], fields[1]) and np.array_equal(fields[2], fields[3])
     masks = [signature[3] for signature in multigrid.multigrid_solve.signatures]
     assert masks and not any(mask.mutable for mask in masks)
+    # and each kernel below it at most once (int64 sweep counts and levels, one kind of
+    # mask); a caller loaded from numba's cache leaves its callees uncompiled (none listed)
+    for kernel in (multigrid._fold, multigrid._descend, multigrid.gauss_seidel,
+                   multigrid.stencil):
+        assert len(kernel.signatures) <= 1, (kernel.py_func.__name__, kernel.signatures)
