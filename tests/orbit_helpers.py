@@ -12,6 +12,7 @@ from conrod.film.base import BearingGeometry
 from conrod.film.short.film import ShortBearingFilm
 from conrod.loads.cycle import LoadCycle
 from conrod.orbit import OrbitProblem
+from conrod.orbit.characteristics import cycle_characteristics
 
 SPEED = 2000.0 * 2.0 * math.pi / 60.0
 """Crank = journal speed of the test problems [rad/s]."""
@@ -104,3 +105,18 @@ def assert_settles_at_steady_point(orbit, film, load: float, most_cycles: int = 
     assert orbit.periodic and orbit.cycles <= most_cycles
     assert eps == pytest.approx(eps_ref, rel=5e-3)
     assert angle == pytest.approx(angle_ref, rel=5e-3)
+
+
+def assert_same_periodic_orbit(problem, settings, plain, shot) -> None:
+    """Two periodic orbits of ``problem`` agree: both periodic, ``shot``'s error within the
+    tolerance of ``settings``; max |Δe|/c ≤ tolerance; h_min within tolerance × c; p_max
+    1 %."""
+    tolerance = settings.periodicity_tolerance
+    assert plain.periodic and shot.periodic
+    assert shot.periodicity_error <= tolerance
+    gap = np.max(np.hypot(shot.last.x - plain.last.x, shot.last.y - plain.last.y))
+    assert gap <= tolerance * problem.clearance
+    a = cycle_characteristics(problem, plain.last)
+    b = cycle_characteristics(problem, shot.last)
+    assert abs(float(np.min(a.h_min)) - float(np.min(b.h_min))) <= tolerance * problem.clearance
+    assert float(np.max(b.p_max)) == pytest.approx(float(np.max(a.p_max)), rel=0.01)

@@ -19,10 +19,10 @@ import numpy as np
 import pytest
 
 from conrod import Case, Simulation
-from conrod.orbit.characteristics import cycle_characteristics
 from conrod.orbit.periodic import integrate_cycle, periodic_orbit
 from conrod.orbit.problem import initial_state
 from conrod.orbit.shooting import CycleShooting, newton_step
+from orbit_helpers import assert_same_periodic_orbit
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 PLAIN = {"accelerate_cycles": False, "massless_start": False}
@@ -79,33 +79,20 @@ def _orbits(stem: str, overrides: dict, accelerated: dict):
     return problem, sim.solver, plain, shot
 
 
-def _assert_same_orbit(problem, settings, plain, shot) -> None:
-    """Both periodic; max |Δe|/c ≤ tolerance; h_min within tolerance × c; p_max 1 %."""
-    tolerance = settings.periodicity_tolerance
-    assert plain.periodic and shot.periodic
-    assert shot.periodicity_error <= tolerance
-    gap = np.max(np.hypot(shot.last.x - plain.last.x, shot.last.y - plain.last.y))
-    assert gap <= tolerance * problem.clearance
-    a = cycle_characteristics(problem, plain.last)
-    b = cycle_characteristics(problem, shot.last)
-    assert abs(float(np.min(a.h_min)) - float(np.min(b.h_min))) <= tolerance * problem.clearance
-    assert float(np.max(b.p_max)) == pytest.approx(float(np.max(a.p_max)), rel=0.01)
-
-
 @pytest.mark.parametrize("start", [{"massless_start": False}, {}])
 def test_shot_orbit_with_mass_is_the_repeated_orbit_in_two_cycles(start):
     """Passenger car, short bearing with mass, hard contact: plain repetition needs 3
     cycles (the third only shows the second was periodic); shooting accepts the second by
     its closure, from the concentric start and from the massless one."""
     problem, settings, plain, shot = _orbits("passenger_car_diesel_2000rpm", {}, start)
-    _assert_same_orbit(problem, settings, plain, shot)
+    assert_same_periodic_orbit(problem, settings, plain, shot)
     assert plain.cycles == 3 and shot.cycles == 2
 
 
 def test_shot_massless_orbit_is_the_repeated_orbit_in_two_cycles():
     """Table load, massless (quasi-static) orbit: 3 → 2 cycles."""
     problem, settings, plain, shot = _orbits("flores2006_table_load", {}, {})
-    _assert_same_orbit(problem, settings, plain, shot)
+    assert_same_periodic_orbit(problem, settings, plain, shot)
     assert plain.cycles == 3 and shot.cycles == 2
 
 
@@ -116,7 +103,7 @@ def test_shot_orbit_on_the_reynolds_film_is_the_repeated_orbit():
     problem, settings, plain, shot = _orbits("kamaz_740_truck_diesel",
                                              {"film": "reynolds", "housing": "rigid",
                                               "n_theta": 24, "n_z": 8}, {})
-    _assert_same_orbit(problem, settings, plain, shot)
+    assert_same_periodic_orbit(problem, settings, plain, shot)
     assert shot.cycles < plain.cycles
 
 
@@ -127,7 +114,7 @@ def test_shot_orbit_on_an_elastic_bore_is_the_repeated_orbit():
     problem, settings, plain, shot = _orbits("kamaz_740_truck_diesel",
                                              {"film": "reynolds", "n_theta": 24, "n_z": 6},
                                              {})
-    _assert_same_orbit(problem, settings, plain, shot)
+    assert_same_periodic_orbit(problem, settings, plain, shot)
     assert shot.cycles < plain.cycles
 
 
