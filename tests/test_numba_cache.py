@@ -132,8 +132,38 @@ def test_every_path_hands_the_multigrid_one_read_only_mask():
     assert np.array_equal(fields[0], fields[1]) and np.array_equal(fields[2], fields[3])
     masks = [signature[3] for signature in multigrid.multigrid_solve.signatures]
     assert masks and not any(mask.mutable for mask in masks)
-    # and each kernel below it at most once (int64 sweep counts and levels, one kind of
-    # mask); a caller loaded from numba's cache leaves its callees uncompiled (none listed)
-    for kernel in (multigrid._fold, multigrid._descend, multigrid.gauss_seidel,
-                   multigrid.stencil):
-        assert len(kernel.signatures) <= 1, (kernel.py_func.__name__, kernel.signatures)
+
+
+SPECIALISATIONS = """
+import json
+import numpy as np
+from conrod.film.base import BearingGeometry, FilmState
+from conrod.film.reynolds import multigrid
+from conrod.film.reynolds.film import ReynoldsFilm
+film = ReynoldsFilm(BearingGeometry(diameter=0.05, width=0.025, radial_clearance=2.5e-5),
+                    n_theta=36, n_z=8)
+problem = film._problem(FilmState(eccentricity_x=15e-6, eccentricity_y=5e-6,
+                                  velocity_x=1e-3, velocity_y=0.0, journal_speed=200.0,
+                                  viscosity=0.02))
+source = np.linspace(-1e-9, 1e-9, problem.h.size).reshape(problem.h.shape)
+for symmetric in (False, True):
+    for fixed in (problem.fixed.copy(), multigrid.read_only(problem.fixed)):
+        multigrid.solve_on_grid(np.where(fixed, 0.0, 1e5), problem.h, source, fixed,
+                                film.film_grid, 0.0, 1e-10, 50, symmetric)
+print(json.dumps({k.py_func.__name__: len(k.signatures) for k in (
+    multigrid._fold, multigrid._descend, multigrid.gauss_seidel, multigrid.stencil)}))
+"""
+
+
+def test_the_multigrid_kernels_compile_one_specialisation_each(tmp_path):
+    """On an empty numba cache (a new process: the kernels' signatures are those of these
+    solves alone), the symmetric and full grids with a writable and a read-only mask compile
+    _fold, _descend, gauss_seidel and stencil once each: int64 sweep counts and levels and
+    one kind of mask at every call site (a literal argument or a read-only mask compiled a
+    kernel once more)."""
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src"), "NUMBA_CACHE_DIR": str(tmp_path)}
+    done = subprocess.run([sys.executable, "-c", SPECIALISATIONS], capture_output=True,
+                          text=True, env=env, check=False)
+    assert done.returncode == 0, done.stderr[-2000:]
+    counts = json.loads(done.stdout.splitlines()[-1])
+    assert counts == {"_fold": 1, "_descend": 1, "gauss_seidel": 1, "stencil": 1}
