@@ -120,3 +120,32 @@ def test_half_width_response_equals_the_full_width_one(monkeypatch):
     problem = film.discrete_problem(uneven)
     active = ~problem.fixed & (pressure > problem.cavitation)
     assert mirror_half(active, np.nonzero(active), pressure, problem) is None
+
+
+def test_the_banded_solve_is_taken_and_equals_superlus(monkeypatch):
+    """A film with a cavitated arc cuts the ring of active θ rows: its responses, half
+    width and full width, are solved on the band (taken: spied) and equal SuperLU's (the
+    banded solve turned off) to round-off."""
+    from conrod.film.reynolds import response as response_module
+
+    film, theta, bore, velocity, evaluate = setup()
+    deformed, pressure, _, _ = evaluate(bore, velocity)
+    weights = nodal_force_weights(film, theta, RADIUS)
+    banded = response_module.banded_solve_rows
+    answers: list[bool] = []
+
+    def spied(*args):
+        answers.append(banded(*args) is not None)
+        return banded(*args)
+
+    names = ("nodal_by_bore", "nodal_by_velocity", "force_by_bore", "force_by_velocity")
+    for half in (True, False):
+        monkeypatch.setattr(response_module, "MIRROR_HALF", half)
+        monkeypatch.setattr(response_module, "banded_solve_rows", spied)
+        band = film.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
+        monkeypatch.setattr(response_module, "banded_solve_rows", lambda *args: None)
+        lu = film.thickness_response(deformed, ReynoldsMemory(pressure), weights, STEP)
+        for name in names:
+            a, b = getattr(band, name), getattr(lu, name)
+            assert np.max(np.abs(a - b)) <= 1e-12 * np.max(np.abs(b)), (half, name)
+    assert answers == [True, True]

@@ -49,7 +49,7 @@ from conrod.film.reynolds.memory import ReynoldsMemory
 from conrod.film.reynolds.response_kernel import bore_node_imbalance, bore_row_imbalance
 from conrod.film.step_system import FilmResponse
 from conrod.film.tilt import thickness_directions
-from conrod.numerics.sparse_lu import ManyRightHandSides
+from conrod.numerics.sparse_lu import ManyRightHandSides, banded_solve_rows
 
 
 def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray,
@@ -106,8 +106,7 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
         nodal_response = _nodal_response(solved, nodal, nodes, shape)
     else:  # one half of the width (module docstring); its answer stays on the half
         keep, representative = half
-        solved = ManyRightHandSides(_folded(matrix, keep, representative)).solve_rows(
-            right[:, keep])
+        solved = _solve_half(matrix, keep, representative, right[:, keep])
         force = -np.stack([solved @ _fold(w_x[nodes], representative, keep.size),
                            solved @ _fold(w_y[nodes], representative, keep.size)])
         nodal_response = _nodal_response(solved, nodal, nodes, shape, representative)
@@ -152,6 +151,18 @@ def _folded(matrix, keep: np.ndarray, representative: np.ndarray):
                       shape=(keep.size, keep.size)).tocsc()
 
 
+def _solve_half(matrix, keep: np.ndarray, representative: np.ndarray,
+                right: np.ndarray) -> np.ndarray:
+    """∂p_H/∂q (n_q, n_H) of K_H ∂p_H/∂q = −r_q (:func:`_folded`) for the rows of ``right``:
+    by the band of the ring cut at a θ row without active nodes
+    (:func:`~conrod.numerics.sparse_lu.banded_solve_rows`), else by SuperLU."""
+    rows = matrix.tocsr()[keep]
+    solved = banded_solve_rows(rows.indptr, representative[rows.indices], rows.data, right)
+    if solved is None:
+        solved = ManyRightHandSides(_folded(matrix, keep, representative)).solve_rows(right)
+    return solved
+
+
 def _fold(weights: np.ndarray, representative: np.ndarray, size: int) -> np.ndarray:
     """E^T w: the weights of the active nodes added onto their representatives [-]."""
     return np.bincount(representative, weights=weights, minlength=size)
@@ -164,7 +175,11 @@ def _solve(matrix, right: np.ndarray, many: bool) -> np.ndarray:
         # more directions than active nodes (a node per film node): one dense LU and one
         # blocked solve, 3x faster than as many sparse back-substitutions
         return lu_solve(lu_factor(matrix.toarray()), right.T).T
-    return ManyRightHandSides(matrix, "MMD_AT_PLUS_A").solve_rows(right)  # K_AA symmetric
+    rows = matrix.tocsr()
+    solved = banded_solve_rows(rows.indptr, rows.indices, rows.data, right)
+    if solved is None:
+        solved = ManyRightHandSides(matrix, "MMD_AT_PLUS_A").solve_rows(right)  # symmetric
+    return solved
 
 
 def _nodal_response(solved: np.ndarray, nodal: np.ndarray, nodes, shape,
