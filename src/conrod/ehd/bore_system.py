@@ -262,6 +262,13 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
         film.coupling.tolerance, 5 * settings.max_iterations, carried_chord(film, key), finish)
 
 
+ANSWERS_HELD = 4096
+"""Step answers whose characteristics a film keeps (``film.answers``, by the memory that
+holds the answer; cleared when full) [-]: the output rows of a cycle are read three times
+(the cycle table, the film fields, the elastic diagnostics), the characteristics computed
+once."""
+
+
 def step_answer(film, state: FilmState, memory, with_pressure: bool):
     """The answer of the implicit step of :func:`pressure_step_system` that ended at
     ``state`` with ``memory``: its converged pressure on the bore deformation it solved
@@ -274,13 +281,17 @@ def step_answer(film, state: FilmState, memory, with_pressure: bool):
             or answered[1] is not getattr(memory.inner, "pressure", None)
             or answered[0] != answer_key(state)):
         return None
-    solved = film.base.answered_evaluation(film.deformed(state, memory, memory.deformation),
-                                           memory.inner)
-    if film.contact is not None:  # asperity pressure on the deformed film
-        solved = film.contact.attach(solved)
-    result, _ = solved.finish()
-    result = dataclasses.replace(result, pressure=result.pressure if with_pressure else None,
-                                 extra=dict(result.extra))
+    held = film.answers.get(id(memory))
+    if held is None or held[0] is not memory:  # the characteristics once per answer
+        solved = film.base.answered_evaluation(
+            film.deformed(state, memory, memory.deformation), memory.inner)
+        if film.contact is not None:  # asperity pressure on the deformed film
+            solved = film.contact.attach(solved)
+        if len(film.answers) >= ANSWERS_HELD:
+            film.answers.clear()
+        held = film.answers[id(memory)] = (memory, solved.finish()[0])
+    result = dataclasses.replace(held[1], pressure=held[1].pressure if with_pressure else None,
+                                 extra=dict(held[1].extra))
     result.extra.update(coupling_extra(memory, memory.deformation, memory.iterations,
                                        memory.residual, memory.increment))
     return result

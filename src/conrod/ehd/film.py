@@ -152,6 +152,7 @@ class ElasticFilm(FilmWrapper):
         self._zero_operator = np.zeros_like(housing.corrected_compliance)
         self.chords = {"balance": ChordJacobian(), "rigid": ChordJacobian(),
                        "coupling": ChordJacobian()}
+        self.answers: dict[int, tuple] = {}  # the step answers' characteristics, by memory
         self.exact = (isinstance(self.base, HasPressureEvaluation)
                       and isinstance(self.base, HasThicknessResponse)
                       and self.base.exact_thickness_response()

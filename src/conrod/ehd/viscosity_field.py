@@ -32,6 +32,7 @@ def with_viscosity_field(film: Any, field: np.ndarray | None) -> Any:
         return film
     warm = copy.copy(film)
     warm.base = film.base.with_viscosity_field(field)
+    warm.answers = {}  # its step answers' characteristics are its own
     if warm.base.exact_thickness_response() != film.base.exact_thickness_response():
         raise CaseError(f"film = {film.name!r} on an elastic bore: a viscosity field changes "
                         "how its response is taken (allowed: the isoviscous Reynolds film)")
