@@ -149,3 +149,32 @@ def test_the_banded_solve_is_taken_and_equals_superlus(monkeypatch):
             a, b = getattr(band, name), getattr(lu, name)
             assert np.max(np.abs(a - b)) <= 1e-12 * np.max(np.abs(b)), (half, name)
     assert answers == [True, True]
+
+
+def test_the_compiled_rows_are_the_active_matrix_entry_for_entry():
+    """The rows the band is built from (:func:`active_rows`) hold K_AA's entries as
+    :func:`conrod.film.linearised.active_matrix` does, and on the half width the folded K_H,
+    exactly (their sums in the same order)."""
+    import scipy.sparse as sp
+
+    from conrod.film.linearised import active_matrix
+    from conrod.film.reynolds import kernel
+    from conrod.film.reynolds.response import _folded, _mirror_half
+    from conrod.film.reynolds.response_kernel import active_rows
+
+    film, theta, bore, velocity, evaluate = setup()
+    deformed, pressure, _, _ = evaluate(bore, velocity)
+    problem, grid = film.discrete_problem(deformed), film.film_grid
+    a_east, a_north, _ = kernel.assemble_coefficients(
+        problem.h, problem.h_rate, grid.radius, grid.d_theta, grid.d_z,
+        deformed.journal_speed + deformed.shell_speed, deformed.viscosity)
+    active = ~problem.fixed & (pressure > problem.cavitation)
+    matrix, nodes = active_matrix(a_east, a_north, active)
+    n = nodes[0].size
+    full = sp.csr_matrix(active_rows(a_east, a_north, active, False)[::-1], shape=(n, n))
+    assert np.array_equal(full.toarray(), matrix.toarray())
+    keep, representative = _mirror_half(active, nodes, pressure, problem)
+    half = sp.csr_matrix(active_rows(a_east, a_north, active, True)[::-1],
+                         shape=(keep.size, keep.size))
+    assert np.array_equal(half.toarray(), _folded(matrix, keep, representative).toarray())
+    assert 0 < keep.size < n

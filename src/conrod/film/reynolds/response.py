@@ -46,7 +46,11 @@ from conrod.film.linearised import active_matrix
 from conrod.film.reynolds import kernel as kernel
 from conrod.film.reynolds import viscosity_field as vf
 from conrod.film.reynolds.memory import ReynoldsMemory
-from conrod.film.reynolds.response_kernel import bore_node_imbalance, bore_row_imbalance
+from conrod.film.reynolds.response_kernel import (
+    active_rows,
+    bore_node_imbalance,
+    bore_row_imbalance,
+)
 from conrod.film.step_system import FilmResponse
 from conrod.film.tilt import thickness_directions
 from conrod.numerics.sparse_lu import ManyRightHandSides, banded_solve_rows
@@ -82,7 +86,7 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     n_theta, n_nodes = pressure.shape
     shape = (n_theta, n_nodes)
     rate = 0.0 if rate_step is None else 1.0 / rate_step
-    matrix, nodes = active_matrix(a_east, a_north, active)
+    nodes = np.nonzero(active)  # row by row, the numbering of active_matrix's
     index = -np.ones(shape, dtype=np.int64)
     index[nodes] = np.arange(nodes[0].size)
     if conduction is None:
@@ -101,12 +105,12 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
             if MIRROR_HALF and tilt is None and nodal.ndim == 2 else None)
     w_x, w_y = film.force_weights
     if half is None:
-        solved = _solve(matrix, right, many=nodal.ndim == 1)
+        solved = _solve((a_east, a_north, active), right, many=nodal.ndim == 1)
         force = -np.stack([solved @ w_x[nodes], solved @ w_y[nodes]])
         nodal_response = _nodal_response(solved, nodal, nodes, shape)
     else:  # one half of the width (module docstring); its answer stays on the half
         keep, representative = half
-        solved = _solve_half(matrix, keep, representative, right[:, keep])
+        solved = _solve_half((a_east, a_north, active), keep, representative, right[:, keep])
         force = -np.stack([solved @ _fold(w_x[nodes], representative, keep.size),
                            solved @ _fold(w_y[nodes], representative, keep.size)])
         nodal_response = _nodal_response(solved, nodal, nodes, shape, representative)
@@ -151,14 +155,15 @@ def _folded(matrix, keep: np.ndarray, representative: np.ndarray):
                       shape=(keep.size, keep.size)).tocsc()
 
 
-def _solve_half(matrix, keep: np.ndarray, representative: np.ndarray,
+def _solve_half(balance, keep: np.ndarray, representative: np.ndarray,
                 right: np.ndarray) -> np.ndarray:
-    """∂p_H/∂q (n_q, n_H) of K_H ∂p_H/∂q = −r_q (:func:`_folded`) for the rows of ``right``:
-    by the band of the ring cut at a θ row without active nodes
-    (:func:`~conrod.numerics.sparse_lu.banded_solve_rows`), else by SuperLU."""
-    rows = matrix.tocsr()[keep]
-    solved = banded_solve_rows(rows.indptr, representative[rows.indices], rows.data, right)
+    """∂p_H/∂q (n_q, n_H) of K_H ∂p_H/∂q = −r_q (:func:`_folded`) for the rows of ``right``,
+    ``balance`` = (a^E, a^N, active): by the band of the ring cut at a θ row without active
+    nodes (:func:`~conrod.numerics.sparse_lu.banded_solve_rows` on the rows of
+    :func:`~conrod.film.reynolds.response_kernel.active_rows`), else by SuperLU."""
+    solved = banded_solve_rows(*active_rows(*balance, True), right)
     if solved is None:
+        matrix, _ = active_matrix(*balance)
         solved = ManyRightHandSides(_folded(matrix, keep, representative)).solve_rows(right)
     return solved
 
@@ -168,16 +173,18 @@ def _fold(weights: np.ndarray, representative: np.ndarray, size: int) -> np.ndar
     return np.bincount(representative, weights=weights, minlength=size)
 
 
-def _solve(matrix, right: np.ndarray, many: bool) -> np.ndarray:
+def _solve(balance, right: np.ndarray, many: bool) -> np.ndarray:
     """∂p_A/∂q (n_q, n_A) [Pa per unit q] of K_AA ∂p_A/∂q = −r_q for the rows of ``right``
-    (−r_q, (n_q, n_A)); ``many``: directions of single film nodes."""
+    (−r_q, (n_q, n_A)), ``balance`` = (a^E, a^N, active); ``many``: directions of single
+    film nodes."""
     if many and right.shape[0] > right.shape[1]:
         # more directions than active nodes (a node per film node): one dense LU and one
         # blocked solve, 3x faster than as many sparse back-substitutions
+        matrix, _ = active_matrix(*balance)
         return lu_solve(lu_factor(matrix.toarray()), right.T).T
-    rows = matrix.tocsr()
-    solved = banded_solve_rows(rows.indptr, rows.indices, rows.data, right)
+    solved = banded_solve_rows(*active_rows(*balance, False), right)
     if solved is None:
+        matrix, _ = active_matrix(*balance)
         solved = ManyRightHandSides(matrix, "MMD_AT_PLUS_A").solve_rows(right)  # symmetric
     return solved
 

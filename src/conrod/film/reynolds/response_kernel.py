@@ -100,3 +100,45 @@ def bore_node_imbalance(pressure: np.ndarray, h: np.ndarray, rate: float, radius
                 out[j, k, 3] = d_south * (pressure[j, k - 1] - pressure[j, k])
             out[j, k, 0] = value + 12.0 * viscosity * width * rate * arc
     return out
+
+
+@nb.njit(cache=True)
+def active_rows(a_east: np.ndarray, a_north: np.ndarray, active: np.ndarray, half: bool):
+    """K_AA of the flow balance on the ``active`` nodes by rows (CSR ``indptr``,
+    ``indices``, ``data``), the nodes numbered row by row — the entries of
+    :func:`conrod.film.linearised.active_matrix`, the diagonal summed in its order; with
+    ``half`` the rows of the nodes with z ≤ 0 and each column on its node's mirror image
+    there (K_H of :mod:`conrod.film.reynolds.response`: a column and its image listed apart,
+    to be added up) [m^3/(Pa s)]."""
+    n_theta, n_nodes = active.shape
+    limit = (n_nodes - 1) // 2 if half else n_nodes - 1
+    place = -np.ones((n_theta, n_nodes), dtype=np.int64)
+    count = 0
+    for i in range(n_theta):
+        for j in range(limit + 1):
+            if active[i, j]:
+                place[i, j] = count
+                count += 1
+    indptr = np.zeros(count + 1, dtype=np.int64)
+    indices = np.empty(5 * count, dtype=np.int64)
+    data = np.empty(5 * count)
+    at = 0
+    for i in range(n_theta):
+        west, east = (i - 1) % n_theta, (i + 1) % n_theta
+        for j in range(limit + 1):
+            row = place[i, j]
+            if row < 0:
+                continue
+            indices[at] = row
+            data[at] = (a_east[i, j] + a_east[west, j] + a_north[i, j] + a_north[i, j - 1])
+            at += 1
+            for ni, nj, conductance in ((east, j, a_east[i, j]), (west, j, a_east[west, j]),
+                                        (i, j + 1, a_north[i, j]), (i, j - 1, a_north[i, j - 1])):
+                if nj < 0 or nj >= n_nodes or not active[ni, nj]:
+                    continue
+                image = min(nj, n_nodes - 1 - nj) if half else nj
+                indices[at] = place[ni, image]
+                data[at] = -conductance
+                at += 1
+            indptr[row + 1] = at
+    return indptr, indices[:at], data[:at]
