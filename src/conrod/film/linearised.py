@@ -65,12 +65,13 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy.sparse import coo_matrix
+from scipy.sparse import csr_matrix
 from scipy.sparse.linalg import splu
 
 from conrod.errors import CaseError
 from conrod.film.base import FilmState
 from conrod.film.reynolds import kernel as kernel
+from conrod.film.reynolds.response_kernel import active_rows
 from conrod.film.tilt import thickness_directions
 
 STATE_KEYS = ("eccentricity_x", "eccentricity_y", "velocity_x", "velocity_y")
@@ -185,29 +186,14 @@ def _directions(film, state: FilmState, tilt: bool = False
 
 
 def active_matrix(a_east: np.ndarray, a_north: np.ndarray, active: np.ndarray):
-    """Sparse K_AA of the flux balance restricted to the active nodes, and their index."""
-    n_theta, n_nodes = active.shape
-    index = -np.ones(active.shape, dtype=np.int64)
-    rows_i, rows_j = np.nonzero(active)
-    index[rows_i, rows_j] = np.arange(rows_i.size)
-    west = (rows_i - 1) % n_theta
-    east = (rows_i + 1) % n_theta
-    diagonal = (a_east[rows_i, rows_j] + a_east[west, rows_j]
-                + a_north[rows_i, rows_j] + a_north[rows_i, rows_j - 1])
-    rows, cols, data = [np.arange(rows_i.size)], [np.arange(rows_i.size)], [diagonal]
-    for ni, nj, conductance in ((east, rows_j, a_east[rows_i, rows_j]),
-                                (west, rows_j, a_east[west, rows_j]),
-                                (rows_i, rows_j + 1, a_north[rows_i, rows_j]),
-                                (rows_i, rows_j - 1, a_north[rows_i, rows_j - 1])):
-        neighbour = index[ni, nj]
-        keep = neighbour >= 0
-        rows.append(np.nonzero(keep)[0])
-        cols.append(neighbour[keep])
-        data.append(-conductance[keep])
-    size = rows_i.size
-    matrix = coo_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))),
-                        shape=(size, size)).tocsc()
-    return matrix, (rows_i, rows_j)
+    """Sparse K_AA (CSC) of the flux balance restricted to the active nodes, and their index
+    (rows, columns), the nodes numbered row by row: the rows of
+    :func:`conrod.film.reynolds.response_kernel.active_rows`, the one place the stencil is
+    written."""
+    indptr, indices, data = active_rows(a_east, a_north, active, False)
+    size = indptr.size - 1
+    matrix = csr_matrix((data, indices, indptr), shape=(size, size)).tocsc()
+    return matrix, np.nonzero(active)
 
 
 ADJOINT_TOLERANCE = 1.0e-12

@@ -105,8 +105,9 @@ def bore_node_imbalance(pressure: np.ndarray, h: np.ndarray, rate: float, radius
 @nb.njit(cache=True)
 def active_rows(a_east: np.ndarray, a_north: np.ndarray, active: np.ndarray, half: bool):
     """K_AA of the flow balance on the ``active`` nodes by rows (CSR ``indptr``,
-    ``indices``, ``data``), the nodes numbered row by row — the entries of
-    :func:`conrod.film.linearised.active_matrix`, the diagonal summed in its order; with
+    ``indices``, ``data``), the nodes numbered row by row: the diagonal
+    a^E_ij + a^E_(i−1)j + a^N_ij + a^N_i(j−1), a neighbour's coupling −(the conductance of
+    the face between them) (also :func:`conrod.film.linearised.active_matrix`'s); with
     ``half`` the rows of the nodes with z ≤ 0 and each column on its node's mirror image
     there (K_H of :mod:`conrod.film.reynolds.response`: a column and its image listed apart,
     to be added up) [m^3/(Pa s)]."""
