@@ -42,12 +42,14 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
-from scipy import interpolate, special
 
 from conrod.errors import CaseError
+
+if TYPE_CHECKING:  # pragma: no cover
+    from scipy import interpolate
 
 ROELANDS_REFERENCE_PRESSURE = 1.96e8
 """Roelands' reference pressure p_r [Pa]."""
@@ -91,6 +93,8 @@ def roelands_ratio(pressure: np.ndarray, viscosity: float, index: float,
 
 def _roelands_scale(a_exp: float, index: float, reference: float) -> tuple[float, float]:
     """(C, Q(1/z, A)) of the closed-form Roelands reduced pressure."""
+    from scipy import special  # imported when a Roelands law is used: 0.1 s of start-up
+
     a = 1.0 / index
     scale = reference * math.exp(a_exp + special.gammaln(a) - a * math.log(a_exp)) / index
     return scale, float(special.gammaincc(a, a_exp))
@@ -99,6 +103,8 @@ def _roelands_scale(a_exp: float, index: float, reference: float) -> tuple[float
 def roelands_reduced(pressure: np.ndarray, viscosity: float, index: float,
                      reference: float = ROELANDS_REFERENCE_PRESSURE) -> np.ndarray:
     """Roelands reduced pressure q(p) [Pa] in closed form (incomplete gamma)."""
+    from scipy import special
+
     a_exp = roelands_exponent(viscosity)
     scale, q_zero = _roelands_scale(a_exp, index, reference)
     u = a_exp * np.exp(index * np.log1p(np.asarray(pressure, dtype=float) / reference))
@@ -108,6 +114,8 @@ def roelands_reduced(pressure: np.ndarray, viscosity: float, index: float,
 def roelands_pressure(reduced: np.ndarray, viscosity: float, index: float,
                       reference: float = ROELANDS_REFERENCE_PRESSURE) -> np.ndarray:
     """Inverse of :func:`roelands_reduced` [Pa], for q below q(∞) = C Q(1/z, A)."""
+    from scipy import special
+
     a_exp = roelands_exponent(viscosity)
     scale, q_zero = _roelands_scale(a_exp, index, reference)
     u = special.gammainccinv(1.0 / index, q_zero - np.asarray(reduced, dtype=float) / scale)
@@ -124,6 +132,8 @@ TABLE_LOWEST_PRESSURE = -1.0e6
 def _inverse_table(law: PressureViscosity, viscosity: float) -> interpolate.CubicHermiteSpline:
     """p(q) as a cubic Hermite spline through exact (q(p_k), p_k) with the exact slope
     dp/dq = μ(p_k)/μ₀, p_k uniform on [TABLE_LOWEST_PRESSURE, p_L] (error ~1e-10 p)."""
+    from scipy import interpolate  # imported when a table is built: 0.2 s of start-up
+
     p_nodes = np.linspace(TABLE_LOWEST_PRESSURE, law.limit_pressure, TABLE_NODES)
     q_nodes = law._exact_reduced(p_nodes, viscosity)
     return interpolate.CubicHermiteSpline(q_nodes, p_nodes, law._exact_ratio(p_nodes, viscosity))

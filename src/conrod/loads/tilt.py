@@ -15,13 +15,16 @@ import math
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from conrod.errors import CaseError
 from conrod.film.profile_table import read_columns
 from conrod.loads.cycle import LoadCycle
+
+if TYPE_CHECKING:  # pragma: no cover
+    from scipy.interpolate import CubicSpline
 
 
 @dataclass(frozen=True)
@@ -41,6 +44,8 @@ class PeriodicTable:
     @cached_property
     def closed(self) -> tuple[np.ndarray, np.ndarray, CubicSpline | None]:
         """(angles with the closing one [rad], rows with the first repeated, spline)."""
+        from scipy.interpolate import CubicSpline  # only a tilt table needs it (0.2 s import)
+
         angles = np.append(self.crank_angle, self.crank_angle[0] + self.cycle)
         rows = np.vstack([self.values, self.values[:1]])
         spline = CubicSpline(angles, rows, bc_type="periodic") if self.smooth else None
