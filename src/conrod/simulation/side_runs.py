@@ -74,8 +74,9 @@ class SideRuns:
     has not started)."""
 
     def __init__(self, process: Any, connection: Any, jobs: list[tuple[Any, Any]],
-                 claims: Any):
+                 claims: Any, idle: Callable[[], Any] | None = None):
         self.process, self.connection, self.claims = process, connection, claims
+        self.idle = idle
         self.jobs = dict(jobs)
         self.keys = [key for key, _ in jobs]
         self.received: dict[Any, Any] = {}
@@ -98,6 +99,7 @@ class SideRuns:
                 return MISSING
             if self._compute_one_here(key):
                 continue
+            self._use_idle_time()
             try:
                 got, outcome, value = self.connection.recv()
             except (EOFError, OSError):  # the process ended: what is left is computed here
@@ -122,6 +124,12 @@ class SideRuns:
                 return True
         return False
 
+    def _use_idle_time(self) -> None:
+        """Call ``idle`` (once) when the run would otherwise wait for the process now."""
+        if self.idle is not None and not self.connection.poll():
+            idle, self.idle = self.idle, None
+            idle()
+
     def stop(self) -> None:
         """End the process now (its jobs are taken, or the run failed)."""
         process, self.process = self.process, None
@@ -141,9 +149,10 @@ def _claim(claims: Any, index: int, who: int) -> bool:
         return True
 
 
-def start(jobs: list[tuple[Any, Callable[[], Any]]]) -> SideRuns | None:
+def start(jobs: list[tuple[Any, Callable[[], Any]]],
+          idle: Callable[[], Any] | None = None) -> SideRuns | None:
     """A forked process running ``jobs`` ((key, function) in order; None when it cannot
-    pay or there is nothing to run)."""
+    pay or there is nothing to run); ``idle`` as for :func:`beside`."""
     if not jobs or not wanted():
         return None
     context = multiprocessing.get_context("fork")
@@ -152,20 +161,23 @@ def start(jobs: list[tuple[Any, Callable[[], Any]]]) -> SideRuns | None:
     process = context.Process(target=_serve, args=(jobs, sending, claims), daemon=True)
     process.start()
     sending.close()
-    return SideRuns(process, receiving, jobs, claims)
+    return SideRuns(process, receiving, jobs, claims, idle)
 
 
 @contextlib.contextmanager
-def beside(simulation: Any, more: tuple[tuple[Any, Callable[[], Any]], ...] = ()
-           ) -> Iterator[Any]:
+def beside(simulation: Any, more: tuple[tuple[Any, Callable[[], Any]], ...] = (),
+           idle: Callable[[], Any] | None = None) -> Iterator[Any]:
     """Within the block, :func:`take` finds the rigid companion of an elastic
     ``simulation`` and the results of the ``more`` jobs ((key, function), e.g. the coarser
     orbits of :func:`conrod.simulation.grid_error.coarse_jobs`) computed by a second process
-    (started here unless one already runs for the block around this one)."""
+    (started here unless one already runs for the block around this one). ``idle`` is
+    called once, in the run's own process, the first time the run has nothing left to
+    compute but waits for the process (what comes after the block can be loaded then:
+    ``conrod run`` imports matplotlib for its figures); never when nothing is waited for."""
     if _active.get() is not None:
         yield _active.get()
         return
-    side = start(_jobs(simulation, more))
+    side = start(_jobs(simulation, more), idle)
     token = _active.set(side)
     try:
         yield side
