@@ -26,7 +26,12 @@ velocity columns of the step are those of the bore, d/dv = −τ Σ_j (cos θ_j,
 (:func:`journal_columns`): with the bore's rate over τ in the film's answer, the journal's
 own squeeze term is already in them (τ ∂/∂e + ∂/∂v = −τ Σ_j (cos θ_j, sin θ_j) D_j, D_j
 with its rate term 1/τ); without it, ∂/∂v of the film is added. One sparse LU of the film
-gives the whole Jacobian of the step, and each iterate costs one film solve.
+gives the whole Jacobian of the step, and each iterate costs one film solve. That solve
+starts from the pressure of the step's previous solve (the first from the last step's
+answer): the iterates of a step differ far less than the steps, and the warm-started
+multigrid takes 8.7 instead of 10.9 cycles a solve on the README job (its elastic orbit
+7.85 → 7.5 s; the answer the same within the solvers' tolerances: h_min to 1e-12, the journal
+velocity to 3e-9 of its largest value).
 """
 
 from __future__ import annotations
@@ -220,8 +225,11 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
     free = len(request.load) == 4  # the tilt solved as two more degrees of freedom
     lever = request.tilt.lever if free else 1.0
 
+    warm = [at_end]  # the film's warm start: the step's last solve (module docstring)
+
     def evaluate(own: np.ndarray, velocity: np.ndarray):
-        forces, h_min, payload = film.evaluator(_state(request, velocity), at_end)(own)
+        forces, h_min, payload = film.evaluator(_state(request, velocity), warm[0])(own)
+        warm[0] = dataclasses.replace(at_end, inner=payload.memory())
         if not free:
             return forces, payload.force(), h_min, payload
         moments = pressure_moments(payload.load_pressure, film.base.moment_weights)
