@@ -29,9 +29,10 @@ with its rate term 1/τ); without it, ∂/∂v of the film is added. One sparse 
 gives the whole Jacobian of the step, and each iterate costs one film solve. That solve
 starts from the pressure of the step's previous solve (the first from the last step's
 answer): the iterates of a step differ far less than the steps, and the warm-started
-multigrid takes 8.7 instead of 10.9 cycles a solve on the README job (its elastic orbit
-7.85 → 7.5 s; the answer the same within the solvers' tolerances: h_min to 1e-12, the journal
-velocity to 3e-9 of its largest value).
+multigrid takes 8.7 instead of 10.9 cycles a solve on the README job (the elastic run
+alone, without companion, grid error or figures, 7.85 → 7.5 s; the answer the same within
+the solvers' tolerances: h_min to 1e-12, the journal velocity to 3e-9 of its largest
+value).
 """
 
 from __future__ import annotations
