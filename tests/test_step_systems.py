@@ -52,6 +52,14 @@ def _memory(film, c: float):
     return dataclasses.replace(memory, inner=_ruptured_memory(film.base, state))
 
 
+def _request(c: float, memory):
+    """One BDF2 step of 1° from the journal at (0.6, 0.2) c, the step's memory ``memory``."""
+    dt = np.radians(1.0) / OMEGA
+    return StepRequest(np.array([0.6 * c, 0.2 * c]), np.array([0.05, -0.1]) * c * OMEGA,
+                       2.0 * dt / 3.0, dt, MASS, np.array([-1200.0, -300.0]), OMEGA, 0.0,
+                       VISCOSITY, 0.3, True, (memory, memory))
+
+
 FILMS = {
     "reynolds": lambda: _film(ReynoldsFilm(fed_bearing(), n_theta=N_THETA, n_z=4)),
     "mass_conserving": lambda: _film(MassConservingFilm(fed_bearing(), n_theta=N_THETA,
@@ -67,10 +75,7 @@ def test_step_system_blocks_match_central_differences(name):
     assert isinstance(film, HasStepSystem) and film.supports_step_system()
     c = film.geometry.radial_clearance
     memory = _memory(film, c)
-    dt = np.radians(1.0) / OMEGA
-    request = StepRequest(np.array([0.6 * c, 0.2 * c]), np.array([0.05, -0.1]) * c * OMEGA,
-                          2.0 * dt / 3.0, dt, MASS, np.array([-1200.0, -300.0]), OMEGA, 0.0,
-                          VISCOSITY, 0.3, True, (memory, memory))
+    request = _request(c, memory)
     scale = c * OMEGA
     done = solved_step(film, request, request.velocity_reference, scale)
     assert done is not None and done.newton.converged
@@ -86,10 +91,7 @@ def test_each_film_solve_of_a_step_starts_from_the_steps_last_solve(monkeypatch)
     film = FILMS["reynolds"]()
     c = film.geometry.radial_clearance
     memory = _memory(film, c)
-    dt = np.radians(1.0) / OMEGA
-    request = StepRequest(np.array([0.6 * c, 0.2 * c]), np.array([0.05, -0.1]) * c * OMEGA,
-                          2.0 * dt / 3.0, dt, MASS, np.array([-1200.0, -300.0]), OMEGA, 0.0,
-                          VISCOSITY, 0.3, True, (memory, memory))
+    request = _request(c, memory)
     starts = []
     evaluator = type(film).evaluator
 
