@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from conrod.numerics import newton
 from conrod.numerics.newton import (
     ChordJacobian,
     NewtonControls,
@@ -116,3 +117,50 @@ def test_a_carried_jacobian_whose_update_fails_is_rebuilt_not_cut_back():
     # Broyden's updates after the first): 6 solves, where halving the uphill update first
     # took 11
     assert (outcome.solves, outcome.updates) == (6, 4)
+
+
+class _InexactSpringBed(_SpringBed):
+    """The spring bed whose G comes from an inner solve converged to a relative accuracy:
+    off by max(accuracy, 1e-15) × (1 + u) at every node; records the accuracies asked and
+    where."""
+
+    inexact = True
+
+    def __init__(self, start: np.ndarray):
+        super().__init__(start)
+        self.asked: list[float] = []
+        self.evaluated: list[np.ndarray] = []
+
+    def evaluate(self, u: np.ndarray, v: np.ndarray, accuracy: float):
+        self.asked.append(accuracy)
+        self.evaluated.append(u.copy())
+        g, force, h_min, payload = super().evaluate(u, v)
+        return g + max(accuracy, 1e-15) * (1.0 + u), force, h_min, payload
+
+
+def test_an_inexact_system_is_asked_for_the_accuracy_its_residual_needs():
+    """Inexact Newton: the first evaluation at FIRST_ACCURACY, each later one at FORCING
+    times the smallest max|r| before it (capped at the first); the root as exact
+    evaluations find it within the tolerance, in at most two more evaluations."""
+    root = _roots()
+    start = root + 0.05
+    exact, _ = _solve(start, 1.0 / _jacobian(np.zeros(3)))
+    system = _InexactSpringBed(start)
+    chord = ChordJacobian()
+    chord.inverse = np.diag(1.0 / _jacobian(np.zeros(3)))
+    outcome = solve_step(system, np.zeros(0), np.zeros(0),
+                         NewtonControls(1.0, 1.0, 1e-13, 60, chord))
+    assert outcome.converged
+    np.testing.assert_allclose(outcome.own, root, rtol=0, atol=1e-12)
+    assert outcome.solves <= exact.solves + 2
+    assert system.asked[0] == newton.FIRST_ACCURACY
+    # replay: the residual of each evaluation (its error included) sets the next accuracy
+    smallest = np.inf
+    for k, accuracy in enumerate(system.asked):
+        if k:
+            assert accuracy == min(newton.FIRST_ACCURACY, newton.FORCING * smallest)
+        u = system.evaluated[k]
+        residual = np.max(np.abs(u + COMPLIANCE * (u + u**3) - INERTIA
+                                 + max(accuracy, 1e-15) * (1.0 + u)))
+        smallest = min(smallest, residual)
+    assert system.asked[-1] < 1e-10  # the accepted answer from an almost exact solve

@@ -95,9 +95,9 @@ def test_each_film_solve_of_a_step_starts_from_the_steps_last_solve(monkeypatch)
     starts = []
     evaluator = type(film).evaluator
 
-    def recording(self, state, at):
+    def recording(self, state, at, accuracy=None):
         starts.append(at.inner)
-        return evaluator(self, state, at)
+        return evaluator(self, state, at, accuracy)
 
     monkeypatch.setattr(type(film), "evaluator", recording)
     system = film.step_system(request)
@@ -111,3 +111,44 @@ def test_each_film_solve_of_a_step_starts_from_the_steps_last_solve(monkeypatch)
     scale = float(np.max(np.abs(payloads[0].pressure)))
     assert np.max(np.abs(payloads[2].pressure - payloads[0].pressure)) <= 1e-9 * scale
     assert not np.array_equal(payloads[2].pressure, payloads[1].pressure)
+
+
+def test_an_inexact_step_gives_the_exact_steps_answer_with_fewer_multigrid_cycles(monkeypatch):
+    """The Reynolds film's implicit step with its film solved only as accurately as the
+    Newton iteration needs (inexact Newton, :data:`conrod.numerics.newton.FORCING`): the
+    first solve is asked for :data:`~conrod.numerics.newton.FIRST_ACCURACY`, none looser;
+    the answer is the step solved with every film to its tolerance, within the coupling
+    tolerance (bore) and 1e-7 (velocity, relative), with fewer multigrid cycles."""
+    from conrod.numerics import newton
+
+    solve_pressure = ReynoldsFilm.solve_pressure
+
+    def solved(first_accuracy: float):
+        asked, sweeps = [], []
+
+        def recording(self, problem, state, memory, accuracy=None):
+            pressure, info = solve_pressure(self, problem, state, memory, accuracy)
+            asked.append(accuracy)
+            sweeps.append(info["sweeps"])
+            return pressure, info
+
+        monkeypatch.setattr(ReynoldsFilm, "solve_pressure", recording)
+        monkeypatch.setattr(newton, "FIRST_ACCURACY", first_accuracy)
+        film = FILMS["reynolds"]()
+        c = film.geometry.radial_clearance
+        request = _request(c, _memory(film, c))
+        done = solved_step(film, request, request.velocity_reference, c * OMEGA)
+        assert done is not None and done.newton.converged
+        return done, film, asked, sum(sweeps)
+
+    first = newton.FIRST_ACCURACY
+    inexact, film, asked, inexact_sweeps = solved(first)
+    exact, _, exact_asked, exact_sweeps = solved(0.0)  # every solve to the film's tolerance
+    assert asked[0] == first
+    assert all(a is not None and a <= first for a in asked)
+    assert max(a for a in exact_asked) == 0.0  # max(tolerance, 0): the tolerance
+    assert inexact_sweeps < exact_sweeps
+    tolerance = film.coupling.tolerance
+    assert np.max(np.abs(inexact.newton.own - exact.newton.own)) <= 0.1 * tolerance
+    v = exact.velocity
+    assert np.max(np.abs(inexact.velocity - v)) <= 1e-9 * np.max(np.abs(v))

@@ -62,8 +62,9 @@ STEP_SOLVES = 40
 """Most film steps of the mass-conserving film's step system before the step is left to the
 orbit's own iteration [-]."""
 
-FilmEvaluate = Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, float, Any]]
-"""(u [m], v [m/s]) → (nodal loads f [N], film force F [N], h_min [m], payload)."""
+FilmEvaluate = Callable[..., tuple[np.ndarray, np.ndarray, float, Any]]
+"""(u [m], v [m/s]) → (nodal loads f [N], film force F [N], h_min [m], payload); with
+``inexact``, (u, v, the film solve's relative accuracy [-])."""
 
 
 @dataclass
@@ -78,6 +79,8 @@ class BoreSystem:
     tolerance : float  max|G| accepted [m].  max_solves : int  Film solves at most [-].
     chord : ChordJacobian  The Jacobian carried from the last iteration of this kind.
     on_finish : callable or None  outcome → the film memory at the end of a step.
+    inexact : bool  ``film_evaluate`` takes the accuracy of its film solve
+        (:mod:`conrod.numerics.newton`: inexact Newton).
     """
 
     film_evaluate: FilmEvaluate
@@ -91,10 +94,12 @@ class BoreSystem:
     max_solves: int = 0
     chord: ChordJacobian | None = None
     on_finish: Callable[[NewtonOutcome], Any] | None = None
+    inexact: bool = False
 
-    def evaluate(self, own: np.ndarray, velocity: np.ndarray):
-        """(G [m], F [N], h_min [m], payload) at the displacement u and velocity v."""
-        forces, force, h_min, payload = self.film_evaluate(own, velocity)
+    def evaluate(self, own: np.ndarray, velocity: np.ndarray, *accuracy: float):
+        """(G [m], F [N], h_min [m], payload) at the displacement u and velocity v (with
+        ``inexact``, the film solved to the relative ``accuracy`` given)."""
+        forces, force, h_min, payload = self.film_evaluate(own, velocity, *accuracy)
         return own - self.operator @ forces - self.inertia, force, h_min, payload
 
     def respond(self, payload: Any) -> StepBlocks:
@@ -228,8 +233,9 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
 
     warm = [at_end]  # the film's warm start: the step's last solve (module docstring)
 
-    def evaluate(own: np.ndarray, velocity: np.ndarray):
-        forces, h_min, payload = film.evaluator(_state(request, velocity), warm[0])(own)
+    def evaluate(own: np.ndarray, velocity: np.ndarray, accuracy: float | None = None):
+        forces, h_min, payload = film.evaluator(_state(request, velocity), warm[0],
+                                                accuracy)(own)
         warm[0] = dataclasses.replace(at_end, inner=payload.memory())
         if not free:
             return forces, payload.force(), h_min, payload
@@ -268,7 +274,8 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
         evaluate, respond, share * film.housing.corrected_compliance,
         share * film.inertia_deformation(request.crank_angle), start,
         UpdateLimits(settings.increment_share, travel), film.clearance,
-        film.coupling.tolerance, 5 * settings.max_iterations, carried_chord(film, key), finish)
+        film.coupling.tolerance, 5 * settings.max_iterations, carried_chord(film, key), finish,
+        inexact=True)
 
 
 ANSWERS_HELD = 4096

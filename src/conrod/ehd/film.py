@@ -350,16 +350,19 @@ class ElasticFilm(FilmWrapper):
             updates=0,
             reference=memory.deformation, reference_dt=dt, deformation_rate=rate)
 
-    def evaluator(self, state: FilmState, memory: ElasticMemory):
+    def evaluator(self, state: FilmState, memory: ElasticMemory, accuracy: float | None = None):
         """u [m] → (nodal forces [N], h_min [m], payload) of the base film on the bore
         deformed by u, with the rate (u − reference)/dt in the squeeze term; the payload is
-        the film's pressure evaluation (exact path) or a :class:`SolvedPayload`."""
+        the film's pressure evaluation (exact path) or a :class:`SolvedPayload`. On the
+        exact path ``accuracy`` (None: the film's tolerance) is the relative accuracy its
+        pressure is solved to where looser than its tolerance (inexact Newton,
+        :mod:`conrod.numerics.newton`)."""
         inner = memory.inner
 
         def evaluate(u: np.ndarray):
             deformed = self.deformed(state, memory, u)
             if self.exact:  # pressure only; the characteristics once, for the answer
-                solved = self.base.evaluate_pressure(deformed, inner)
+                solved = self.base.evaluate_pressure(deformed, inner, accuracy)
                 if self.contact is not None:  # asperity pressure on the deformed film
                     solved = self.contact.attach(solved)
                 forces = bore_loads(self.nodal, solved.load_pressure)

@@ -347,8 +347,11 @@ class HasPressureEvaluation(Protocol):
     :class:`~conrod.film.reynolds.response.PressureEvaluation`), or, without a solve, from
     the converged pressure a memory holds (the answer of the step that solved it)."""
 
-    def evaluate_pressure(self, state: FilmState, memory: Any) -> Any:
-        """The pressure evaluation of ``state`` from ``memory`` (None: a cold start)."""
+    def evaluate_pressure(self, state: FilmState, memory: Any,
+                          accuracy: float | None = None) -> Any:
+        """The pressure evaluation of ``state`` from ``memory`` (None: a cold start), solved
+        to the relative ``accuracy`` where looser than the film's tolerance (None: the
+        tolerance; inexact Newton, :mod:`conrod.numerics.newton`)."""
 
     def answered_evaluation(self, state: FilmState, memory: Any) -> Any:
         """The evaluation of ``state`` whose converged pressure ``memory`` holds."""

@@ -45,10 +45,17 @@ class JournalStep:
         self.start, self.limits = system.start, system.limits
         self.mass = np.asarray(request.mass, dtype=float)
 
-    def evaluate(self, own: np.ndarray, velocity: np.ndarray):
-        """(G, F − m a (+ A) [N], h_min [m], payload) at y and the end velocity v."""
+    @property
+    def inexact(self) -> bool:
+        """True when the film's part solves its film to the accuracy asked
+        (:mod:`conrod.numerics.newton`)."""
+        return bool(getattr(self.system, "inexact", False))
+
+    def evaluate(self, own: np.ndarray, velocity: np.ndarray, *accuracy: float):
+        """(G, F − m a (+ A) [N], h_min [m], payload) at y and the end velocity v (and the
+        relative accuracy of the film's solve, where the film's part is inexact)."""
         request = self.request
-        g, force, h_min, payload = self.system.evaluate(own, velocity)
+        g, force, h_min, payload = self.system.evaluate(own, velocity, *accuracy)
         force = force - self.mass * (velocity - request.velocity_reference) / request.tau
         if self.extra_force is not None:
             extra = np.asarray(self.extra_force(*request.position(velocity)[:2]))

@@ -251,12 +251,14 @@ class ReynoldsFilm:
                             "a viscosity field or a pressure-viscosity law)")
         return field
 
-    def evaluate_pressure(self, state: FilmState, memory: ReynoldsMemory | None = None):
+    def evaluate_pressure(self, state: FilmState, memory: ReynoldsMemory | None = None,
+                          accuracy: float | None = None):
         """The pressure alone at ``state`` warm-started from ``memory``
-        (:class:`~conrod.film.reynolds.response.PressureEvaluation`)."""
+        (:class:`~conrod.film.reynolds.response.PressureEvaluation`), solved to the
+        relative ``accuracy`` where looser than :attr:`tolerance` (None: the tolerance)."""
         from conrod.film.reynolds.response import evaluate_pressure
 
-        return evaluate_pressure(self, state, memory)
+        return evaluate_pressure(self, state, memory, accuracy)
 
     def answered_evaluation(self, state: FilmState, memory: ReynoldsMemory):
         """The evaluation of ``state`` whose converged pressure ``memory`` holds (no solve)."""
@@ -415,9 +417,11 @@ class ReynoldsFilm:
             levels.append(levels[-1].coarsened())
         return levels[::-1]
 
-    def solve_pressure(self, problem: _Problem, state: FilmState,
-                        memory: ReynoldsMemory) -> tuple[np.ndarray, dict]:
-        """Converged pressure [Pa] on the fine grid and solver diagnostics."""
+    def solve_pressure(self, problem: _Problem, state: FilmState, memory: ReynoldsMemory,
+                       accuracy: float | None = None) -> tuple[np.ndarray, dict]:
+        """Converged pressure [Pa] on the fine grid and solver diagnostics; to the
+        relative ``accuracy`` where looser than :attr:`tolerance` (None: the tolerance)."""
+        tolerance = self.tolerance if accuracy is None else max(self.tolerance, accuracy)
         warm = self.warm_start and memory.pressure is not None
         if warm:
             last, previous, step = memory.pressure, memory.pressure, 0.0
@@ -426,7 +430,7 @@ class ReynoldsFilm:
                     scaled_state(state, self.geometry.radial_clearance))
             pressure = kernel.warm_field(last, previous, step, problem.cavitation,
                                          problem.fixed, problem.fixed_values)
-            total, change = sweep(self, problem, pressure, state, self.tolerance, True)
+            total, change = sweep(self, problem, pressure, state, tolerance, True)
         else:
             levels = self._levels(problem)
             pressure = np.zeros(levels[0].h.shape)
@@ -435,9 +439,8 @@ class ReynoldsFilm:
                 if k > 0:
                     pressure = np.maximum(kernel.prolongate(pressure), level.cavitation)
                 final = k == len(levels) - 1
-                tolerance = (self.tolerance if final
-                             else max(10.0 * self.tolerance, NESTED_TOLERANCE))
-                sweeps, change = sweep(self, level, pressure, state, tolerance)
+                sweeps, change = sweep(self, level, pressure, state, tolerance if final
+                                       else max(10.0 * tolerance, NESTED_TOLERANCE))
                 total += sweeps
         return pressure, {"sweeps": float(total), "relative_update": change,
                           "warm_start": float(warm), "multigrid": float(self.method == "multigrid")}

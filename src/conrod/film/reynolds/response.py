@@ -371,9 +371,12 @@ def answered_evaluation(film: Any, state, memory: ReynoldsMemory) -> PressureEva
                                "multigrid": float(film.method == "multigrid")})
 
 
-def evaluate_pressure(film: Any, state, memory: ReynoldsMemory | None) -> PressureEvaluation:
+def evaluate_pressure(film: Any, state, memory: ReynoldsMemory | None,
+                      accuracy: float | None = None) -> PressureEvaluation:
     """Pressure of the isoviscous Reynolds ``film`` at ``state`` warm-started from
-    ``memory`` (None: a cold start)."""
+    ``memory`` (None: a cold start), to the relative ``accuracy`` where looser than the
+    film's tolerance (None: the tolerance)."""
     problem = film.discrete_problem(state)
-    pressure, info = film.solve_pressure(problem, state, memory or film.initial_memory())
+    pressure, info = film.solve_pressure(problem, state, memory or film.initial_memory(),
+                                         accuracy)
     return PressureEvaluation(film, state, problem, pressure, info)
