@@ -108,3 +108,97 @@ def test_a_stuck_process_is_ended_and_its_figures_drawn_here(two_processes, tmp_
 
     paths = draw_figures(_specs(build_of), tmp_path)
     assert all(p.read_text() == f"figure {i} drawn by {parent}" for i, p in enumerate(paths))
+
+
+def _late(results):
+    """``results`` as the grid-error estimate leaves them: the summary's late fields set
+    (an estimate, one more warning), every other field the same object."""
+    import dataclasses
+
+    from conrod.results.grid_error import GridError, GridEstimate
+
+    estimate = GridError(((72, 16), (52, 12), (36, 8)),
+                         GridEstimate("h_min", 10.0, (3.0e-6, 2.9e-6, 2.8e-6), 2.0, 1e-7,
+                                      (10.0, 10.0, 12.0)),
+                         GridEstimate("p_max", 20.0, (9.0e7, 8.8e7, 8.5e7), 1.5, 2e6,
+                                      (20.0, 20.0, 20.0)), "a note")
+    summary = dataclasses.replace(results.summary, grid_error=estimate,
+                                  warnings=(*results.summary.warnings, "a late warning"))
+    if hasattr(results, "elastic"):
+        return dataclasses.replace(results, elastic=dataclasses.replace(results.elastic,
+                                                                        summary=summary))
+    return dataclasses.replace(results, summary=summary)
+
+
+def assert_drawn_ahead_as_written(results, tmp_path):
+    """Every figure of ``results`` drawn ahead by a :class:`FigureDraft` is the file the
+    writer draws for the results with their late fields set, byte for byte, and the writer
+    takes it as drawn; a change elsewhere draws them again."""
+    import dataclasses
+
+    from conrod.output.registry import FigureDraft, figures, write_results
+
+    draft = FigureDraft()
+    draft.provisional(results)
+    draft(lambda: True)  # nothing arrives: every figure drawn ahead
+    final = _late(results)
+    files = [spec.file for spec in figures(final)]
+    assert sorted(draft.drawn_for(final)) == sorted(files) and files
+    write_results(final, tmp_path / "fresh")  # drawn by the writer
+    for name in files:
+        assert draft.drawn[name] == (tmp_path / "fresh" / name).read_bytes(), name
+    written = write_results(final, tmp_path / "ahead", draft=draft)
+    assert {p.name for p in written} >= set(files)
+    for name in files:
+        assert (tmp_path / "ahead" / name).read_bytes() == draft.drawn[name]
+    summary = getattr(results, "elastic", results).summary
+    moved = dataclasses.replace(summary, p_max=summary.p_max * 1.01)  # a drawn field
+    other = (dataclasses.replace(results, elastic=dataclasses.replace(results.elastic,
+                                                                      summary=moved))
+             if hasattr(results, "elastic") else dataclasses.replace(results, summary=moved))
+    assert draft.drawn_for(other) == {}
+
+
+def test_figures_drawn_ahead_are_those_the_writer_draws(tmp_path):
+    """A run's figures drawn while it waits (``conrod run``: for its last coarse orbit)
+    are the writer's own for the results the grid-error estimate leaves."""
+    from conrod import Simulation
+    from conrod.cases.case import Case
+
+    case = Case.from_toml(EXAMPLES / "passenger_car_diesel_2000rpm.toml")
+    assert_drawn_ahead_as_written(Simulation(case).run(), tmp_path)
+
+
+def test_a_draft_draws_only_while_the_run_waits_and_leaves_a_failing_figure_to_the_writer(
+        tmp_path):
+    from conrod.output.registry import FigureDraft
+
+    class InMemory:
+        """Saves its text (what ``savefig`` does with a figure) into a buffer."""
+
+        def __init__(self, text: str):
+            self.text = text
+
+        def savefig(self, buffer, format, dpi, bbox_inches):  # noqa: A002 (matplotlib's)
+            buffer.write(self.text.encode())
+
+    draft = FigureDraft()
+    draft(lambda: True)  # no results yet: nothing to draw
+    assert draft.drawn == {}
+    specs = _specs(lambda i: lambda: InMemory(f"figure {i}"))
+    draft.results, draft._pending = object(), list(specs)
+    answers = iter([True, True, False])
+    draft(lambda: next(answers))  # two figures, then a result arrived
+    assert draft.drawn == {"f0.png": b"figure 0", "f1.png": b"figure 1"}
+
+    def build_of(i):
+        def build():
+            if i == 3:
+                raise RuntimeError("figure 3 cannot be drawn")
+            return InMemory(f"figure {i}")
+        return build
+
+    draft = FigureDraft()
+    draft.results, draft._pending = object(), list(_specs(build_of))
+    draft(lambda: True)
+    assert sorted(draft.drawn) == ["f0.png", "f1.png", "f2.png"]  # the rest: the writer's

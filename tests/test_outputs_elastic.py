@@ -169,3 +169,12 @@ def test_report_of_the_elastic_run_has_the_rigid_vs_elastic_table(elastic, folde
                  f"{e.film_h_min * 1e6:.4g}", "Bore displacement at the elastic h_min"):
         assert text in section, text
     assert "cm^3/s" not in html
+
+
+def test_elastic_figures_drawn_ahead_are_those_the_writer_draws(elastic, tmp_path):
+    """The elastic run's figures (rigid companion, deformed bore and film, rod stresses)
+    drawn while ``conrod run`` waits for its last coarse orbit are the writer's own for the
+    results the grid-error estimate leaves, byte for byte."""
+    from test_figure_process import assert_drawn_ahead_as_written
+
+    assert_drawn_ahead_as_written(elastic, tmp_path)

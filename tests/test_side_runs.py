@@ -234,24 +234,31 @@ def test_the_run_computes_the_jobs_the_process_has_not_started(fresh):
     side.stop()
 
 
-def test_idle_is_called_once_while_the_run_waits_and_never_without_a_wait(fresh):
-    """``idle`` runs in the run's own process the first time it has nothing to compute
-    but must wait (there: ``conrod run`` imports matplotlib for the figures that follow),
-    once, after the jobs it can steal; a result already sent is taken without it."""
+def test_idle_works_while_the_run_waits_and_never_without_a_wait(fresh):
+    """``idle(waiting)`` runs in the run's own process when it has nothing to compute but
+    must wait (there: ``conrod run`` draws its figures), after the jobs it can steal;
+    ``waiting()`` holds until a result is in the pipe; a result already sent is taken
+    without it."""
     calls = []
+
+    def idle(waiting):
+        calls.append(side.claims[:])
+        while waiting():  # works until the awaited result arrives
+            time.sleep(0.01)
+
     side = side_runs.start([("slow", lambda: time.sleep(1.0) or "slow done"),
                             ("mid", lambda: 1), ("slower", lambda: time.sleep(0.5) or 2)],
-                           idle=lambda: calls.append(side.claims[:]))
+                           idle=idle)
     while side.claims[0] == side_runs.OPEN:
         time.sleep(0.01)
     assert side.take("slow") == "slow done"
     assert side.take("slower") == 2
-    # once, with "mid" computed here first (and "slower" taken there or here)
-    assert len(calls) == 1 and calls[0][1] == side_runs.HERE
+    # first with "mid" computed here ("slower" taken there or here)
+    assert calls and calls[0][1] == side_runs.HERE
     side.stop()
 
     calls.clear()
-    side = side_runs.start([("quick", lambda: "quick done")], idle=lambda: calls.append(1))
+    side = side_runs.start([("quick", lambda: "quick done")], idle=idle)
     while not side.connection.poll():  # the result is in the pipe before it is asked for
         time.sleep(0.01)
     assert side.take("quick") == "quick done" and calls == []

@@ -179,13 +179,14 @@ def register(app: typer.Typer) -> None:
                                 integrator=integrator and integrator.value, max_cycles=max_cycles,
                                 step_deg=step_deg, n_theta=n_theta, n_z=n_z,
                                 rigid_companion=rigid, fields=fields)
+        from conrod.output.registry import FigureDraft
         from conrod.simulation.grid_error import coarse_jobs
         from conrod.simulation.side_runs import beside
 
-        with beside(simulation, coarse_jobs(simulation) if grid_error else (),
-                    idle=_load_matplotlib if figures else None):
-            results = _computed(simulation, step_check, grid_error)
-        write_results(results, out, figures=figures)
+        draft = FigureDraft() if figures else None  # drawn while the run waits
+        with beside(simulation, coarse_jobs(simulation) if grid_error else (), idle=draft):
+            results = _computed(simulation, step_check, grid_error, draft)
+        write_results(results, out, figures=figures, draft=draft)
         note = _renew_report(out) if had_report else None
         with printing_after_results(out):
             print_headline(results, out)
@@ -194,15 +195,10 @@ def register(app: typer.Typer) -> None:
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
 
 
-def _load_matplotlib() -> None:
-    """Import matplotlib (0.26 s on the 2-core machine) while the run waits for its second
-    process: the figures come next, drawn here and in a process forked from here, which
-    then need not import it (README job: its write phase 1.70–1.76 → 1.60 s)."""
-    import conrod.plotting.save  # noqa: F401  (matplotlib with its Agg backend)
-
-
-def _computed(simulation: Any, step_check: bool, grid_error: bool) -> Any:
-    """The run's results with the step check and the grid-error estimate asked for."""
+def _computed(simulation: Any, step_check: bool, grid_error: bool, draft: Any = None) -> Any:
+    """The run's results with the step check and the grid-error estimate asked for;
+    ``draft`` (a :class:`~conrod.output.registry.FigureDraft`) is given the results before
+    the estimate, whose figures it draws while the run waits for the coarser orbits."""
     progress = _Progress(simulation.solver.max_cycles, simulation.solver.periodicity_tolerance)
     try:
         results = simulation.run(progress=progress)
@@ -215,6 +211,8 @@ def _computed(simulation: Any, step_check: bool, grid_error: bool) -> Any:
     if grid_error:
         from conrod.simulation.grid_error import with_grid_error
 
+        if draft is not None:
+            draft.provisional(results)
         progress = _Progress(simulation.solver.max_cycles,
                              simulation.solver.periodicity_tolerance)
         try:

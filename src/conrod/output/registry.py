@@ -11,7 +11,8 @@ Every result type says which tables and figures it has:
 :func:`write_results` is the one writer used by every CLI command, the sweep and the report:
 it writes the tables and figures into a staging folder swapped in whole (a failing figure
 writes nothing), the figures in two processes where a core is idle
-(:func:`draw_figures`), and writes last ``manifest.json``::
+(:func:`draw_figures`) — those a :class:`FigureDraft` drew ahead from the same inputs taken
+as drawn — and writes last ``manifest.json``::
 
     {"conrod_version": str, "kind": str,
      "tables": [{"file", "title", "caption"}], "figures": [{"file", "title", "caption"}],
@@ -25,10 +26,12 @@ A new result type appears everywhere at once by registering its tables and figur
 
 from __future__ import annotations
 
+import dataclasses
+import io
 import multiprocessing
 import os
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import singledispatch
 from pathlib import Path
@@ -103,13 +106,16 @@ def result_kind(results: Any) -> str:
 
 
 def write_results(
-    results: Any, out_dir: str | os.PathLike[str], *, figures: bool = True
+    results: Any, out_dir: str | os.PathLike[str], *, figures: bool = True,
+    draft: FigureDraft | None = None,
 ) -> list[Path]:
     """Write the tables (and figures) of ``results`` and ``manifest.json`` as one result set:
     into a staging folder that replaces ``out_dir`` whole
     (:func:`conrod.io.result_folder.staged_result_folder`, which adds each file's size and
-    SHA-256 to the manifest); return the paths written (manifest last). Arguments that
-    are not a registered result, a usable folder or a bool raise :class:`CaseError`."""
+    SHA-256 to the manifest); return the paths written (manifest last). The figures
+    ``draft`` drew ahead are written as drawn where ``results`` draws them from the same
+    inputs (:meth:`FigureDraft.drawn_for`). Arguments that are not a registered result, a
+    usable folder or a bool raise :class:`CaseError`."""
     if tables.dispatch(type(results)) is tables.dispatch(object):
         name = type(results).__name__
         raise UnregisteredResultError(f"write_results: results = {name}: no tables registered "
@@ -121,9 +127,10 @@ def write_results(
     table_specs = tables(results)
     figure_specs = _figure_specs(results) if figures else ()
     contents = [(spec, spec.build()) for spec in table_specs]
+    drawn = draft.drawn_for(results) if draft is not None and figures else {}
     with staged_result_folder(out_dir) as stage:  # the whole set swapped in at once, or
         paths = [_write_table(stage / spec.file, content) for spec, content in contents]
-        paths += draw_figures(figure_specs, stage)  # nothing where one fails
+        paths += draw_figures(figure_specs, stage, drawn)  # nothing where one fails
         paths.append(write_json(stage / MANIFEST, manifest(results, table_specs, figure_specs)))
     return [Path(out_dir) / path.relative_to(stage) for path in paths]
 
@@ -151,9 +158,7 @@ def _write_table(path: Path, content: Any) -> Path:
     if isinstance(content, str):
         return write_text(path, content)
     if isinstance(content, bytes):  # a copy of an input file, byte for byte
-        with atomic_path(path) as tmp:
-            tmp.write_bytes(content)
-        return path
+        return _write_bytes(path, content)
     if path.suffix == ".csv":
         return write_csv(path, content)
     if path.suffix == ".json":
@@ -163,6 +168,12 @@ def _write_table(path: Path, content: Any) -> Path:
     return write_text(path, content)
 
 
+def _write_bytes(path: Path, content: bytes) -> Path:
+    with atomic_path(path) as tmp:
+        tmp.write_bytes(content)
+    return path
+
+
 def _save(figure: Any, path: Path) -> Path:
     """Save a matplotlib Figure (duck-typed: this module never imports matplotlib)."""
     with atomic_path(path) as tmp:
@@ -170,18 +181,41 @@ def _save(figure: Any, path: Path) -> Path:
     return path
 
 
-def draw_figures(specs: tuple[FigureSpec, ...], folder: Path) -> list[Path]:
-    """Build and save the figures of ``specs`` into ``folder`` (paths in their order). With
-    at least :data:`TWO_PROCESSES_FROM` figures and an idle core
+def _rendered(spec: FigureSpec) -> bytes:
+    """The file ``spec`` saves, in memory (the bytes :func:`_save` writes)."""
+    buffer = io.BytesIO()
+    spec.build().savefig(buffer, format=Path(spec.file).suffix[1:], dpi=FIGURE_DPI,
+                         bbox_inches="tight")
+    return buffer.getvalue()
+
+
+def draw_figures(specs: tuple[FigureSpec, ...], folder: Path,
+                 drawn: Mapping[str, bytes] | None = None) -> list[Path]:
+    """Build and save the figures of ``specs`` into ``folder`` (paths in their order); a
+    file ``drawn`` holds (drawn ahead from the same inputs) is written as it is. With at
+    least :data:`TWO_PROCESSES_FROM` figures left and an idle core
     (:func:`conrod.io.cores.spare_core`) a forked process draws every second one meanwhile:
     the same code on the same data, the same bytes (README main job, 2-core machine: 14
     figures in 2.0 s against 3.2 s in one process). What that process does not deliver
     (it failed or ended) is drawn here, where a failure raises as it would have.
     ``CONROD_FIGURE_PROCESS=0`` turns it off."""
+    drawn = drawn or {}
+    for spec in specs:
+        if spec.file in drawn:
+            _write_bytes(folder / spec.file, drawn[spec.file])
+    paths = [folder / spec.file for spec in specs]
+    specs = tuple(spec for spec in specs if spec.file not in drawn)
+    _draw_all(specs, folder)
+    return paths
+
+
+def _draw_all(specs: tuple[FigureSpec, ...], folder: Path) -> None:
+    """The figures of ``specs``, in two processes where it pays (:func:`draw_figures`)."""
     here = [(spec, folder / spec.file) for spec in specs]
     if len(specs) < TWO_PROCESSES_FROM or os.environ.get(FIGURE_SWITCH, "1") == "0" \
             or not spare_core():
-        return _draw(here)
+        _draw(here)
+        return
     context = multiprocessing.get_context("fork")
     receiving, sending = context.Pipe(duplex=False)
     process = context.Process(target=_draw_there, args=(here[1::2], sending), daemon=True)
@@ -201,7 +235,6 @@ def draw_figures(specs: tuple[FigureSpec, ...], folder: Path) -> list[Path]:
     receiving.close()
     if delivered is not True:
         _draw(here[1::2])
-    return [path for _, path in here]
 
 
 TWO_PROCESSES_FROM = 3
@@ -225,3 +258,77 @@ def _draw_there(pairs: list[tuple[FigureSpec, Path]], connection: Any) -> None:
         connection.send(True)
     except BaseException:  # drawn again by the writing process, which raises
         connection.send(False)
+
+
+class FigureDraft:
+    """Figures drawn ahead of :func:`write_results` while the run waits with nothing to
+    compute (``conrod run``: for the last coarse orbit of its grid-error estimate, computed by
+    its second process): call it with a ``waiting`` predicate
+    (:func:`conrod.simulation.side_runs.beside`'s ``idle``); it imports matplotlib, then,
+    once :meth:`provisional` gave it results, draws their figures in order into memory
+    while ``waiting()`` holds. :func:`write_results` writes those of them that the final
+    results draw from the same inputs (:meth:`drawn_for`) and draws the others.
+
+    The final results of a run are its provisional ones with the summary's
+    :data:`LATE_FIELDS` set (the grid-error estimate, its warning), which no figure draws:
+    every other field is the same object, so a figure drawn ahead is the figure of the
+    final results, byte for byte (``tests/test_output_registry.py``).
+    """
+
+    def __init__(self) -> None:
+        self.results: Any = None
+        self.drawn: dict[str, bytes] = {}
+        self._pending: list[FigureSpec] = []
+
+    def provisional(self, results: Any) -> None:
+        """The results whose figures to draw when the run waits next (drawn ones kept only
+        for the same results)."""
+        if results is not self.results:
+            self.results, self.drawn = results, {}
+            self._pending = list(_figure_specs(results))
+
+    def __call__(self, waiting: Callable[[], bool]) -> None:
+        """Import matplotlib, then draw the next figures while ``waiting()`` holds."""
+        import conrod.plotting.save  # noqa: F401  (matplotlib with its Agg backend)
+
+        while self._pending and waiting():
+            spec = self._pending.pop(0)
+            try:
+                self.drawn[spec.file] = _rendered(spec)
+            except Exception:  # drawn again by the writer, which raises as it would have
+                self._pending.clear()
+
+    def drawn_for(self, results: Any) -> dict[str, bytes]:
+        """The figures drawn ahead that ``results`` draws alike (none when it draws from
+        other inputs than the provisional results)."""
+        if self.results is None or not drawn_alike(self.results, results):
+            return {}
+        return dict(self.drawn)
+
+
+LATE_FIELDS = ("grid_error", "warnings")
+"""Fields of a run's summary that no figure draws (:class:`FigureDraft`): the grid-error
+estimate and the warnings, which the estimate may add to after the figures are drawn [-]."""
+
+
+def drawn_alike(before: Any, after: Any) -> bool:
+    """True when every figure draws the same from ``after`` as from ``before``: the same
+    object in every field of the results and of the results and summaries within them,
+    except a summary's :data:`LATE_FIELDS` [-]."""
+    if before is after:
+        return True
+    if type(before) is not type(after) or not dataclasses.is_dataclass(before):
+        return False
+    late = LATE_FIELDS if _is_summary(before) else ()
+    for field in dataclasses.fields(before):
+        if field.name in late:
+            continue
+        old, new = getattr(before, field.name), getattr(after, field.name)
+        if old is not new and not drawn_alike(old, new):
+            return False
+    return True
+
+
+def _is_summary(results: Any) -> bool:
+    """A run summary (it carries the grid-error estimate)."""
+    return any(field.name == "grid_error" for field in dataclasses.fields(results))

@@ -74,7 +74,7 @@ class SideRuns:
     has not started)."""
 
     def __init__(self, process: Any, connection: Any, jobs: list[tuple[Any, Any]],
-                 claims: Any, idle: Callable[[], Any] | None = None):
+                 claims: Any, idle: Callable[[Callable[[], bool]], Any] | None = None):
         self.process, self.connection, self.claims = process, connection, claims
         self.idle = idle
         self.jobs = dict(jobs)
@@ -125,10 +125,13 @@ class SideRuns:
         return False
 
     def _use_idle_time(self) -> None:
-        """Call ``idle`` (once) when the run would otherwise wait for the process now."""
+        """Call ``idle(waiting)`` when the run would otherwise wait for the process now;
+        ``waiting()`` is True until a result is in the pipe."""
         if self.idle is not None and not self.connection.poll():
-            idle, self.idle = self.idle, None
-            idle()
+            self.idle(self._waiting)
+
+    def _waiting(self) -> bool:
+        return not self.connection.poll()
 
     def stop(self) -> None:
         """End the process now (its jobs are taken, or the run failed)."""
@@ -150,7 +153,7 @@ def _claim(claims: Any, index: int, who: int) -> bool:
 
 
 def start(jobs: list[tuple[Any, Callable[[], Any]]],
-          idle: Callable[[], Any] | None = None) -> SideRuns | None:
+          idle: Callable[[Callable[[], bool]], Any] | None = None) -> SideRuns | None:
     """A forked process running ``jobs`` ((key, function) in order; None when it cannot
     pay or there is nothing to run); ``idle`` as for :func:`beside`."""
     if not jobs or not wanted():
@@ -166,14 +169,15 @@ def start(jobs: list[tuple[Any, Callable[[], Any]]],
 
 @contextlib.contextmanager
 def beside(simulation: Any, more: tuple[tuple[Any, Callable[[], Any]], ...] = (),
-           idle: Callable[[], Any] | None = None) -> Iterator[Any]:
+           idle: Callable[[Callable[[], bool]], Any] | None = None) -> Iterator[Any]:
     """Within the block, :func:`take` finds the rigid companion of an elastic
     ``simulation`` and the results of the ``more`` jobs ((key, function), e.g. the coarser
     orbits of :func:`conrod.simulation.grid_error.coarse_jobs`) computed by a second process
-    (started here unless one already runs for the block around this one). ``idle`` is
-    called once, in the run's own process, the first time the run has nothing left to
-    compute but waits for the process (what comes after the block can be loaded then:
-    ``conrod run`` imports matplotlib for its figures); never when nothing is waited for."""
+    (started here unless one already runs for the block around this one). ``idle(waiting)``
+    is called in the run's own process each time the run has nothing left to compute but
+    waits for the process, never when nothing is waited for; it may work while
+    ``waiting()`` holds, until a result arrives (``conrod run`` draws its figures then:
+    :class:`conrod.output.registry.FigureDraft`)."""
     if _active.get() is not None:
         yield _active.get()
         return
