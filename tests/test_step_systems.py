@@ -95,9 +95,9 @@ def test_each_film_solve_of_a_step_starts_from_the_steps_last_solve(monkeypatch)
     starts = []
     evaluator = type(film).evaluator
 
-    def recording(self, state, at, accuracy=None):
-        starts.append(at.inner)
-        return evaluator(self, state, at, accuracy)
+    def recording(self, state, at, accuracy=None, start=None):
+        starts.append(at.inner if start is None else start)
+        return evaluator(self, state, at, accuracy, start)
 
     monkeypatch.setattr(type(film), "evaluator", recording)
     system = film.step_system(request)

@@ -231,12 +231,12 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
     free = len(request.load) == 4  # the tilt solved as two more degrees of freedom
     lever = request.tilt.lever if free else 1.0
 
-    warm = [at_end]  # the film's warm start: the step's last solve (module docstring)
+    warm = [at_end.inner]  # the film's warm start: the step's last solve (module docstring)
 
     def evaluate(own: np.ndarray, velocity: np.ndarray, accuracy: float | None = None):
-        forces, h_min, payload = film.evaluator(_state(request, velocity), warm[0],
-                                                accuracy)(own)
-        warm[0] = dataclasses.replace(at_end, inner=payload.memory())
+        forces, h_min, payload = film.evaluator(_state(request, velocity), at_end, accuracy,
+                                                warm[0])(own)
+        warm[0] = payload.memory()
         if not free:
             return forces, payload.force(), h_min, payload
         moments = pressure_moments(payload.load_pressure, film.base.moment_weights)

@@ -350,14 +350,15 @@ class ElasticFilm(FilmWrapper):
             updates=0,
             reference=memory.deformation, reference_dt=dt, deformation_rate=rate)
 
-    def evaluator(self, state: FilmState, memory: ElasticMemory, accuracy: float | None = None):
+    def evaluator(self, state: FilmState, memory: ElasticMemory, accuracy: float | None = None,
+                  start: Any = None):
         """u [m] → (nodal forces [N], h_min [m], payload) of the base film on the bore
-        deformed by u, with the rate (u − reference)/dt in the squeeze term; the payload is
-        the film's pressure evaluation (exact path) or a :class:`SolvedPayload`. On the
-        exact path ``accuracy`` (None: the film's tolerance) is the relative accuracy its
-        pressure is solved to where looser than its tolerance (inexact Newton,
-        :mod:`conrod.numerics.newton`)."""
-        inner = memory.inner
+        deformed by u, with the rate (u − reference)/dt in the squeeze term, warm-started
+        from ``start`` (None: ``memory.inner``); the payload is the film's pressure
+        evaluation (exact path) or a :class:`SolvedPayload`. On the exact path ``accuracy``
+        (None: the film's tolerance) is the relative accuracy its pressure is solved to
+        where looser than its tolerance (inexact Newton, :mod:`conrod.numerics.newton`)."""
+        inner = memory.inner if start is None else start
 
         def evaluate(u: np.ndarray):
             deformed = self.deformed(state, memory, u)

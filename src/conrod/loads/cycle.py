@@ -10,6 +10,7 @@ the rod frame this is minus the force that the rod exerts on the crankpin.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -53,21 +54,36 @@ class LoadCycle:
             if values.shape != angle.shape or not np.all(np.isfinite(values)):
                 raise CaseError(f"load cycle: {name} must be finite and match crank_angle")
 
-    def _periodic(self, values: np.ndarray, crank_angle: np.ndarray | float) -> np.ndarray:
-        return np.interp(
-            np.asarray(crank_angle, dtype=float), self.crank_angle, values, period=self.cycle
-)
+    @functools.cached_property
+    def _wrapped(self) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+        """(φ, column name → values) of the samples within one period, sorted and extended
+        by the last sample before and the first after: what ``np.interp(..., period=)``
+        builds on every call (a sort of the whole table), built once."""
+        period = abs(self.cycle)
+        phi = np.asarray(self.crank_angle, dtype=np.float64) % period
+        order = np.argsort(phi)
+        phi = phi[order]
+        columns = {}
+        for name in ("load_x", "load_y", "journal_speed", "shell_speed"):
+            values = np.asarray(getattr(self, name), dtype=float)[order]
+            columns[name] = np.concatenate((values[-1:], values, values[0:1]))
+        return np.concatenate((phi[-1:] - period, phi, phi[0:1] + period)), columns
+
+    def _periodic(self, name: str, crank_angle: np.ndarray | float) -> np.ndarray:
+        """Column ``name`` at ``crank_angle`` [rad]: ``np.interp`` with the period, bit for
+        bit."""
+        phi, columns = self._wrapped
+        return np.interp(np.asarray(crank_angle, dtype=np.float64) % abs(self.cycle), phi,
+                         columns[name])
 
     def load(self, crank_angle: np.ndarray | float) -> tuple[np.ndarray, np.ndarray]:
         """Load (W_x, W_y) [N] at any crank angle [rad], periodic linear interpolation."""
-        return self._periodic(self.load_x, crank_angle), self._periodic(self.load_y, crank_angle)
+        return self._periodic("load_x", crank_angle), self._periodic("load_y", crank_angle)
 
     def speeds(self, crank_angle: np.ndarray | float) -> tuple[np.ndarray, np.ndarray]:
         """Surface speeds (ω_j, ω_b) [rad/s] at any crank angle [rad]."""
-        return (
-            self._periodic(self.journal_speed, crank_angle),
-            self._periodic(self.shell_speed, crank_angle),
-)
+        return self._periodic("journal_speed", crank_angle), self._periodic("shell_speed",
+                                                                            crank_angle)
 
     @property
     def period_time(self) -> float:

@@ -231,6 +231,8 @@ class _Iteration:
         self.w_scale = length(load) + 1.0
         self.solves = 0
         self.inexact = bool(getattr(system, "inexact", False))
+        travel = system.limits.travel  # in the scaled unknowns, once
+        self.travel = None if travel is None else travel * controls.velocity_scale / controls.scale
         self.smallest = math.inf  # the smallest max|r| so far (the inexact accuracy)
 
     def residual(self, z: np.ndarray):
@@ -339,9 +341,8 @@ class _Iteration:
         """Scale ``step`` in place by the system's limits (module docstring)."""
         limits, c, n = self.system.limits, self.controls.scale, self.n
         step *= update_limit(_gap(step[:n], limits.gap), step[n:], h_min / c, limits.share)
-        if limits.travel is not None:
-            travel = limits.travel * self.controls.velocity_scale / c
-            step *= travel_limit(_gap(step[:n], limits.gap), step[n:], travel, h_min / c,
+        if self.travel is not None:
+            step *= travel_limit(_gap(step[:n], limits.gap), step[n:], self.travel, h_min / c,
                                  limits.share)
 
 

@@ -46,7 +46,7 @@ def field_conductances(conduction: np.ndarray, grid) -> tuple[np.ndarray, np.nda
 
 def mirror_symmetric(field: np.ndarray | None) -> bool:
     """True when ``field`` is None or equal to its mirror image about the mid-plane [-]."""
-    return field is None or bool(np.array_equal(field, field[:, ::-1]))
+    return field is None or bool((field == field[:, ::-1]).all())
 
 
 def checked_field(field, shape: tuple[int, int]) -> np.ndarray | None:
