@@ -30,11 +30,15 @@ class RatedFilmState(FilmState):
     deformation_rate: np.ndarray | None = None
 
 
+_STATE_FIELDS = tuple(field.name for field in dataclasses.fields(FilmState))
+"""The fields a :class:`RatedFilmState` takes over from its state [-]."""
+
+
 def rated(state: FilmState, deformation: np.ndarray, rate: np.ndarray | None) -> FilmState:
     """``state`` with the deformation field and (when given) its rate [m], [m/s]."""
     if rate is None:
         return dataclasses.replace(state, deformation=deformation)
-    fields = {f.name: getattr(state, f.name) for f in dataclasses.fields(FilmState)}
+    fields = {name: getattr(state, name) for name in _STATE_FIELDS}
     fields["deformation"] = deformation
     return RatedFilmState(**fields, deformation_rate=rate)
 

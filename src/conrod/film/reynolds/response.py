@@ -87,8 +87,11 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     shape = (n_theta, n_nodes)
     rate = 0.0 if rate_step is None else 1.0 / rate_step
     nodes = np.nonzero(active)  # row by row, the numbering of active_matrix's
-    index = -np.ones(shape, dtype=np.int64)
-    index[nodes] = np.arange(nodes[0].size)
+    half = (_mirror_half(active, nodes, pressure, problem)
+            if MIRROR_HALF and tilt is None and nodal.ndim == 2 else None)
+    solved_nodes = nodes if half is None else (nodes[0][half[0]], nodes[1][half[0]])
+    index = -np.ones(shape, dtype=np.int64)  # each solved node's place among them
+    index[solved_nodes] = np.arange(solved_nodes[0].size)
     if conduction is None:
         right = (_node_directions if nodal.ndim == 1 else _row_directions)(
             pressure, problem.h, rate, grid, omega_sum, state.viscosity, index)
@@ -99,10 +102,8 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
     n_bore = right.shape[0]
     right = np.concatenate([right] + [-_imbalance(pressure, problem.h, dh, dh_rate, grid,
                                                    omega_sum, state.viscosity,
-                                                   conduction)[nodes][None]
+                                                   conduction)[solved_nodes][None]
                                       for dh, dh_rate in directions])
-    half = (_mirror_half(active, nodes, pressure, problem)
-            if MIRROR_HALF and tilt is None and nodal.ndim == 2 else None)
     w_x, w_y = film.force_weights
     if half is None:
         solved = _solve((a_east, a_north, active), right, many=nodal.ndim == 1)
@@ -110,7 +111,7 @@ def thickness_response(film: Any, state, pressure: np.ndarray, nodal: np.ndarray
         nodal_response = _nodal_response(solved, nodal, nodes, shape)
     else:  # one half of the width (module docstring); its answer stays on the half
         keep, representative = half
-        solved = _solve_half((a_east, a_north, active), keep, representative, right[:, keep])
+        solved = _solve_half((a_east, a_north, active), keep, representative, right)
         force = -np.stack([solved @ _fold(w_x[nodes], representative, keep.size),
                            solved @ _fold(w_y[nodes], representative, keep.size)])
         nodal_response = _nodal_response(solved, nodal, nodes, shape, representative)
