@@ -183,7 +183,7 @@ def register(app: typer.Typer) -> None:
         from conrod.simulation.grid_error import coarse_jobs
         from conrod.simulation.side_runs import beside
 
-        draft = FigureDraft() if figures else None  # drawn while the run waits
+        draft = FigureDraft(_load_matplotlib) if figures else None  # drawn while it waits
         with beside(simulation, coarse_jobs(simulation) if grid_error else (), idle=draft):
             results = _computed(simulation, step_check, grid_error, draft)
         write_results(results, out, figures=figures, draft=draft)
@@ -193,6 +193,12 @@ def register(app: typer.Typer) -> None:
             if note:
                 typer.echo(note)
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
+
+
+def _load_matplotlib() -> None:
+    """Import matplotlib (0.26 s on the 2-core machine) the first time the run waits for its
+    second process: the figures come next, drawn here and in a process forked from here."""
+    import conrod.plotting.save  # noqa: F401  (matplotlib with its Agg backend)
 
 
 def _computed(simulation: Any, step_check: bool, grid_error: bool, draft: Any = None) -> Any:

@@ -347,11 +347,8 @@ class HasPressureEvaluation(Protocol):
     :class:`~conrod.film.reynolds.response.PressureEvaluation`), or, without a solve, from
     the converged pressure a memory holds (the answer of the step that solved it)."""
 
-    def evaluate_pressure(self, state: FilmState, memory: Any,
-                          accuracy: float | None = None) -> Any:
-        """The pressure evaluation of ``state`` from ``memory`` (None: a cold start), solved
-        to the relative ``accuracy`` where looser than the film's tolerance (None: the
-        tolerance; inexact Newton, :mod:`conrod.numerics.newton`)."""
+    def evaluate_pressure(self, state: FilmState, memory: Any, accuracy: Any = None) -> Any:
+        """The evaluation of ``state`` from ``memory`` (None: cold) to ``accuracy`` [-]."""
 
     def answered_evaluation(self, state: FilmState, memory: Any) -> Any:
         """The evaluation of ``state`` whose converged pressure ``memory`` holds."""

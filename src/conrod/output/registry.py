@@ -264,10 +264,10 @@ class FigureDraft:
     """Figures drawn ahead of :func:`write_results` while the run waits with nothing to
     compute (``conrod run``: for the last coarse orbit of its grid-error estimate, computed by
     its second process): call it with a ``waiting`` predicate
-    (:func:`conrod.simulation.side_runs.beside`'s ``idle``); it imports matplotlib, then,
-    once :meth:`provisional` gave it results, draws their figures in order into memory
-    while ``waiting()`` holds. :func:`write_results` writes those of them that the final
-    results draw from the same inputs (:meth:`drawn_for`) and draws the others.
+    (:func:`conrod.simulation.side_runs.beside`'s ``idle``); it calls ``prepare`` (once: the
+    CLI imports matplotlib), then, once :meth:`provisional` gave it results, draws their
+    figures in order into memory while ``waiting()`` holds. :func:`write_results` writes
+    those the final results draw from the same inputs (:meth:`drawn_for`), draws the others.
 
     The final results of a run are its provisional ones with the summary's
     :data:`LATE_FIELDS` set (the grid-error estimate, its warning), which no figure draws:
@@ -275,7 +275,8 @@ class FigureDraft:
     final results, byte for byte (``tests/test_output_registry.py``).
     """
 
-    def __init__(self) -> None:
+    def __init__(self, prepare: Callable[[], Any] | None = None) -> None:
+        self.prepare = prepare
         self.results: Any = None
         self.drawn: dict[str, bytes] = {}
         self._pending: list[FigureSpec] = []
@@ -288,9 +289,10 @@ class FigureDraft:
             self._pending = list(_figure_specs(results))
 
     def __call__(self, waiting: Callable[[], bool]) -> None:
-        """Import matplotlib, then draw the next figures while ``waiting()`` holds."""
-        import conrod.plotting.save  # noqa: F401  (matplotlib with its Agg backend)
-
+        """``prepare`` (the first time), then the next figures while ``waiting()`` holds."""
+        prepare, self.prepare = self.prepare, None
+        if prepare is not None:
+            prepare()
         while self._pending and waiting():
             spec = self._pending.pop(0)
             try:

@@ -253,9 +253,7 @@ class ReynoldsFilm:
 
     def evaluate_pressure(self, state: FilmState, memory: ReynoldsMemory | None = None,
                           accuracy: float | None = None):
-        """The pressure alone at ``state`` warm-started from ``memory``
-        (:class:`~conrod.film.reynolds.response.PressureEvaluation`), solved to the
-        relative ``accuracy`` where looser than :attr:`tolerance` (None: the tolerance)."""
+        """The pressure alone (a PressureEvaluation) from ``memory`` to ``accuracy`` [-]."""
         from conrod.film.reynolds.response import evaluate_pressure
 
         return evaluate_pressure(self, state, memory, accuracy)
@@ -419,8 +417,7 @@ class ReynoldsFilm:
 
     def solve_pressure(self, problem: _Problem, state: FilmState, memory: ReynoldsMemory,
                        accuracy: float | None = None) -> tuple[np.ndarray, dict]:
-        """Converged pressure [Pa] on the fine grid and solver diagnostics; to the
-        relative ``accuracy`` where looser than :attr:`tolerance` (None: the tolerance)."""
+        """Pressure [Pa] and diagnostics, to ``accuracy`` where looser than the tolerance."""
         tolerance = self.tolerance if accuracy is None else max(self.tolerance, accuracy)
         warm = self.warm_start and memory.pressure is not None
         if warm:
