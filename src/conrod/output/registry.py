@@ -272,7 +272,8 @@ class FigureDraft:
     The final results of a run are its provisional ones with the summary's
     :data:`LATE_FIELDS` set (the grid-error estimate, its warning), which no figure draws:
     every other field is the same object, so a figure drawn ahead is the figure of the
-    final results, byte for byte (``tests/test_output_registry.py``).
+    final results, byte for byte (``tests/test_figure_process.py``,
+    ``tests/test_outputs_elastic.py``).
     """
 
     def __init__(self, prepare: Callable[[], Any] | None = None) -> None:
