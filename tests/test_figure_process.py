@@ -80,16 +80,20 @@ def test_what_the_process_fails_to_draw_is_drawn_here(two_processes, tmp_path):
     assert paths[3].read_text().endswith(f"drawn by {parent}")
 
 
-def test_a_failing_figure_raises_in_the_writing_process(two_processes, tmp_path):
+def _failing_at(failing: int, figure):
+    """build_of for :func:`_specs`: figure ``failing`` raises, the others are ``figure(text)``."""
     def build_of(i):
         def build():
-            if i == 1:
-                raise RuntimeError("figure 1 cannot be drawn")
-            return _Figure(f"figure {i}")
+            if i == failing:
+                raise RuntimeError(f"figure {i} cannot be drawn")
+            return figure(f"figure {i}")
         return build
+    return build_of
 
+
+def test_a_failing_figure_raises_in_the_writing_process(two_processes, tmp_path):
     with pytest.raises(RuntimeError, match="figure 1 cannot be drawn"):
-        draw_figures(_specs(build_of), tmp_path)
+        draw_figures(_specs(_failing_at(1, _Figure)), tmp_path)
 
 
 def test_a_stuck_process_is_ended_and_its_figures_drawn_here(two_processes, tmp_path,
@@ -191,14 +195,7 @@ def test_a_draft_draws_only_while_the_run_waits_and_leaves_a_failing_figure_to_t
     draft(lambda: next(answers))  # two figures, then a result arrived
     assert draft.drawn == {"f0.png": b"figure 0", "f1.png": b"figure 1"}
 
-    def build_of(i):
-        def build():
-            if i == 3:
-                raise RuntimeError("figure 3 cannot be drawn")
-            return InMemory(f"figure {i}")
-        return build
-
     draft = FigureDraft()
-    draft.results, draft._pending = object(), list(_specs(build_of))
+    draft.results, draft._pending = object(), list(_specs(_failing_at(3, InMemory)))
     draft(lambda: True)
     assert sorted(draft.drawn) == ["f0.png", "f1.png", "f2.png"]  # the rest: the writer's

@@ -269,8 +269,8 @@ class FigureDraft:
     figures in order into memory while ``waiting()`` holds. :func:`write_results` writes
     those the final results draw from the same inputs (:meth:`drawn_for`), draws the others.
 
-    The final results of a run are its provisional ones with the summary's
-    :data:`LATE_FIELDS` set (the grid-error estimate, its warning), which no figure draws:
+    The final results of a run are its provisional ones with the summary's ``undrawn``
+    fields set (the grid-error estimate, its warning), which no figure draws:
     every other field is the same object, so a figure drawn ahead is the figure of the
     final results, byte for byte (``tests/test_figure_process.py``,
     ``tests/test_outputs_elastic.py``).
@@ -309,29 +309,20 @@ class FigureDraft:
         return dict(self.drawn)
 
 
-LATE_FIELDS = ("grid_error", "warnings")
-"""Fields of a run's summary that no figure draws (:class:`FigureDraft`): the grid-error
-estimate and the warnings, which the estimate may add to after the figures are drawn [-]."""
-
-
 def drawn_alike(before: Any, after: Any) -> bool:
-    """True when every figure draws the same from ``after`` as from ``before``: the same
-    object in every field of the results and of the results and summaries within them,
-    except a summary's :data:`LATE_FIELDS` [-]."""
+    """True when every figure draws the same from ``after`` as from ``before``: results with
+    the same fields, the same object in each of them and in the results within them, except
+    the fields a result declares ``undrawn`` (a run summary's grid error and warnings) [-]."""
     if before is after:
         return True
-    if type(before) is not type(after) or not dataclasses.is_dataclass(before):
+    if not (dataclasses.is_dataclass(before) and dataclasses.is_dataclass(after)) \
+            or dataclasses.fields(before) != dataclasses.fields(after):
         return False
-    late = LATE_FIELDS if _is_summary(before) else ()
+    undrawn = getattr(before, "undrawn", ())
     for field in dataclasses.fields(before):
-        if field.name in late:
+        if field.name in undrawn:
             continue
         old, new = getattr(before, field.name), getattr(after, field.name)
         if old is not new and not drawn_alike(old, new):
             return False
     return True
-
-
-def _is_summary(results: Any) -> bool:
-    """A run summary (it carries the grid-error estimate)."""
-    return any(field.name == "grid_error" for field in dataclasses.fields(results))

@@ -8,7 +8,7 @@ Every field documents its unit in brackets. No plotting and no I/O here
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Protocol, runtime_checkable
+from typing import Any, ClassVar, Protocol, runtime_checkable
 
 import numpy as np
 
@@ -105,6 +105,10 @@ class CycleResults:
 @dataclass(frozen=True)
 class RunSummary:
     """Cycle characteristics ([D2] Table 1 'cycle' columns) and run diagnostics."""
+
+    undrawn: ClassVar[tuple[str, ...]] = ("grid_error", "warnings")
+    """Fields no figure draws: the grid-error estimate and the warnings it may add come
+    after the figures are drawn (:class:`conrod.output.registry.FigureDraft`) [-]."""
 
     h_min: float
     """Smallest h_min over the cycle [m]."""
