@@ -167,3 +167,47 @@ def test_the_multigrid_kernels_compile_one_specialisation_each(tmp_path):
     assert done.returncode == 0, done.stderr[-2000:]
     counts = json.loads(done.stdout.splitlines()[-1])
     assert counts == {"_fold": 1, "_descend": 1, "gauss_seidel": 1, "stencil": 1}
+
+
+LOAD_AND_COUNT = """
+from conrod.film.short.kernel import sommerfeld_angle
+
+sommerfeld_angle(1.0, 0.5)
+stats = sommerfeld_angle.stats
+print("CACHE", sum(stats.cache_hits.values()), sum(stats.cache_misses.values()))
+"""
+
+
+def _hits_and_misses(packages: Path) -> tuple[int, int]:
+    """(cache hits, cache misses) of a kernel of the conrod package below ``packages``,
+    with numba's cache beside its modules (as in an installed package)."""
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env["PYTHONPATH"] = str(packages)
+    done = subprocess.run([sys.executable, "-c", LOAD_AND_COUNT], capture_output=True,
+                          text=True, env=env, check=False, cwd=packages)
+    assert done.returncode == 0, done.stderr[-2000:]
+    line = next(x for x in done.stdout.splitlines() if x.startswith("CACHE"))
+    hits, misses = (int(v) for v in line.split()[1:])
+    return hits, misses
+
+
+def test_a_copy_with_new_times_loads_the_kernels_compiled_beside_its_sources(tmp_path):
+    """What ``pip install .`` does to the kernels compiled while the wheel was built
+    (docs/install.md): pip writes the files anew, so every modification time is new; the
+    content stamp still finds the kernel. A changed module compiles it again."""
+    import shutil
+    import time
+
+    built = tmp_path / "built"
+    shutil.copytree(ROOT / "src" / "conrod", built / "conrod",
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    assert _hits_and_misses(built) == (0, 1)  # compiled beside the sources
+    time.sleep(0.01)
+    installed = tmp_path / "installed"
+    shutil.copytree(built, installed, copy_function=shutil.copyfile)  # new times
+    module = installed / "conrod" / "film" / "short" / "kernel.py"
+    assert module.stat().st_mtime_ns != (built / "conrod/film/short/kernel.py").stat().st_mtime_ns
+    assert _hits_and_misses(installed) == (1, 0)
+    edited = installed / "conrod" / "units.py"  # another module of the package changed
+    edited.write_text(edited.read_text() + "\n# edited\n")
+    assert _hits_and_misses(installed) == (0, 1)
