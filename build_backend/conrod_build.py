@@ -82,10 +82,10 @@ def kernel_requirements(pyproject: Path = ROOT / "pyproject.toml") -> list[str]:
 
 
 def _name(specifier: str) -> str:
-    name = specifier.split(";")[0]
-    for mark in "[<>=!~ ":
-        name = name.split(mark)[0]
-    return name.strip().lower()
+    from packaging.requirements import Requirement  # in pip's build environment (pyproject)
+    from packaging.utils import canonicalize_name
+
+    return canonicalize_name(Requirement(specifier).name)
 
 
 def get_requires_for_build_wheel(config_settings: dict | None = None) -> list[str]:

@@ -240,11 +240,8 @@ class _Iteration:
         c, n = self.controls.scale, self.n
         own = c * z[:n]
         velocity = self.controls.velocity_scale * z[n:] if self.k else self.v0
-        if self.inexact:
-            g, force, h_min, payload = self.system.evaluate(
-                own, velocity, min(FIRST_ACCURACY, FORCING * self.smallest))
-        else:
-            g, force, h_min, payload = self.system.evaluate(own, velocity)
+        accuracy = (min(FIRST_ACCURACY, FORCING * self.smallest),) if self.inexact else ()
+        g, force, h_min, payload = self.system.evaluate(own, velocity, *accuracy)
         self.solves += 1
         r = g / c
         if self.k:
