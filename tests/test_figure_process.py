@@ -13,6 +13,7 @@ from typer.testing import CliRunner
 from conrod.cli.app import _register_commands, app
 from conrod.output import registry
 from conrod.output.registry import FigureSpec, draw_figures
+from conrod.simulation import side_runs
 
 _register_commands()
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -142,12 +143,13 @@ def assert_drawn_ahead_as_written(results, tmp_path):
 
     from conrod.output.registry import FigureDraft, figures, write_results
 
-    draft = FigureDraft()
+    draft = FigureDraft(side_runs.fork)
     draft.provisional(results)
-    draft(lambda: True)  # nothing arrives: every figure drawn ahead
+    _all_begun(draft)  # every figure drawn ahead, by the process
     final = _late(results)
     files = [spec.file for spec in figures(final)]
     assert sorted(draft.drawn_for(final)) == sorted(files) and files
+    assert draft.drawer is None  # collected, the process ended
     write_results(final, tmp_path / "fresh")  # drawn by the writer
     for name in files:
         assert draft.drawn[name] == (tmp_path / "fresh" / name).read_bytes(), name
@@ -173,29 +175,76 @@ def test_figures_drawn_ahead_are_those_the_writer_draws(tmp_path):
     assert_drawn_ahead_as_written(Simulation(case).run(), tmp_path)
 
 
-def test_a_draft_draws_only_while_the_run_waits_and_leaves_a_failing_figure_to_the_writer(
-        tmp_path):
+def _all_begun(draft, count=None):
+    """Wait until the draft's process has begun every figure (the first ``count``)."""
+    import time
+
+    while side_runs.OPEN in draft.drawer.claims[:count]:
+        time.sleep(0.01)
+
+
+class _Either:
+    """Writes its text into a buffer or a file (what ``savefig`` does with a figure)."""
+
+    def __init__(self, text: str):
+        self.text = text
+
+    def savefig(self, target, **options):
+        if hasattr(target, "write"):
+            target.write(self.text.encode())
+        else:
+            Path(target).write_text(self.text)
+
+
+def test_a_draft_s_process_draws_and_leaves_what_it_does_not_deliver_to_the_writer(
+        tmp_path, monkeypatch):
+    """The process draws the figures in order, the run's process those it has not begun
+    while it waits; one that fails there, or that it does not deliver within the patience,
+    is drawn by the writer (none lost)."""
     from conrod.output.registry import FigureDraft
 
-    class InMemory:
-        """Saves its text (what ``savefig`` does with a figure) into a buffer."""
+    parent = os.getpid()
 
-        def __init__(self, text: str):
-            self.text = text
+    def build_of(i):
+        def build():
+            if os.getpid() != parent and i == 1:
+                raise RuntimeError("figure 1 fails in the forked process only")
+            if os.getpid() != parent and i == 3:
+                import time
 
-        def savefig(self, buffer, format, dpi, bbox_inches):  # noqa: A002 (matplotlib's)
-            buffer.write(self.text.encode())
+                time.sleep(60)  # stuck there
+            return _Either(f"figure {i} drawn by {os.getpid()}")
+        return build
 
-    draft = FigureDraft()
-    draft(lambda: True)  # no results yet: nothing to draw
-    assert draft.drawn == {}
-    specs = _specs(lambda i: lambda: InMemory(f"figure {i}"))
-    draft.results, draft._pending = object(), list(specs)
-    answers = iter([True, True, False])
-    draft(lambda: next(answers))  # two figures, then a result arrived
-    assert draft.drawn == {"f0.png": b"figure 0", "f1.png": b"figure 1"}
+    specs = _specs(build_of)
+    monkeypatch.setattr(registry, "_figure_specs", lambda results: specs)
+    monkeypatch.setattr(registry, "FIGURE_WAIT_MIN", 0.5)
+    results = object()
+    draft = FigureDraft(side_runs.fork)
+    draft.provisional(results)
+    _all_begun(draft, 4)  # f0–f3 begun there, where it sticks at f3
+    drawn = draft.drawn_for(results)
+    assert sorted(drawn) == ["f0.png", "f2.png", "f4.png"]  # f4 drawn here meanwhile
+    assert [drawn[f"f{i}.png"].endswith(str(parent).encode()) for i in (0, 2, 4)] == [
+        False, False, True]
+    assert draft.drawn_for(object()) == {}  # other results: nothing drawn ahead for them
+    paths = draw_figures(specs, tmp_path, drawn)
+    texts = [p.read_text() for p in paths]
+    assert all(text.startswith(f"figure {i} drawn by ") for i, text in enumerate(texts))
+    assert [text.endswith(str(parent)) for text in texts] == [False, True, False, True, True]
 
-    draft = FigureDraft()
-    draft.results, draft._pending = object(), list(_specs(_failing_at(3, InMemory)))
-    draft(lambda: True)
-    assert sorted(draft.drawn) == ["f0.png", "f1.png", "f2.png"]  # the rest: the writer's
+
+def test_a_draft_for_new_results_drops_the_old_ones_and_ends_with_close(monkeypatch):
+    from conrod.output.registry import FigureDraft
+
+    specs = _specs(lambda i: lambda: _Either(f"figure {i}"))
+    monkeypatch.setattr(registry, "_figure_specs", lambda results: specs)
+    first, second = object(), object()
+    draft = FigureDraft(side_runs.fork)
+    draft.provisional(first)
+    process = draft.drawer.process
+    draft.provisional(second)  # the first process ended, a new one draws
+    assert not process.is_alive() and draft.drawer.process is not process
+    assert draft.drawn_for(first) == {}
+    draft.close()
+    assert draft.drawer is None and draft.drawn_for(second) == {}

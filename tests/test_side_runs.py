@@ -126,7 +126,8 @@ def test_no_process_from_a_worker_process(fresh):
 def test_elastic_run_with_side_runs_writes_the_same_files_as_without(
         fresh, tmp_path, monkeypatch):
     """`conrod run` on an elastic bore with the rigid companion and the grid-error orbits
-    computed beside it: the same cycle tables and grid error, bit for bit."""
+    computed beside it, and its figures drawn by a third process meanwhile: the same cycle
+    tables, grid error and figures, bit for bit."""
     import json
 
     from test_ehd_cli import _case_file
@@ -146,13 +147,14 @@ def test_elastic_run_with_side_runs_writes_the_same_files_as_without(
         if mode == "alone":
             monkeypatch.setenv(side_runs.SWITCH, "0")
         outs[mode] = tmp_path / mode
-        result = CliRunner().invoke(app, ["run", case, "--out", str(outs[mode]),
-                                          "--no-figures"])
+        result = CliRunner().invoke(app, ["run", case, "--out", str(outs[mode])])
         assert result.exit_code in (0, 4), result.output
     # each once, in the run's order; from the process, or computed here where the process
     # had not started it (work stealing: which one depends on the timing)
-    assert [key for key, _ in handed] == ["rigid", (26, 6), (18, 4)]
-    for name in ("cycle.csv", "cycle_rigid.csv"):
+    figures = sorted(p.name for p in outs["alone"].glob("*.png"))
+    assert [key for key, _ in handed if key not in figures] == ["rigid", (26, 6), (18, 4)]
+    assert sorted(key for key, _ in handed if key in figures) == figures and figures
+    for name in ("cycle.csv", "cycle_rigid.csv", *figures):
         assert (outs["beside"] / name).read_bytes() == (outs["alone"] / name).read_bytes()
     summaries = [_untimed(json.loads((outs[m] / "summary.json").read_text()))
                  for m in ("beside", "alone")]
@@ -234,32 +236,28 @@ def test_the_run_computes_the_jobs_the_process_has_not_started(fresh):
     side.stop()
 
 
-def test_idle_works_while_the_run_waits_and_never_without_a_wait(fresh):
-    """``idle(waiting)`` runs in the run's own process when it has nothing to compute but
-    must wait (there: ``conrod run`` draws its figures), after the jobs it can steal;
-    ``waiting()`` holds until a result is in the pipe; a result already sent is taken
-    without it."""
-    calls = []
-
-    def idle(waiting):
-        calls.append(side.claims[:])
-        while waiting():  # works until the awaited result arrives
-            time.sleep(0.01)
-
-    side = side_runs.start([("slow", lambda: time.sleep(1.0) or "slow done"),
-                            ("mid", lambda: 1), ("slower", lambda: time.sleep(0.5) or 2)],
-                           idle=idle)
+def test_a_process_past_its_patience_is_ended_and_what_is_left_computed_here(fresh):
+    """``fork`` starts the process without sampling the cores; with a patience the run waits
+    that long for its next result, then ends it and computes the jobs left here."""
+    side = side_runs.fork([("stuck", lambda: time.sleep(60)), ("next", lambda: 2)],
+                          patience=0.3)
     while side.claims[0] == side_runs.OPEN:
         time.sleep(0.01)
-    assert side.take("slow") == "slow done"
-    assert side.take("slower") == 2
-    # first with "mid" computed here ("slower" taken there or here)
-    assert calls and calls[0][1] == side_runs.HERE
-    side.stop()
+    started = time.perf_counter()
+    assert side.take("stuck") is side_runs.MISSING  # to compute here
+    assert time.perf_counter() - started < 10.0 and side.process is None
+    assert list(side.claims[:]) == [side_runs.THERE, side_runs.HERE]
+    assert side.take("next") == 2  # computed here while it waited
 
-    calls.clear()
-    side = side_runs.start([("quick", lambda: "quick done")], idle=idle)
-    while not side.connection.poll():  # the result is in the pipe before it is asked for
+
+def test_a_result_already_sent_is_taken_before_a_job_is_computed_here(fresh):
+    """The run waiting for a job whose result is in the pipe takes it at once instead of
+    computing a job nobody took first (which the process would take next)."""
+    side = side_runs.start([("first", lambda: 1), ("long", lambda: time.sleep(1.0) or 2),
+                            ("open", lambda: 3)])
+    while side.claims[1] == side_runs.OPEN or not side.connection.poll():
         time.sleep(0.01)
-    assert side.take("quick") == "quick done" and calls == []
+    assert side.take("first") == 1
+    assert side.claims[2] == side_runs.OPEN  # left to the process
+    assert side.take("long") == 2
     side.stop()

@@ -181,12 +181,17 @@ def register(app: typer.Typer) -> None:
                                 rigid_companion=rigid, fields=fields)
         from conrod.output.registry import FigureDraft
         from conrod.simulation.grid_error import coarse_jobs
-        from conrod.simulation.side_runs import beside
+        from conrod.simulation.side_runs import beside, fork
 
-        draft = FigureDraft(_load_matplotlib) if figures else None  # drawn while it waits
-        with beside(simulation, coarse_jobs(simulation) if grid_error else (), idle=draft):
-            results = _computed(simulation, step_check, grid_error, draft)
-        write_results(results, out, figures=figures, draft=draft)
+        draft = FigureDraft(fork) if figures else None  # drawn while the coarse orbits run
+        try:
+            with beside(simulation, coarse_jobs(simulation) if grid_error else ()) as side:
+                results = _computed(simulation, step_check, grid_error,
+                                    draft if side is not None else None)
+            write_results(results, out, figures=figures, draft=draft)
+        finally:
+            if draft is not None:
+                draft.close()
         note = _renew_report(out) if had_report else None
         with printing_after_results(out):
             print_headline(results, out)
@@ -195,16 +200,11 @@ def register(app: typer.Typer) -> None:
         finish(results.summary.warnings, accept_warnings, converged=results.summary.periodic)
 
 
-def _load_matplotlib() -> None:
-    """Import matplotlib (0.26 s on the 2-core machine) the first time the run waits for its
-    second process: the figures come next, drawn here and in a process forked from here."""
-    import conrod.plotting.save  # noqa: F401  (matplotlib with its Agg backend)
-
-
 def _computed(simulation: Any, step_check: bool, grid_error: bool, draft: Any = None) -> Any:
     """The run's results with the step check and the grid-error estimate asked for;
-    ``draft`` (a :class:`~conrod.output.registry.FigureDraft`) is given the results before
-    the estimate, whose figures it draws while the run waits for the coarser orbits."""
+    ``draft`` (a :class:`~conrod.output.registry.FigureDraft`, where a second process
+    computes beside the run) is given the results before the estimate, whose figures a
+    forked process draws while the coarser orbits run."""
     progress = _Progress(simulation.solver.max_cycles, simulation.solver.periodicity_tolerance)
     try:
         results = simulation.run(progress=progress)

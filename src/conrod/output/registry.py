@@ -27,6 +27,7 @@ A new result type appears everywhere at once by registering its tables and figur
 from __future__ import annotations
 
 import dataclasses
+import functools
 import io
 import multiprocessing
 import os
@@ -261,13 +262,21 @@ def _draw_there(pairs: list[tuple[FigureSpec, Path]], connection: Any) -> None:
 
 
 class FigureDraft:
-    """Figures drawn ahead of :func:`write_results` while the run waits with nothing to
-    compute (``conrod run``: for the last coarse orbit of its grid-error estimate, computed by
-    its second process): call it with a ``waiting`` predicate
-    (:func:`conrod.simulation.side_runs.beside`'s ``idle``); it calls ``prepare`` (once: the
-    CLI imports matplotlib), then, once :meth:`provisional` gave it results, draws their
-    figures in order into memory while ``waiting()`` holds. :func:`write_results` writes
-    those the final results draw from the same inputs (:meth:`drawn_for`), draws the others.
+    """The figures of a run's provisional results drawn ahead by a forked process while the
+    run computes what it still needs (``conrod run``: the coarser orbits of its grid-error
+    estimate), then taken by :func:`write_results` (:meth:`drawn_for`) for the final results
+    where these draw from the same inputs.
+
+    ``fork(jobs, patience)`` starts the process on ``jobs`` ((file, () → the file's bytes) in
+    order) and returns a handle whose ``take(file)`` gives the bytes, waiting for them, or
+    something else where the process does not deliver them (not begun there, failed, or
+    ended after ``patience`` seconds without a result), and whose ``stop()`` ends the
+    process (:func:`conrod.simulation.side_runs.fork`, which shares the figures out between
+    the process and the writer: the writer draws those the process has not begun once it
+    needs them). The process runs on whatever core is free meanwhile — the run's own process
+    takes over the last grid-error orbit where the second process has not started it, and
+    the second process is then free; or the run waits for that orbit — instead of the
+    figures being drawn after every orbit.
 
     The final results of a run are its provisional ones with the summary's ``undrawn``
     fields set (the grid-error estimate, its warning), which no figure draws:
@@ -276,37 +285,43 @@ class FigureDraft:
     ``tests/test_outputs_elastic.py``).
     """
 
-    def __init__(self, prepare: Callable[[], Any] | None = None) -> None:
-        self.prepare = prepare
+    def __init__(self, fork: Callable[..., Any]) -> None:
+        self.fork = fork
         self.results: Any = None
+        self.drawer: Any = None
+        self.files: list[str] = []
         self.drawn: dict[str, bytes] = {}
-        self._pending: list[FigureSpec] = []
 
     def provisional(self, results: Any) -> None:
-        """The results whose figures to draw when the run waits next (drawn ones kept only
-        for the same results)."""
-        if results is not self.results:
-            self.results, self.drawn = results, {}
-            self._pending = list(_figure_specs(results))
-
-    def __call__(self, waiting: Callable[[], bool]) -> None:
-        """``prepare`` (the first time), then the next figures while ``waiting()`` holds."""
-        prepare, self.prepare = self.prepare, None
-        if prepare is not None:
-            prepare()
-        while self._pending and waiting():
-            spec = self._pending.pop(0)
-            try:
-                self.drawn[spec.file] = _rendered(spec)
-            except Exception:  # drawn again by the writer, which raises as it would have
-                self._pending.clear()
+        """Start drawing the figures of ``results`` (those drawn for earlier results are
+        dropped)."""
+        self.close()
+        specs = _figure_specs(results)
+        self.results, self.files, self.drawn = results, [spec.file for spec in specs], {}
+        self.drawer = self.fork([(spec.file, functools.partial(_rendered, spec))
+                                 for spec in specs], FIGURE_WAIT_MIN)
 
     def drawn_for(self, results: Any) -> dict[str, bytes]:
         """The figures drawn ahead that ``results`` draws alike (none when it draws from
-        other inputs than the provisional results)."""
+        other inputs than the provisional results), the process's collected at the first
+        call: a figure it has not begun by then, failed or did not deliver within
+        :data:`FIGURE_WAIT_MIN` is left to the writer."""
         if self.results is None or not drawn_alike(self.results, results):
             return {}
+        drawer, self.drawer = self.drawer, None
+        if drawer is not None:
+            try:
+                self.drawn = {file: drawn for file in self.files
+                              if isinstance(drawn := drawer.take(file), bytes)}
+            finally:
+                drawer.stop()
         return dict(self.drawn)
+
+    def close(self) -> None:
+        """End the drawing process, if one runs."""
+        drawer, self.drawer = self.drawer, None
+        if drawer is not None:
+            drawer.stop()
 
 
 def drawn_alike(before: Any, after: Any) -> bool:

@@ -74,9 +74,9 @@ class SideRuns:
     has not started)."""
 
     def __init__(self, process: Any, connection: Any, jobs: list[tuple[Any, Any]],
-                 claims: Any, idle: Callable[[Callable[[], bool]], Any] | None = None):
+                 claims: Any, patience: float | None = None):
         self.process, self.connection, self.claims = process, connection, claims
-        self.idle = idle
+        self.patience = patience
         self.jobs = dict(jobs)
         self.keys = [key for key, _ in jobs]
         self.received: dict[Any, Any] = {}
@@ -85,32 +85,42 @@ class SideRuns:
     def take(self, key: Any) -> Any:
         """The job's result, waiting for it; the :class:`~conrod.errors.ConrodError` it
         raised, raised here; :data:`MISSING` when the process does not have it (not one of
-        its jobs, not started there yet, failed otherwise, or the process ended): the run
-        computes it. While the job runs there, the run computes the jobs nobody took yet
-        itself, in their order, the largest first as the process takes them (work stealing:
-        on a cold numba cache the process compiles the rigid companion's kernels while the
-        run does the coarse orbits, the finer first, so that the process, once free, takes
-        the smaller one instead of waiting)."""
+        its jobs, not started there yet, failed otherwise, the process ended or silent past
+        its patience): the run computes it. While the job runs there, the run takes the
+        results already sent (the job may be among them), then computes the jobs nobody
+        took yet itself, in their order, the largest first as the process takes them (work
+        stealing: on a cold numba cache the process compiles the rigid companion's kernels
+        while the run does the coarse orbits, the finer first, so that the process, once
+        free, takes the smaller one instead of waiting)."""
         if key not in self.keys or key in self.taken:
             return MISSING
         self.taken.add(key)
         while key not in self.received and self.process is not None:
             if _claim(self.claims, self.keys.index(key), HERE):
                 return MISSING
-            if self._compute_one_here(key):
+            if self._receive(0.0) or self._compute_one_here(key):
                 continue
-            self._use_idle_time()
-            try:
-                got, outcome, value = self.connection.recv()
-            except (EOFError, OSError):  # the process ended: what is left is computed here
-                self.stop()
-                break
-            if outcome != LOST:
-                self.received[got] = (outcome, value)
+            if not self._receive(self.patience):  # silent that long: what is left is
+                self.stop()                        # computed here
         outcome, value = self.received.pop(key, (LOST, MISSING))
         if outcome == RAISED:
             raise value
         return value
+
+    def _receive(self, wait: float | None) -> bool:
+        """Read the next result the process sent, waiting at most ``wait`` [s] for it (0:
+        only one already in the pipe; None: as long as it takes); True if one was read. The
+        process ended: it is stopped (what it has not delivered is computed here)."""
+        try:
+            if wait is not None and not self.connection.poll(wait):
+                return False
+            got, outcome, value = self.connection.recv()
+        except (EOFError, OSError):
+            self.stop()
+            return False
+        if outcome != LOST:
+            self.received[got] = (outcome, value)
+        return True
 
     def _compute_one_here(self, waiting_for: Any) -> bool:
         """Compute the first job nobody took (not ``waiting_for``) here; True if one ran."""
@@ -123,15 +133,6 @@ class SideRuns:
                     self.received[other] = (RAISED, error)
                 return True
         return False
-
-    def _use_idle_time(self) -> None:
-        """Call ``idle(waiting)`` when the run would otherwise wait for the process now;
-        ``waiting()`` is True until a result is in the pipe."""
-        if self.idle is not None and not self.connection.poll():
-            self.idle(self._waiting)
-
-    def _waiting(self) -> bool:
-        return not self.connection.poll()
 
     def stop(self) -> None:
         """End the process now (its jobs are taken, or the run failed)."""
@@ -152,11 +153,21 @@ def _claim(claims: Any, index: int, who: int) -> bool:
         return True
 
 
-def start(jobs: list[tuple[Any, Callable[[], Any]]],
-          idle: Callable[[Callable[[], bool]], Any] | None = None) -> SideRuns | None:
+def start(jobs: list[tuple[Any, Callable[[], Any]]]) -> SideRuns | None:
     """A forked process running ``jobs`` ((key, function) in order; None when it cannot
-    pay or there is nothing to run); ``idle`` as for :func:`beside`."""
+    pay or there is nothing to run)."""
     if not jobs or not wanted():
+        return None
+    return fork(jobs)
+
+
+def fork(jobs: list[tuple[Any, Callable[[], Any]]],
+         patience: float | None = None) -> SideRuns | None:
+    """A forked process running ``jobs`` as :func:`start` does, without asking whether it
+    pays (None only without ``fork`` or jobs); ``patience`` [s]: the longest the run waits
+    for the process's next result before it ends the process and computes what is left
+    (None: as long as a job takes)."""
+    if not jobs or "fork" not in multiprocessing.get_all_start_methods():
         return None
     context = multiprocessing.get_context("fork")
     receiving, sending = context.Pipe(duplex=False)
@@ -164,24 +175,21 @@ def start(jobs: list[tuple[Any, Callable[[], Any]]],
     process = context.Process(target=_serve, args=(jobs, sending, claims), daemon=True)
     process.start()
     sending.close()
-    return SideRuns(process, receiving, jobs, claims, idle)
+    return SideRuns(process, receiving, jobs, claims, patience)
 
 
 @contextlib.contextmanager
-def beside(simulation: Any, more: tuple[tuple[Any, Callable[[], Any]], ...] = (),
-           idle: Callable[[Callable[[], bool]], Any] | None = None) -> Iterator[Any]:
+def beside(simulation: Any, more: tuple[tuple[Any, Callable[[], Any]], ...] = ()
+           ) -> Iterator[Any]:
     """Within the block, :func:`take` finds the rigid companion of an elastic
     ``simulation`` and the results of the ``more`` jobs ((key, function), e.g. the coarser
     orbits of :func:`conrod.simulation.grid_error.coarse_jobs`) computed by a second process
-    (started here unless one already runs for the block around this one). ``idle(waiting)``
-    is called in the run's own process each time the run has nothing left to compute but
-    waits for the process, never when nothing is waited for; it may work while
-    ``waiting()`` holds, until a result arrives (``conrod run`` draws its figures then:
-    :class:`conrod.output.registry.FigureDraft`)."""
+    (started here unless one already runs for the block around this one); the block is
+    given the :class:`SideRuns` (None: no process)."""
     if _active.get() is not None:
         yield _active.get()
         return
-    side = start(_jobs(simulation, more), idle)
+    side = start(_jobs(simulation, more))
     token = _active.set(side)
     try:
         yield side
