@@ -273,10 +273,9 @@ class FigureDraft:
     ended after ``patience`` seconds without a result), and whose ``stop()`` ends the
     process (:func:`conrod.simulation.side_runs.fork`, which shares the figures out between
     the process and the writer: the writer draws those the process has not begun once it
-    needs them). The process runs on whatever core is free meanwhile — the run's own process
-    takes over the last grid-error orbit where the second process has not started it, and
-    the second process is then free; or the run waits for that orbit — instead of the
-    figures being drawn after every orbit.
+    needs them, and one that fails here raises as it would in the writer). The process uses
+    whichever core the orbits leave free (the second process done, or the run waiting for
+    it) instead of the figures being drawn after the last orbit.
 
     The final results of a run are its provisional ones with the summary's ``undrawn``
     fields set (the grid-error estimate, its warning), which no figure draws:

@@ -20,6 +20,10 @@ missing or only one core is usable, and only while a core is idle now (sampled o
 from the per-core counters; on a busy machine the second process would only take the CPU
 time it saves); ``CONROD_SIDE_RUNS=0`` turns it off.
 
+:func:`fork` starts such a process on other jobs without asking whether a core is idle:
+``conrod run`` draws its figures so while the coarser orbits run
+(:class:`conrod.output.registry.FigureDraft`).
+
 .. code-block:: python
 
     with beside(simulation, coarse_jobs(simulation)):   # starts the process (or nothing)
