@@ -108,3 +108,23 @@ def test_a_run_computes_on_one_blas_thread_and_gives_the_pool_back(case, monkeyp
         Simulation(case, **QUICK).run()
         assert blas_threads() == 2
     assert seen and set(seen) == {1}
+
+
+def test_the_orbit_alone_computes_on_one_blas_thread_too(case, monkeypatch):
+    """``run_orbit``, which the grid-error estimate calls directly for its coarser orbits
+    (in the run's process once the run is done, or in the second process), computes on one
+    BLAS thread as ``run`` does: on the threads' pool its spinning threads took the core of
+    the process drawing the figures, and the orbit's bits could depend on which process
+    computed it."""
+    seen = []
+    original = simulation_module.cycle_characteristics
+
+    def watched(problem, trajectory):
+        seen.append(blas_threads())
+        return original(problem, trajectory)
+
+    monkeypatch.setattr(simulation_module, "cycle_characteristics", watched)
+    with two_blas_threads():
+        Simulation(case, **QUICK).run_orbit()
+        assert blas_threads() == 2
+    assert seen and set(seen) == {1}

@@ -273,9 +273,13 @@ class Simulation:
         contact post-processing and plausibility warnings, and the converged
         :class:`ThermalOrbit` (problem, orbit) it came from. :meth:`run` returns its
         results for a rigid bore; the elastic run (:mod:`conrod.simulation.ehd_run`) adds
-        the bore's diagnostics to it and runs it again on the rigid companion."""
+        the bore's diagnostics to it and runs it again on the rigid companion. BLAS on one
+        thread meanwhile, as in :meth:`run`: the coarser orbits of the grid-error estimate
+        call this directly, in the run's process or in the second one, and compute the same
+        bits in both."""
         start = time.perf_counter()
-        thermal = thermal_orbit(self, self._thermal_orbit, progress)  # heat balance or film
+        with one_blas_thread():
+            thermal = thermal_orbit(self, self._thermal_orbit, progress)  # heat balance or film
         orbit, problem, cycle = thermal.orbit, thermal.problem, thermal.cycle
         summary = summarise(cycle, orbit, problem, self.solver, thermal.temperature,
                             thermal.cycles, thermal.iterations, _name(self.integrator(), problem))
