@@ -53,7 +53,7 @@ def _elastic_film(n_theta: int = 36, n_z: int = 8):
     from pathlib import Path
 
     from conrod import Case
-    from conrod.ehd.film import ElasticFilm
+    from conrod.ehd.film import ElasticFilm, ElasticSettings
     from conrod.housing.housing import Housing
     from conrod.units import rpm_to_rad_s
 
@@ -63,7 +63,8 @@ def _elastic_film(n_theta: int = 36, n_z: int = 8):
     case = Case.from_dict(data, base_dir=examples)
     omega = rpm_to_rad_s(case.engine.speed)
     film = ElasticFilm(ReynoldsFilm(case.bearing.geometry(), n_theta=n_theta, n_z=n_z),
-                       Housing.from_case(case), crank_speed=omega)
+                       Housing.from_case(case), crank_speed=omega,
+                       settings=ElasticSettings(tolerance=1e-9))  # compared to 1e-9 below
     c, angle = case.bearing.radial_clearance, np.radians(170.0)
     state = FilmState(eccentricity_x=0.9 * c * np.cos(angle),
                       eccentricity_y=0.9 * c * np.sin(angle), velocity_x=0.0,

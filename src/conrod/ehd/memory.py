@@ -10,6 +10,8 @@ from typing import Any
 
 import numpy as np
 
+from conrod.cases.housing import COUPLING_TOLERANCE
+
 
 @dataclass(frozen=True)
 class ElasticMemory:
@@ -80,7 +82,8 @@ def answer_key(state: Any) -> tuple[float, ...]:
 class ElasticSettings:
     """Coupling controls of :class:`ElasticFilm`.
 
-    tolerance : float  max|G(u)| accepted, relative to the radial clearance [-].
+    tolerance : float  max|G(u)| accepted, relative to the radial clearance [-]
+        (:data:`conrod.cases.housing.COUPLING_TOLERANCE`, the case's default).
     rigid_start : float  Crank angle turned with a rigid bore from the orbit start [rad]
         (Rodin 2004: 10–40°).
     cycle : float  Crank angle of one cycle [rad].
@@ -97,7 +100,7 @@ class ElasticSettings:
     start_angle : float  Crank angle of the orbit start [rad].
     """
 
-    tolerance: float = 1e-9
+    tolerance: float = COUPLING_TOLERANCE
     rigid_start: float = np.radians(20.0)
     increment_share: float = 0.5
     max_iterations: int = 40

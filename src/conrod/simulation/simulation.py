@@ -269,14 +269,10 @@ class Simulation:
     def run_orbit(self, progress: ProgressCallback | None = None
                   ) -> tuple[RunResults, ThermalOrbit]:
         """The orbit of this simulation's film as it is, without the elastic parts of
-        :meth:`run`: the periodic orbit (with the heat balance), its characteristics,
-        contact post-processing and plausibility warnings, and the converged
-        :class:`ThermalOrbit` (problem, orbit) it came from. :meth:`run` returns its
-        results for a rigid bore; the elastic run (:mod:`conrod.simulation.ehd_run`) adds
-        the bore's diagnostics to it and runs it again on the rigid companion. BLAS on one
-        thread meanwhile, as in :meth:`run`: the coarser orbits of the grid-error estimate
-        call this directly, in the run's process or in the second one, and compute the same
-        bits in both."""
+        :meth:`run`: the periodic orbit (heat balance included), its characteristics,
+        contact and plausibility warnings, and the :class:`ThermalOrbit` it came from
+        (:meth:`run`'s results for a rigid bore; :mod:`conrod.simulation.ehd_run` adds the
+        bore's diagnostics); BLAS on one thread, as :meth:`run` (the grid error calls this)."""
         start = time.perf_counter()
         with one_blas_thread():
             thermal = thermal_orbit(self, self._thermal_orbit, progress)  # heat balance or film
