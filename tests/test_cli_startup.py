@@ -30,8 +30,8 @@ except SystemExit:
 """
 
 
-def _heavy_loaded(statement: str, *args: str) -> list[str]:
-    code = LOADED_AFTER.format(statement=statement, heavy=HEAVY)
+def _heavy_loaded(statement: str, *args: str, heavy: tuple[str, ...] = HEAVY) -> list[str]:
+    code = LOADED_AFTER.format(statement=statement, heavy=heavy)
     env = {**os.environ, "PYTHONPATH": str(SRC)}
     done = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
                           env=env, check=False, timeout=120)
@@ -62,3 +62,12 @@ def test_a_lazy_name_is_the_defining_module_s_object():
     assert conrod.film.BearingGeometry is BearingGeometry is conrod.BearingGeometry
     with pytest.raises(AttributeError, match="no attribute 'Bearing'"):
         conrod.film.Bearing  # noqa: B018
+
+
+def test_the_implicit_and_elastic_orbits_do_not_load_scipys_integrators():
+    """The implicit step (also of the elastic bore) imports the adaptive integrator's module
+    for its helpers only; SciPy's integrators (0.2-0.5 s to import, in each process of a
+    run) are loaded where ``solve_ivp`` integrates, and only there."""
+    statement = ("import conrod.orbit.implicit, conrod.orbit.implicit_step, "
+                 "conrod.orbit.system_steps, conrod.ehd.film")
+    assert _heavy_loaded(statement, heavy=("scipy.integrate",)) == []

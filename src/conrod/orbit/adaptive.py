@@ -21,7 +21,6 @@ import math
 
 import numba as nb
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from conrod.errors import ConvergenceError
 from conrod.io.interrupts import raise_if_interrupted
@@ -212,6 +211,9 @@ def solve_segment(rhs, phi, end, current, event, settings, session):
     order) grinds on the kinks of a cavitating grid film's force where the lower-order BDF
     and LSODA pass (a fed two-land Reynolds film at 36 × 8, ε 0.955: Radau more than
     288 000 evaluations in half a cycle, BDF 5 700 and LSODA 7 200 for the whole cycle)."""
+    from scipy.integrate import solve_ivp  # here: the implicit and elastic orbits import this
+    # module for its helpers and never integrate with SciPy (its import costs 0.2-0.5 s)
+
     methods = [settings.adaptive_method] + [
         m for m in FALLBACK_METHODS if m != settings.adaptive_method
     ]
