@@ -31,8 +31,8 @@ to the radial clearance [-] (``coupling_tolerance``): 1e-4 of the periodicity to
 50 µm clearance), 1000 × the Reynolds film's own noise (≈ 1e-10 c). With the implicit step's force
 balance to :data:`conrod.ehd.bore_system.STEP_FORCE_TOLERANCE` it takes 16 % fewer film
 solves than 1e-9 c with 1e-8 of the load (README main job 7054 → 5910 at 144 × 16; the
-shipped elastic examples 14–16 %), every h_min and p_max of the cycle within 7e-7 of their
-largest value (docs/ehd.md)."""
+shipped elastic examples 14–16 %), the h_min and p_max of every output angle within 4e-7
+of the cycle's h_min and 7e-7 of its p_max (docs/ehd.md)."""
 
 HousingModelName = Literal["rigid", "builtin", "mesh", "compliance"]
 ClampName = Literal["small_end", "mid_shank"]
