@@ -66,11 +66,11 @@ orbit's own iteration [-]."""
 STEP_FORCE_TOLERANCE = 1e-6
 """Force balance of the implicit step on the elastic bore: |F + W| ≤ this × (|W| + 1 N) [-]
 (0.1 N of a 100 kN load). A residual force of 1e-6 W moves the journal by about 1e-6 W
-over the film's stiffness, below 1e-6 c even where the film is soft, which the bore's own
-tolerance (:data:`conrod.cases.housing.COUPLING_TOLERANCE`, 1e-7 c) already allows; the
-journal's balance of a rigid film keeps :data:`conrod.numerics.newton.FORCE_TOLERANCE`
-(1e-8). Loosened alone, either tolerance saves 2–3 % of the film solves (the other then
-binds); together 16 %."""
+over the film's stiffness — at least about W/c, as the film carries W within one clearance —
+so by at most about 1e-6 c, 1e-3 of the periodicity tolerance; the bore's own residual is
+held to :data:`conrod.cases.housing.COUPLING_TOLERANCE` (1e-7 c). The journal's balance of a
+rigid film keeps :data:`conrod.numerics.newton.FORCE_TOLERANCE` (1e-8). Loosened alone,
+either tolerance saves 2–3 % of the film solves (the other then binds); together 16 %."""
 
 FilmEvaluate = Callable[..., tuple[np.ndarray, np.ndarray, float, Any]]
 """(u [m], v [m/s]) → (nodal loads f [N], film force F [N], h_min [m], payload); with
