@@ -36,6 +36,13 @@ def kamaz_case(housing: dict | None = None, n_theta: int = 72, **solver) -> Case
     return Case.from_dict(data, base_dir=EXAMPLES)
 
 
+def tight_coupling(case: Case, tolerance: float = 1e-9) -> Case:
+    """``case`` with ``[housing] coupling_tolerance`` = ``tolerance`` [-, of c]: for a test
+    that probes a limit below the default tolerance (1e-7 c)."""
+    return case.model_copy(update={"housing": case.housing.model_copy(
+        update={"coupling_tolerance": tolerance})})
+
+
 def lame_bore_displacement(inner: float, outer: float, pressure: float, youngs: float,
                            poisson: float) -> float:
     """Plane-stress Lamé ring, outer radius held, inner pressure: u_r(inner) [m].

@@ -22,6 +22,7 @@ from elastic_helpers import (
     solved_step,
     step_jacobian_and_residual,
     step_request,
+    tight_coupling,
 )
 
 
@@ -61,9 +62,7 @@ def test_stiff_limit_gives_the_rigid_shell_asperity_force(eccentricity):
     ~0.1 µm, so the comparison is made where only the asperities load the bore. The
     deformation at × 1e5, 5e-12 m, is the default coupling tolerance (1e-7 c): the
     coupling is run to 1e-9 c here so that the deformation, not the tolerance, is seen."""
-    case = _mixed(kamaz_case(n_theta=144, n_z=4, film="reynolds"))
-    case = case.model_copy(update={"housing": case.housing.model_copy(
-        update={"coupling_tolerance": 1e-9})})
+    case = tight_coupling(_mixed(kamaz_case(n_theta=144, n_z=4, film="reynolds")))
     housing = Housing.from_case(case)
     deviations = []
     for factor in (1e4, 1e5):

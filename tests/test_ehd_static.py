@@ -14,7 +14,7 @@ from conrod.ehd.film import ElasticFilm
 from conrod.film.base import FilmState
 from conrod.housing.housing import Housing
 from conrod.simulation.simulation import Simulation
-from elastic_helpers import EXAMPLES, kamaz_case
+from elastic_helpers import EXAMPLES, kamaz_case, tight_coupling
 
 N_THETA, N_Z = 36, 8
 LOAD = 2_500.0  # [N] constant, pressing the journal towards θ = 200°
@@ -96,8 +96,7 @@ def test_coupling_converges_where_the_fixed_point_is_slow(case):
     under-relaxed fixed point, and a handful from the converged deformation of a nearby
     state (the orbit's warm start), each to the tight coupling tolerance of 1e-9 c (the
     rate of the iteration is what is measured; the default is 1e-7 c)."""
-    simulation = Simulation(case.model_copy(update={"housing": case.housing.model_copy(
-        update={"coupling_tolerance": 1e-9})}))
+    simulation = Simulation(tight_coupling(case))
     film = simulation.film_model()
     loads, mu = simulation.load_cycle(), simulation.problem().viscosity
     c = film.geometry.radial_clearance
