@@ -93,9 +93,9 @@ def test_a_housing_is_refused_until_the_elastic_coupling_exists(case):
         Simulation(case, housing=object())
 
 
-def test_a_run_computes_on_one_blas_thread_and_gives_the_pool_back(case, monkeypatch):
-    """A program that loaded NumPy first keeps its BLAS pool; the run limits it to one
-    thread while it computes (its dense algebra is small) and restores it afterwards."""
+def _blas_threads_seen(case, monkeypatch, method: str) -> list[int]:
+    """The BLAS threads seen while ``Simulation(case).<method>()`` computes the cycle's
+    characteristics, started from a pool of two, which must be back afterwards."""
     seen = []
     original = simulation_module.cycle_characteristics
 
@@ -105,8 +105,15 @@ def test_a_run_computes_on_one_blas_thread_and_gives_the_pool_back(case, monkeyp
 
     monkeypatch.setattr(simulation_module, "cycle_characteristics", watched)
     with two_blas_threads():
-        Simulation(case, **QUICK).run()
+        getattr(Simulation(case, **QUICK), method)()
         assert blas_threads() == 2
+    return seen
+
+
+def test_a_run_computes_on_one_blas_thread_and_gives_the_pool_back(case, monkeypatch):
+    """A program that loaded NumPy first keeps its BLAS pool; the run limits it to one
+    thread while it computes (its dense algebra is small) and restores it afterwards."""
+    seen = _blas_threads_seen(case, monkeypatch, "run")
     assert seen and set(seen) == {1}
 
 
@@ -116,15 +123,5 @@ def test_the_orbit_alone_computes_on_one_blas_thread_too(case, monkeypatch):
     BLAS thread as ``run`` does: on the threads' pool its spinning threads took the core of
     the process drawing the figures, and the orbit's bits could depend on which process
     computed it."""
-    seen = []
-    original = simulation_module.cycle_characteristics
-
-    def watched(problem, trajectory):
-        seen.append(blas_threads())
-        return original(problem, trajectory)
-
-    monkeypatch.setattr(simulation_module, "cycle_characteristics", watched)
-    with two_blas_threads():
-        Simulation(case, **QUICK).run_orbit()
-        assert blas_threads() == 2
+    seen = _blas_threads_seen(case, monkeypatch, "run_orbit")
     assert seen and set(seen) == {1}
