@@ -158,7 +158,7 @@ def bore_loads(weights: Any, pressure: np.ndarray) -> np.ndarray:
     :func:`bore_force_weights`: f_j = Σ_k W_jk p_jk per row, f_jk = w_jk p_jk per node."""
     if weights.ndim == 1:
         return weights * pressure.ravel()
-    return np.sum(weights * pressure, axis=1)
+    return (weights * pressure).sum(axis=1)
 
 
 def film_node_angles(film) -> np.ndarray:
@@ -270,7 +270,7 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
             answered=(answer_key(outcome.payload.state), inner.pressure),
             iterations=outcome.solves, updates=outcome.updates, residual=outcome.residual,
             increment=outcome.increment,
-            deformation_rate=float(np.max(np.abs(outcome.own - memory.deformation)))
+            deformation_rate=float(np.abs(outcome.own - memory.deformation).max())
             / request.dt)
         velocity = np.asarray(outcome.velocity, dtype=float)
         return dataclasses.replace(after, acceleration=(velocity - request.velocity_reference)
@@ -377,7 +377,7 @@ def content_step_system(film, request: StepRequest) -> BoreSystem:
             memory, inner=outcome.payload[1], deformation=outcome.own, crank_angle=angle,
             elapsed=elapsed, iterations=outcome.solves, updates=outcome.updates,
             residual=outcome.residual, increment=outcome.increment,
-            deformation_rate=float(np.max(np.abs(outcome.own - memory.deformation))) / dt,
+            deformation_rate=float(np.abs(outcome.own - memory.deformation).max()) / dt,
             reference=memory.deformation, reference_dt=dt)
 
     start = (start_deformation(memory, None, previous) if share > 0.0

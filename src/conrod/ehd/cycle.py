@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from conrod.film.capabilities import accepted_film
+from conrod.film.capabilities import HasAcceptedAnswer, accepted_film
 
 
 @dataclass(frozen=True)
@@ -91,9 +91,11 @@ def elastic_cycle(problem, cycle, film_memory: list, massless: bool,
     peak = int(np.argmax(np.hypot(cycle.load_x, cycle.load_y)))
     wanted = {peak, *pressure_rows}
     pressures = {}
+    answers = isinstance(film, HasAcceptedAnswer)  # asked once for all rows
     for i, memory in enumerate(film_memory):
         state = problem.row_state(cycle, i)
-        result, after = accepted_film(film, state, memory, with_pressure=i in wanted)
+        result, after = accepted_film(film, state, memory, with_pressure=i in wanted,
+                                      answers=answers)
         if i in wanted:
             pressures[i] = result.pressure
         force[i] = result.force_x, result.force_y
@@ -125,8 +127,9 @@ def asperity_forces(problem, cycle, film_memory: list) -> np.ndarray:
     none)."""
     film = problem.film
     forces = np.zeros(len(cycle.crank_angle))
+    answers = isinstance(film, HasAcceptedAnswer)
     for i, memory in enumerate(film_memory):
-        result, _ = accepted_film(film, problem.row_state(cycle, i), memory)
+        result, _ = accepted_film(film, problem.row_state(cycle, i), memory, answers=answers)
         forces[i] = float(result.extra.get("asperity_force_N", 0.0))
     return forces
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 from typing import Any
 
 from conrod.film.base import FilmModel, FilmResult, FilmState
-from conrod.film.capabilities import HasMemory, accepted_film
+from conrod.film.capabilities import HasAcceptedAnswer, HasMemory, accepted_film
 
 
 class FilmSession:
@@ -27,6 +27,7 @@ class FilmSession:
     def __init__(self, film: FilmModel, memory: Any = None):
         self.film: Any = film
         self.has_memory = isinstance(film, HasMemory)
+        self.answers = isinstance(film, HasAcceptedAnswer)  # asked once (accepted_film)
         if isinstance(film, HasMemory) and memory is None:
             memory = film.initial_memory()
         self.memory = memory if self.has_memory else None
@@ -53,7 +54,7 @@ class FilmSession:
         if not self.has_memory:
             return self.film.solve(state, with_pressure=with_pressure)
         result, self.memory = accepted_film(self.film, state, self.memory,
-                                            with_pressure=with_pressure)
+                                            with_pressure=with_pressure, answers=self.answers)
         return result
 
     def advance(self, state: FilmState, dt: float) -> None:

@@ -337,7 +337,7 @@ class PressureEvaluation:
     def resultant(self, pressure: np.ndarray) -> np.ndarray:
         """Force of ``pressure`` [Pa] on the journal, −Σ p (w_x, w_y) (2,) [N]."""
         w_x, w_y = self.film.force_weights
-        return -np.array([np.sum(pressure * w_x), np.sum(pressure * w_y)])
+        return -np.array([(pressure * w_x).sum(), (pressure * w_y).sum()])
 
     def min_film_thickness(self) -> float:
         """Smallest nodal film thickness [m]."""
