@@ -101,3 +101,14 @@ def test_non_periodic_orbit_is_reported_not_hidden(runner, tmp_path):
     assert "not converged" in result.output
     summary = json.loads((tmp_path / "summary.json").read_text())
     assert summary["periodic"] is False and summary["warnings"]
+
+
+def test_registering_the_commands_again_adds_none(runner):
+    """A second registration (every test that invokes the app registers first) leaves one
+    command per name: typer builds each registered command whenever the app runs."""
+    before = len(app.registered_commands)
+    _register_commands()
+    _register_commands()
+    names = [info.name or info.callback.__name__ for info in app.registered_commands]
+    assert len(app.registered_commands) == before
+    assert len(names) == len(set(names)), sorted(names)
