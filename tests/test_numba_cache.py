@@ -169,6 +169,36 @@ def test_the_multigrid_kernels_compile_one_specialisation_each(tmp_path):
     assert counts == {"_fold": 1, "_descend": 1, "gauss_seidel": 1, "stencil": 1}
 
 
+def test_the_compiled_flights_have_one_signature_whatever_the_film_carries():
+    """The params of the compiled flight (and of the tilted one) have one numba type for a
+    cylindrical bore, a tapered one (not mid-plane symmetric: the film's read-only profile on
+    the full grid) and a viscosity field varying along z: the film's read-only fields enter
+    as writable copies (a read-only array is typed apart, and the orbit's whole compiled
+    flight, 40–100 s of numba, was compiled once more for it)."""
+    import numba
+    import numpy as np
+
+    from conrod.film.base import BearingGeometry
+    from conrod.film.profile import BoreProfile
+    from conrod.film.reynolds.film import ReynoldsFilm
+
+    def film(profile=None):
+        return ReynoldsFilm(BearingGeometry(diameter=0.05, width=0.02, radial_clearance=25e-6,
+                                            profile=profile), 24, 8)
+
+    plain = film()
+    shape = plain.deformation_shape()
+    graded = plain.with_viscosity_field(np.tile(np.linspace(0.01, 0.02, shape[1]),
+                                                (shape[0], 1)))
+    films = (plain, film(BoreProfile(taper=4e-6)), graded)
+    assert not films[1].symmetric and not graded.symmetric
+    assert not films[1].profile.flags.writeable and not graded.viscosity_field.flags.writeable
+    for kernel in ("flight_kernel", "tilt_flight_kernel"):
+        kernels = [getattr(f, kernel)(None, 1e-10) for f in films]
+        types = {str(numba.typeof(k.params)) for k in kernels if k is not None}
+        assert len(types) == 1, (kernel, types)
+
+
 LOAD_AND_COUNT = """
 from conrod.film.short.kernel import sommerfeld_angle
 

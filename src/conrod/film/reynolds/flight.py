@@ -120,8 +120,8 @@ def flight_kernel(film, memory, newton_tolerance: float) -> FlightKernel | None:
                                                        film.tolerance))])
     profile, profile_source = profile_arrays(film, grid)
     viscosity_field = (np.zeros((0, 0)) if film.viscosity_field is None else  # μ(θ, z) [Pa s]
-                       np.ascontiguousarray(half_rows(film.viscosity_field, None)
-                                            if grid.symmetric else film.viscosity_field))
+                       kernel_array(half_rows(film.viscosity_field, None)
+                                    if grid.symmetric else film.viscosity_field))
     params = (np.ascontiguousarray(field), grid.fixed, grid.source_x, grid.source_y,
               grid.weight_x, grid.weight_y, grid.cos_t, grid.sin_t, radius, d_theta, d_z,
               clearance, grid.n_coarse, grid.symmetric, float(g.cavitation_pressure),
@@ -148,8 +148,15 @@ def profile_arrays(film, grid) -> tuple[np.ndarray, np.ndarray]:
                                                  - np.roll(profile, 1, axis=0))
     if grid.symmetric:
         profile, source = half_rows(profile, None), half_rows(source, 0.0)
-    return (np.ascontiguousarray(profile, dtype=float),
-            np.ascontiguousarray(source * ~grid.fixed))
+    return kernel_array(profile), kernel_array(source * ~grid.fixed)
+
+
+def kernel_array(values: np.ndarray) -> np.ndarray:
+    """A writable C-contiguous float copy of ``values`` for a flight kernel's params. The
+    film keeps its fields read-only, and numba types a read-only array apart from a writable
+    one: a film's own field passed as it is gave the compiled orbit a second signature,
+    compiled again whole (40–100 s of numba for the Reynolds flight, twice that tilted)."""
+    return np.array(values, dtype=float, order="C")
 
 
 def _supply_nodes(film, grid) -> np.ndarray:
