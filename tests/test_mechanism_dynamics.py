@@ -285,3 +285,29 @@ def test_exact_contact_geometry_conserves_energy_on_worn_elliptical_shells():
     assert run.impacts.velocity.size > 10
     # measured 1.1e-7; without the moment of the off-centre normal force it is 1.4e-4
     assert run.summary()["energy_residual_relative"] < 1e-6
+
+
+
+def test_compiled_callers_pass_the_joint_blocks_as_int64_not_as_literals():
+    """numba types a global int passed from compiled code as a literal and compiles the
+    callee for each literal, besides the int64 of the Python callers (a cold worn-joint run
+    compiled ``joint_loads``, ``joint_kinematics`` and ``_exact_loads`` three times each:
+    26.0–28.2 → 22.2–22.8 s with one): no call in the compiled kernels passes ``BIG_END``
+    or ``SMALL_END`` bare. Checked in the source, because a kernel loaded from numba's disk
+    cache does not list the signatures of the callees linked into it."""
+    import ast
+    import inspect
+
+    from conrod.mechanism import kernel as k
+
+    tree = ast.parse(inspect.getsource(k))
+    bare = [(node.func.id if isinstance(node.func, ast.Name) else ast.unparse(node.func),
+             node.lineno)
+            for node in ast.walk(tree)
+            if isinstance(node, ast.Call) and ast.unparse(node.func) != "np.int64"
+            for argument in node.args
+            if isinstance(argument, ast.Name) and argument.id in ("BIG_END", "SMALL_END")]
+    calls = [node for node in ast.walk(tree) if isinstance(node, ast.Call)
+             and any(isinstance(a, ast.Call) and ast.unparse(a).startswith("np.int64(")
+                     for a in node.args)]
+    assert bare == [] and len(calls) == 8

@@ -55,7 +55,11 @@ from conrod.mechanism.geometry import (
 CRANK_RADIUS, ROD_LENGTH, ROD_CG, ROD_MASS, ROD_INERTIA, PISTON_MASS = 0, 1, 2, 3, 4, 5
 CRANK_SPEED, FRICTION_VELOCITY = 6, 7
 BIG_END, SMALL_END = 8, 18
-"""Offsets of the two joint blocks."""
+"""Offsets of the two joint blocks. The compiled callers pass them as ``np.int64(...)``: a
+global int is a literal to numba, and a joint function called with the literals 8 and 18
+from compiled code and with an int64 from Python compiled three times (a cold worn-joint
+run: ``joint_loads`` 8.1 s, ``_exact_loads`` 4.2 s, ``joint_kinematics`` 2.9 s of compiling,
+where one signature each takes about half)."""
 (DIAMETER, MINOR, ECC_SQ, ELLIPSE_ANGLE, STIFFNESS, EXPONENT, DAMPING, FRICTION, MAJOR,
  GEOMETRY) = range(10)
 """Entries of a joint block (GEOMETRY: 0 radial penetration of [D3], 1 exact contact)."""
@@ -217,9 +221,9 @@ def mechanism_rhs(alpha: float, y: np.ndarray, p: np.ndarray, table: np.ndarray)
     c, s = math.cos(phi), math.sin(phi)
     cg, arm = p[ROD_CG], p[ROD_LENGTH] - p[ROD_CG]
     bx, by, bvx, bvy = big_end_relative(y, alpha, p)
-    big = joint_loads(bx, by, bvx, bvy, phi, phi_rate, 1.0, p, BIG_END)
+    big = joint_loads(bx, by, bvx, bvy, phi, phi_rate, 1.0, p, np.int64(BIG_END))
     sx, sy, svx, svy = small_end_relative(y, p)
-    small = joint_loads(sx, sy, svx, svy, phi, phi_rate, 0.0, p, SMALL_END)
+    small = joint_loads(sx, sy, svx, svy, phi, phi_rate, 0.0, p, np.int64(SMALL_END))
     pressure_force = gas_force(alpha, table)
     moment = (cg * (c * big[FY] - s * big[FX]) + big[MOMENT]
               - arm * (c * small[FY] - s * small[FX]) + small[MOMENT])
@@ -259,7 +263,8 @@ def penetrations(y: np.ndarray, alpha: float, p: np.ndarray) -> tuple:
     """Penetrations (δ_big, δ_small) [m] at state ``y`` (> 0: contact)."""
     bx, by, _, _ = big_end_relative(y, alpha, p)
     sx, sy, _, _ = small_end_relative(y, p)
-    return joint_depth(bx, by, y[4], p, BIG_END), joint_depth(sx, sy, y[4], p, SMALL_END)
+    return (joint_depth(bx, by, y[4], p, np.int64(BIG_END)),
+            joint_depth(sx, sy, y[4], p, np.int64(SMALL_END)))
 
 
 @njit(cache=True)
@@ -268,8 +273,8 @@ def penetration_rates(y: np.ndarray, alpha: float, p: np.ndarray) -> tuple:
     omega = p[CRANK_SPEED]
     bx, by, bvx, bvy = big_end_relative(y, alpha, p)
     sx, sy, svx, svy = small_end_relative(y, p)
-    big = joint_kinematics(bx, by, bvx, bvy, y[4], y[5], p, BIG_END)[4]
-    small = joint_kinematics(sx, sy, svx, svy, y[4], y[5], p, SMALL_END)[4]
+    big = joint_kinematics(bx, by, bvx, bvy, y[4], y[5], p, np.int64(BIG_END))[4]
+    small = joint_kinematics(sx, sy, svx, svy, y[4], y[5], p, np.int64(SMALL_END))[4]
     return omega * big, omega * small
 
 
@@ -282,8 +287,8 @@ def mechanical_energy(y: np.ndarray, alpha: float, p: np.ndarray) -> float:
         + p[PISTON_MASS] * y[7] ** 2)
     bx, by, _, _ = big_end_relative(y, alpha, p)
     sx, sy, _, _ = small_end_relative(y, p)
-    return (kinetic + _elastic_energy(bx, by, y[4], p, BIG_END)
-            + _elastic_energy(sx, sy, y[4], p, SMALL_END))
+    return (kinetic + _elastic_energy(bx, by, y[4], p, np.int64(BIG_END))
+            + _elastic_energy(sx, sy, y[4], p, np.int64(SMALL_END)))
 
 
 @njit(cache=True)
