@@ -242,3 +242,27 @@ def test_a_copy_with_new_times_loads_the_kernels_compiled_beside_its_sources(tmp
     edited = installed / "conrod" / "units.py"  # another module of the package changed
     edited.write_text(edited.read_text() + "\n# edited\n")
     assert _hits_and_misses(installed) == (0, 1)
+
+
+def test_no_layer_of_the_compiled_flights_compiles_the_film_twice():
+    """numba links every compiled callee into its caller's library and LLVM optimises it
+    there again, so each layer between the segment and the film's multigrid costs a
+    compile of all the code below it (``conrod.orbit.tilt_flight.tilt_segment``): the
+    tilted segment inlines its right-hand side and Jacobian (its film's force and Jacobian
+    are the compiled functions), the aligned segment calls a right-hand side into which
+    the film's force is inlined (inlining both copies the force into each of the segment's
+    calls)."""
+    from conrod.film.reynolds.flight import reynolds_force, reynolds_jacobian
+    from conrod.film.reynolds.tilt_flight import reynolds_tilt_force, reynolds_tilt_jacobian
+    from conrod.orbit.compiled_flight import flight_segment
+    from conrod.orbit.tilt_flight import tilt_segment
+
+    def inlined(function) -> bool:
+        return function.targetoptions.get("inline") == "always"
+
+    tilted = tilt_segment(reynolds_tilt_force, reynolds_tilt_jacobian).py_func.__globals__
+    assert inlined(tilted["rhs"]) and inlined(tilted["jacobian"])
+    assert not inlined(reynolds_tilt_force) and not inlined(reynolds_tilt_jacobian)
+    aligned = flight_segment(reynolds_force, reynolds_jacobian).py_func.__globals__
+    assert not inlined(aligned["rhs"]) and not inlined(aligned["jacobian"])
+    assert inlined(reynolds_force) and inlined(reynolds_jacobian)
