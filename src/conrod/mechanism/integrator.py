@@ -110,6 +110,15 @@ def _error_norm(error, scale):
 
 
 @njit(cache=True)
+def _store_row(out, row, values):
+    """out[row] = values, element by element: numba compiles a row assigned whole with its
+    shape check and error message (3.6 s of a cold worn-joint run, 6.1 s with its string
+    formatting)."""
+    for k in range(values.size):
+        out[row, k] = values[k]
+
+
+@njit(cache=True)
 def integrate(y0, alpha0, alpha_end, p, table, scale, h_first, h_max, adaptive,
               out_alpha, separation, max_steps, max_impacts):
     """Integrate from ``alpha0`` to ``alpha_end`` [rad]; sample at ``out_alpha`` (sorted).
@@ -173,12 +182,12 @@ def integrate(y0, alpha0, alpha_end, p, table, scale, h_first, h_max, adaptive,
                 armed[joint] = True
         while next_out < out_alpha.shape[0] and out_alpha[next_out] <= alpha + h:
             s = (out_alpha[next_out] - alpha) / h
-            out_y[next_out] = hermite(y, f, y_new, f_new, h, s)
+            _store_row(out_y, next_out, hermite(y, f, y_new, f_new, h, s))
             next_out += 1
         alpha, y, f, depth = alpha + h, y_new, f_new, new_depth
         if adaptive:
             h *= min(5.0, max(0.2, 0.9 * max(err, 1e-10) ** -0.2))
     while next_out < out_alpha.shape[0] and out_alpha[next_out] <= alpha + 1e-9:
-        out_y[next_out] = y  # last sample on the end point despite round-off
+        _store_row(out_y, next_out, y)  # last sample on the end point despite round-off
         next_out += 1
     return out_y, impacts, n_impacts, n_steps, n_rejected, status, alpha
