@@ -16,21 +16,19 @@ pressure is too sensitive to the interpolated velocity.
 
 from __future__ import annotations
 
-import functools
 import math
 
-import numba as nb
 import numpy as np
 
 from conrod.errors import ConvergenceError
 from conrod.io.interrupts import raise_if_interrupted
+from conrod.orbit.compiled_flight import flight_rhs
 from conrod.orbit.contact import contact_acceleration, contact_normal_force
 from conrod.orbit.problem import (
     OrbitProblem,
     OrbitState,
     load_table,
     periodic_sample,
-    scaled_free_rhs,
 )
 from conrod.orbit.trajectory import CycleTrajectory
 
@@ -42,48 +40,21 @@ MAX_PHASE_CHANGES = 5000
 
 
 def compiled_free_rhs(force, params):
-    """Compiled free-phase right-hand side du/dφ(φ, u, angles, table, cycle, μ, c, ω, m_x,
-    m_y) for a film with the compiled ``force`` and its ``params`` (same as
-    :meth:`Phases.free_rhs`): u = (x/c, y/c, v_x/(cω), v_y/(cω)). Specialised per force
-    function, and per parameter values when they are hashable (frozen into the code): a
-    function- or tuple-typed argument would add microseconds of dispatch to each of the
-    thousands of calls per cycle from solve_ivp."""
-    try:
-        return _frozen_rhs(force, params)
-    except TypeError:  # parameters holding arrays: passed on each call
-        rhs = _rhs_with_params(force)
-        return lambda *args: rhs(params, *args)
+    """Compiled free-phase right-hand side du/dφ(φ, u, data) for a film with the compiled
+    ``force`` and its ``params`` (same as :meth:`Phases.free_rhs`): u = (x/c, y/c,
+    v_x/(cω), v_y/(cω)), data = (angles, table, cycle, μ, c, ω, m_x, m_y). The compiled
+    flight's right-hand side (:func:`conrod.orbit.compiled_flight.flight_rhs`), compiled once
+    per force function and loaded from numba's disk cache by the next process. (It was
+    compiled per process and per parameter values, frozen into the code to save the
+    dispatch of a tuple argument: 1.0–1.9 s of compiling in every warm run of
+    ``examples/ruston_hornsby_6vebx_mk3.toml``, for 0.4 µs per call saved over its 26 660
+    calls.)"""
+    rhs = flight_rhs(force)
 
-
-@functools.cache
-def _frozen_rhs(force, params):
-    @nb.njit
-    def free_rhs(phi, u, angles, table, cycle, viscosity, clearance, omega, mass_x, mass_y):
-        return _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance,
-                         omega, mass_x, mass_y)
+    def free_rhs(phi, u, data):
+        return rhs(phi, u, params, data)
 
     return free_rhs
-
-
-@functools.cache
-def _rhs_with_params(force):
-    @nb.njit
-    def free_rhs(params, phi, u, angles, table, cycle, viscosity, clearance, omega, mass_x,
-                 mass_y):
-        return _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance,
-                         omega, mass_x, mass_y)
-
-    return free_rhs
-
-
-@nb.njit
-def _free_rhs(force, params, phi, u, angles, table, cycle, viscosity, clearance, omega,
-              mass_x, mass_y):
-    row = periodic_sample(phi, angles, table, cycle)
-    c_omega = clearance * omega
-    fx, fy = force(u[0] * clearance, u[1] * clearance, u[2] * c_omega, u[3] * c_omega,
-                   row[2] + row[3], viscosity, params)
-    return scaled_free_rhs(u, row, fx, fy, c_omega, omega, mass_x, mass_y)
 
 
 class Phases:
@@ -113,11 +84,10 @@ class Phases:
 
     def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:
         if self.compiled_rhs is not None:
-            return self.compiled_rhs(
-                float(phi), np.asarray(u, dtype=float),
-                self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),
-                self.c, float(self.omega), float(self.p.mass_x), float(self.p.mass_y),
-            )
+            return self.compiled_rhs(  # contiguous: SciPy's views of u compiled it again
+                float(phi), np.ascontiguousarray(u, dtype=float),
+                (self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),
+                 self.c, float(self.omega), float(self.p.mass_x), float(self.p.mass_y)))
         c, w = self.c, self.omega
         x, y, vx, vy = u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w
         big_x, big_y, _ = self.forces(phi, x, y, vx, vy)

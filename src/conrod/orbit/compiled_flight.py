@@ -80,12 +80,23 @@ def flight_segment(film_force, film_force_jacobian=None):
                                        or is_global(film_force_jacobian))
     name = stable_name(film_force) + ("" if film_force_jacobian is None else "_with_jacobian")
     jit = nb.njit(cache=True) if cache else nb.njit
-    rhs = jit(bind_globals(_rhs, f"{name}_rhs", {"force": film_force}))
+    rhs = flight_rhs(film_force)
     jacobian = None
     if film_force_jacobian is not None:
         jacobian = jit(bind_globals(_jacobian, f"{name}_jacobian",
                              {"film_jacobian": film_force_jacobian}))
     return specialise(name, rhs, jacobian, compiled=True, cache=cache)
+
+
+@functools.cache
+def flight_rhs(film_force):
+    """du/dφ(φ, u, params, data) [-] of the journal under the load and the compiled film
+    ``force`` (module docstring), compiled once per force and disk-cached for a module-level
+    numba function: the right-hand side of the compiled flight's segment and of the
+    ``adaptive`` integrator's compiled free phase
+    (:func:`conrod.orbit.adaptive.compiled_free_rhs`)."""
+    jit = nb.njit(cache=True) if is_global(film_force) else nb.njit
+    return jit(bind_globals(_rhs, f"{stable_name(film_force)}_rhs", {"force": film_force}))
 
 
 def is_global(function) -> bool:
