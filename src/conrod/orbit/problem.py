@@ -13,7 +13,6 @@ to the journal, hence its R − P signs.
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
@@ -204,20 +203,9 @@ class OrbitProblem:
 
 def bound_force(force, params):
     """``force(x, y, v_x, v_y, ω_j + ω_b, μ)`` [N] of a compiled kernel with its ``params``
-    frozen into the code when they are hashable (no tuple dispatch on each Python call)."""
-    try:
-        return _frozen_force(force, params)
-    except TypeError:  # parameters holding arrays
-        return lambda x, y, vx, vy, omega_sum, mu: force(x, y, vx, vy, omega_sum, mu, params)
-
-
-@functools.cache
-def _frozen_force(force, params):
-    @nb.njit
-    def bound(x, y, vx, vy, omega_sum, viscosity):
-        return force(x, y, vx, vy, omega_sum, viscosity, params)
-
-    return bound
+    (the kernel itself, disk-cached, called with them: the params frozen into a closure
+    compiled in every process, 0.1 s a run, saved 0.4 µs of a tuple's dispatch a call)."""
+    return lambda x, y, vx, vy, omega_sum, mu: force(x, y, vx, vy, omega_sum, mu, params)
 
 
 def _with_asperity(film_force: ForceFunction, clearance: float, params) -> ForceFunction:

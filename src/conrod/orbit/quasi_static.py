@@ -16,8 +16,10 @@ contact model) and the unbalanced normal force is reported as the contact force.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
+import numba as nb
 import numpy as np
 
 from conrod.errors import ConvergenceError
@@ -34,11 +36,13 @@ from conrod.film.massless import (
     newton_cycle,
     newton_velocity,
 )
+from conrod.orbit.compiled_flight import is_global, stable_name
 from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
 from conrod.orbit.implicit_step import implicit_step_cycle as content_cycle
 from conrod.orbit.memory import FilmSession
 from conrod.orbit.problem import OrbitProblem, OrbitState, step_grid
 from conrod.orbit.progress import AngleReports
+from conrod.orbit.tr_bdf2 import bind_globals
 from conrod.orbit.trajectory import CycleTrajectory
 
 
@@ -299,9 +303,10 @@ def _compiled(problem: OrbitProblem, kernel: CompiledKernel, request: QuasiStati
     sampled = [a[::every][:n_out] for a in (request.load_x, request.load_y,
                                             request.journal_speed, request.shell_speed)]
     if kernel.force is not None:
-        contact_forces(kernel.force, kernel.params, table, sampled[0], sampled[1],
-                                 sampled[2] + sampled[3], problem.viscosity,
-                                 problem.dry_friction)
+        load_x, load_y = (np.ascontiguousarray(a) for a in sampled[:2])  # one signature
+        bound_contact_forces(kernel.force)(kernel.params, table, load_x, load_y,
+                                           sampled[2] + sampled[3], problem.viscosity,
+                                           problem.dry_friction)
     else:
         _contact_forces(problem, table, *sampled)
     end_state = OrbitState(end[0], end[1], end[2], end[3], False)
@@ -397,6 +402,16 @@ def _inward_only(x: float, y: float, vx: float, vy: float) -> tuple[float, float
     if x * vx + y * vy > 0.0:
         return remove_normal_velocity(x, y, vx, vy)
     return vx, vy
+
+
+@functools.cache
+def bound_contact_forces(film_force):
+    """:func:`conrod.film.massless.contact_forces` compiled with ``film_force`` bound as its
+    global ``force``: disk-cached for a module-level numba function
+    (:func:`conrod.orbit.compiled_flight.is_global`)."""
+    jit = nb.njit(cache=True) if is_global(film_force) else nb.njit
+    return jit(bind_globals(contact_forces, f"{stable_name(film_force)}_contact_forces",
+                            {"force": film_force}))
 
 
 def _contact_forces(problem, table, load_x, load_y, wj, wb, angles=None) -> None:
