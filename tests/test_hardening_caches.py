@@ -34,7 +34,8 @@ def test_a_truncated_numba_cache_file_is_discarded_and_compiled_again(tmp_path):
     first = _run(case, tmp_path / "first", NUMBA_CACHE_DIR=str(cache))
     assert first.returncode == 0, first.stderr
     assert _warnings(first.stderr) == []
-    data = sorted(cache.rglob("film.kernel_force-*.nbc"))  # film/short/film.py
+    # two kernels the run calls itself (a callee linked into a cached caller is not read)
+    data = sorted(cache.rglob("massless.*_contact_forces-*.nbc"))  # film/massless.py
     index = sorted(cache.rglob("velocity.short_bearing_cycle-*.nbi"))  # film/short/
     assert len(data) == 1 and len(index) == 1
     data[0].write_bytes(data[0].read_bytes()[:100])  # a data file cut short
