@@ -39,10 +39,10 @@ MAX_PHASE_CHANGES = 5000
 """Most contact entries + exits per cycle before giving up (chattering) [-]."""
 
 
-def compiled_free_rhs(force, params):
-    """Compiled free-phase right-hand side du/dφ(φ, u, data) for a film with the compiled
+def compiled_free_rhs(force, params, data):
+    """Compiled free-phase right-hand side du/dφ(φ, u) for a film with the compiled
     ``force`` and its ``params`` (same as :meth:`Phases.free_rhs`): u = (x/c, y/c,
-    v_x/(cω), v_y/(cω)), data = (angles, table, cycle, μ, c, ω, m_x, m_y). The compiled
+    v_x/(cω), v_y/(cω)), ``data`` = (angles, table, cycle, μ, c, ω, m_x, m_y). The compiled
     flight's right-hand side (:func:`conrod.orbit.compiled_flight.flight_rhs`), compiled once
     per force function and loaded from numba's disk cache by the next process. (It was
     compiled per process and per parameter values, frozen into the code to save the
@@ -51,7 +51,7 @@ def compiled_free_rhs(force, params):
     calls.)"""
     rhs = flight_rhs(force)
 
-    def free_rhs(phi, u, data):
+    def free_rhs(phi, u):
         return rhs(phi, u, params, data)
 
     return free_rhs
@@ -65,14 +65,16 @@ class Phases:
         self.session = problem.session(state.film_memory)
         self.force = problem.force_function(self.session)
         self.kernel = problem.compiled_force
-        self.compiled_rhs = (compiled_free_rhs(self.kernel.force, self.kernel.params)
-                             if self.kernel is not None else None)
         self.c = problem.clearance
         self.rc = problem.contact_radius
         self.omega = problem.crank_speed
         self.radius = problem.film.geometry.radius
         self.loads = problem.loads
         self.angles, self.table = load_table(problem.loads)
+        self.compiled_rhs = None if self.kernel is None else compiled_free_rhs(
+            self.kernel.force, self.kernel.params,
+            (self.angles, self.table, float(self.loads.cycle), float(problem.viscosity),
+             self.c, float(self.omega), float(problem.mass_x), float(problem.mass_y)))
         peak = np.max(np.hypot(problem.loads.load_x, problem.loads.load_y))
         self.force_scale = float(peak) + 1.0
 
@@ -84,10 +86,8 @@ class Phases:
 
     def free_rhs(self, phi: float, u: np.ndarray) -> np.ndarray:
         if self.compiled_rhs is not None:
-            return self.compiled_rhs(  # contiguous: SciPy's views of u compiled it again
-                float(phi), np.ascontiguousarray(u, dtype=float),
-                (self.angles, self.table, float(self.loads.cycle), float(self.p.viscosity),
-                 self.c, float(self.omega), float(self.p.mass_x), float(self.p.mass_y)))
+            # contiguous: SciPy's views of u compiled it again
+            return self.compiled_rhs(float(phi), np.ascontiguousarray(u, dtype=float))
         c, w = self.c, self.omega
         x, y, vx, vy = u[0] * c, u[1] * c, u[2] * c * w, u[3] * c * w
         big_x, big_y, _ = self.forces(phi, x, y, vx, vy)

@@ -95,8 +95,16 @@ def flight_rhs(film_force):
     numba function: the right-hand side of the compiled flight's segment and of the
     ``adaptive`` integrator's compiled free phase
     (:func:`conrod.orbit.adaptive.compiled_free_rhs`)."""
+    return bound_to_force(_rhs, film_force, "rhs")
+
+
+def bound_to_force(template, film_force, suffix: str):
+    """``template`` compiled with ``film_force`` bound as its global ``force``, named after
+    the force with ``suffix``; disk-cached for a module-level numba function
+    (:func:`is_global`), compiled per process otherwise."""
     jit = nb.njit(cache=True) if is_global(film_force) else nb.njit
-    return jit(bind_globals(_rhs, f"{stable_name(film_force)}_rhs", {"force": film_force}))
+    return jit(bind_globals(template, f"{stable_name(film_force)}_{suffix}",
+                            {"force": film_force}))
 
 
 def is_global(function) -> bool:

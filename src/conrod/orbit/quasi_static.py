@@ -19,7 +19,6 @@ import dataclasses
 import functools
 import math
 
-import numba as nb
 import numpy as np
 
 from conrod.errors import ConvergenceError
@@ -36,13 +35,12 @@ from conrod.film.massless import (
     newton_cycle,
     newton_velocity,
 )
-from conrod.orbit.compiled_flight import is_global, stable_name
+from conrod.orbit.compiled_flight import bound_to_force
 from conrod.orbit.contact import project_onto_circle, remove_normal_velocity
 from conrod.orbit.implicit_step import implicit_step_cycle as content_cycle
 from conrod.orbit.memory import FilmSession
 from conrod.orbit.problem import OrbitProblem, OrbitState, step_grid
 from conrod.orbit.progress import AngleReports
-from conrod.orbit.tr_bdf2 import bind_globals
 from conrod.orbit.trajectory import CycleTrajectory
 
 
@@ -407,11 +405,8 @@ def _inward_only(x: float, y: float, vx: float, vy: float) -> tuple[float, float
 @functools.cache
 def bound_contact_forces(film_force):
     """:func:`conrod.film.massless.contact_forces` compiled with ``film_force`` bound as its
-    global ``force``: disk-cached for a module-level numba function
-    (:func:`conrod.orbit.compiled_flight.is_global`)."""
-    jit = nb.njit(cache=True) if is_global(film_force) else nb.njit
-    return jit(bind_globals(contact_forces, f"{stable_name(film_force)}_contact_forces",
-                            {"force": film_force}))
+    global ``force`` (:func:`conrod.orbit.compiled_flight.bound_to_force`)."""
+    return bound_to_force(contact_forces, film_force, "contact_forces")
 
 
 def _contact_forces(problem, table, load_x, load_y, wj, wb, angles=None) -> None:
