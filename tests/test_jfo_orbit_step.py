@@ -129,3 +129,68 @@ def test_full_groove_bearing_with_the_default_integrator_finishes():
     result = periodic_orbit(problem, settings)
     assert result.periodic
     assert math.isfinite(result.periodicity_error)
+
+
+def _array_step(film, state, memory, dt, warm, previous):
+    """The content step written with whole arrays (what the compiled
+    :func:`~conrod.film.mass_conserving.kernel.content_step_sweep` does node by node):
+    content, capacity, start of the sweep, the sweep, the force."""
+    from conrod.film.mass_conserving.kernel import elrod_adams_step
+    from conrod.film.mass_conserving.memory import FULL
+    from conrod.film.mass_conserving.step import STEP_TOLERANCE, shifted_pressure_force
+
+    f = film.fields(state)
+    dx, dz = film.spacing()
+    cell = 12.0 * state.viscosity * dx * dz / dt
+
+    def held(values):
+        return np.where(f.free, np.clip(values, 0.0, 1.0), 1.0)
+
+    content = (cell * held(memory.fraction) * memory.thickness
+               if memory.thickness is not None
+               else held(memory.fraction) * (cell * f.h - f.squeeze))
+    if previous is not None:
+        capacity = 1.5 * cell * f.h
+        known = 2.0 * content - 0.5 * (cell * held(previous.fraction) * previous.thickness)
+    else:
+        capacity, known = cell * f.h, content
+    first = warm if warm is not None else memory
+    fraction = np.ascontiguousarray(held(first.fraction))
+    start = (first.pressure if first.pressure is not None
+             else np.full(f.h.shape, -film.geometry.cavitation_pressure))
+    pressure = np.where(f.free, start, f.fixed_pressure)
+    pressure = np.ascontiguousarray(np.where(f.free & (fraction < FULL), 0.0, pressure))
+    elrod_adams_step(pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east,
+                     capacity, np.ascontiguousarray(known), film.sor_factor,
+                     max(film.tolerance, STEP_TOLERANCE), film.max_iterations)
+    return (*shifted_pressure_force(film, pressure, state), fraction, pressure)
+
+
+@pytest.mark.parametrize("kind", ["backward_euler_from_a_fraction", "bdf2", "warm_trial"])
+def test_compiled_content_step_is_the_array_step_bit_for_bit(kind):
+    """The step's content, capacity and sweep start are computed node by node in one compiled
+    call; on a fed, partly ruptured film with fractions outside [0, 1] (clipped) it gives the
+    forces, ϑ and p̃ of the same step written with whole arrays, bit for bit."""
+    film = MassConservingFilm(fed_bearing(), n_theta=36, n_z=8)
+    rng = np.random.default_rng(7)
+    shape = film.deformation_shape()
+    state = FilmState(eccentricity_x=12e-6, eccentricity_y=-9e-6, velocity_x=0.02,
+                      velocity_y=-0.01, journal_speed=250.0, shell_speed=0.0, viscosity=MU)
+    fraction = rng.uniform(-0.2, 1.2, shape)
+    memory = MassConservingMemory(fraction)
+    warm = previous = None
+    if kind != "backward_euler_from_a_fraction":
+        h = film.fields(state).h
+        memory = MassConservingMemory(fraction, None, h * rng.uniform(0.9, 1.1, shape))
+        previous = MassConservingMemory(rng.uniform(-0.2, 1.2, shape), None,
+                                        h * rng.uniform(0.9, 1.1, shape))
+    if kind == "warm_trial":
+        warm = MassConservingMemory(rng.uniform(0.0, 1.0, shape),
+                                    rng.uniform(0.0, 2e6, shape))
+    fx, fy, after = film.content_step(state, memory, 2e-5, warm, previous)
+    ref_fx, ref_fy, ref_fraction, ref_pressure = _array_step(film, state, memory, 2e-5, warm,
+                                                             previous)
+    assert (fx, fy) == (ref_fx, ref_fy)
+    assert np.array_equal(after.fraction, ref_fraction)
+    assert np.array_equal(after.pressure, ref_pressure)
+    assert 0.0 < np.mean(after.fraction < 1.0) < 1.0  # partly ruptured: both branches taken

@@ -158,6 +158,79 @@ def elrod_adams_step(
 
 
 @nb.njit(cache=True)
+def _held(fraction: np.ndarray, i: int, j: int, held: bool) -> float:
+    """ϑ of ``fraction`` at (i, j) clipped to [0, 1], 1 on a Dirichlet node (``held``
+    False) or for an empty (0, 0) ``fraction`` (a full film) [-]."""
+    if not held or fraction.shape[0] == 0:
+        return 1.0
+    value = fraction[i, j]
+    if value < 0.0:
+        return 0.0
+    if value > 1.0:
+        return 1.0
+    return value
+
+
+@nb.njit(cache=True)
+def content_step_sweep(
+    edge: np.ndarray, supply: np.ndarray, fixed_pressure: np.ndarray, h: np.ndarray,
+    squeeze: np.ndarray, a_east: np.ndarray, a_north: np.ndarray, couette_east: np.ndarray,
+    cell: float, offset: float, full: float, fraction_n: np.ndarray, thickness_n: np.ndarray,
+    fraction_before: np.ndarray, thickness_before: np.ndarray, start_fraction: np.ndarray,
+    start_pressure: np.ndarray, omega: float, tolerance: float, max_iterations: int,
+) -> tuple[int, float, np.ndarray, np.ndarray]:
+    """The implicit content step of :mod:`conrod.film.mass_conserving.step` in one call: its
+    content S and capacity K (backward Euler, or BDF2 when ``thickness_before`` is given),
+    the start of the sweep, and :func:`elrod_adams_step`. Node by node the same arithmetic
+    as the array expressions it replaces (bit for bit).
+
+    cell : 12μΔxΔz/Δt [Pa s];  offset : p̃ of zero gauge pressure, −p_cav [Pa];
+    full : film fraction above which a node counts as full [-].
+    fraction_n, thickness_n : ϑ^n and h^n of the step's start [-, m]; an empty (0, 0)
+        thickness: h^n = h − Δt ∂h/∂t (the content is ϑ(cell h − squeeze)).
+    fraction_before, thickness_before : ϑ and h one step earlier, or empty: backward Euler.
+    start_fraction, start_pressure : the sweep's start (an earlier trial of the same step,
+        or the step's start); an empty pressure starts from ``offset``.
+    Returns (sweeps, relative change [-], p̃ [Pa], ϑ [-]).
+    """
+    n, m = h.shape
+    bdf2 = thickness_before.shape[0] > 0
+    capacity = np.empty((n, m))
+    known = np.empty((n, m))
+    fraction = np.empty((n, m))
+    pressure = np.empty((n, m))
+    for i in range(n):
+        for j in range(m):
+            free = not (edge[i, j] or supply[i, j])
+            held = _held(fraction_n, i, j, free)
+            if thickness_n.shape[0] > 0:
+                content = cell * held * thickness_n[i, j]
+            else:
+                content = held * (cell * h[i, j] - squeeze[i, j])
+            if bdf2:
+                capacity[i, j] = 1.5 * cell * h[i, j]
+                before = cell * _held(fraction_before, i, j, free) * thickness_before[i, j]
+                known[i, j] = 2.0 * content - 0.5 * before
+            else:
+                capacity[i, j] = cell * h[i, j]
+                known[i, j] = content
+            start = _held(start_fraction, i, j, free)
+            fraction[i, j] = start
+            if not free:
+                pressure[i, j] = fixed_pressure[i, j]
+            elif start < full:
+                pressure[i, j] = 0.0
+            elif start_pressure.shape[0] > 0:
+                pressure[i, j] = start_pressure[i, j]
+            else:
+                pressure[i, j] = offset
+    sweeps, change = elrod_adams_step(pressure, fraction, ~(edge | supply), a_east, a_north,
+                                      couette_east, capacity, known, omega, tolerance,
+                                      max_iterations)
+    return sweeps, change, pressure, fraction
+
+
+@nb.njit(cache=True)
 def cell_balance(
     pressure: np.ndarray, fraction: np.ndarray, free: np.ndarray, edge: np.ndarray,
     a_east: np.ndarray, a_north: np.ndarray, couette_east: np.ndarray, squeeze: np.ndarray,

@@ -36,8 +36,8 @@ import numpy as np
 
 from conrod.errors import ConvergenceError
 from conrod.film.base import FilmState
-from conrod.film.mass_conserving.kernel import elrod_adams_step
-from conrod.film.mass_conserving.memory import MassConservingMemory
+from conrod.film.mass_conserving.kernel import content_step_sweep
+from conrod.film.mass_conserving.memory import FULL, MassConservingMemory
 from conrod.film.mass_conserving.results import axial_weights
 
 STEP_TOLERANCE = 1.0e-10
@@ -72,21 +72,16 @@ def content_step(
     f = film.fields(state)
     dx, dz = film.spacing()
     cell = 12.0 * state.viscosity * dx * dz / dt
-    content = _content(film, f, memory, cell, dt)
     bdf2 = (previous is not None and memory.thickness is not None
             and previous.thickness is not None)
-    if bdf2:
-        capacity = 1.5 * cell * f.h
-        known = 2.0 * content - 0.5 * _content(film, f, previous, cell, dt)
-    else:
-        capacity, known = cell * f.h, content
     first = warm if warm is not None else memory
-    fraction = np.ascontiguousarray(film.fraction_field(first.fraction, f))
-    pressure = film.start_pressure(f, fraction, first.pressure, state)
     tolerance = max(film.tolerance, STEP_TOLERANCE)
-    sweeps, change = elrod_adams_step(
-        pressure, fraction, f.free, f.a_east, f.a_north, f.couette_east, capacity,
-        np.ascontiguousarray(known), film.sor_factor, tolerance, film.max_iterations)
+    sweeps, change, pressure, fraction = content_step_sweep(
+        f.edge, f.supply, f.fixed_pressure, f.h, f.squeeze, f.a_east, f.a_north,
+        f.couette_east, cell, -film.reduced_cavitation(state), FULL, _field(memory.fraction),
+        _field(memory.thickness), _field(previous.fraction if bdf2 else None),
+        _field(previous.thickness if bdf2 else None), _field(first.fraction),
+        _field(first.pressure), film.sor_factor, tolerance, film.max_iterations)
     film.last_iterations = sweeps
     if not change <= tolerance:
         raise ConvergenceError(
@@ -96,6 +91,15 @@ def content_step(
     fx, fy = shifted_pressure_force(film, pressure, state)
     fills = _hole_fill(film, f, memory, previous if bdf2 else None, cell, dt, state.viscosity)
     return fx, fy, MassConservingMemory(fraction, pressure, f.h, *fills)
+
+
+def _field(values: np.ndarray | None) -> np.ndarray:
+    """``values`` as a C-contiguous float array for the compiled step; an empty (0, 0) one
+    for None."""
+    return _NONE if values is None else np.ascontiguousarray(values, dtype=float)
+
+
+_NONE = np.empty((0, 0))
 
 
 def accepted_result(film: Any, state: FilmState, memory: MassConservingMemory | None,
