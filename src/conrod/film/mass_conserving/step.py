@@ -89,7 +89,7 @@ def content_step(
             where=f"e = ({state.eccentricity_x:.3e}, {state.eccentricity_y:.3e}) m",
             residual=change)
     fx, fy = shifted_pressure_force(film, pressure, state)
-    fills = _hole_fill(film, f, memory, previous if bdf2 else None, cell, dt, state.viscosity)
+    fills = _hole_fill(f, memory, previous if bdf2 else None, cell, state.viscosity)
     return fx, fy, MassConservingMemory(fraction, pressure, f.h, *fills)
 
 
@@ -125,9 +125,8 @@ def accepted_result(film: Any, state: FilmState, memory: MassConservingMemory | 
     return result
 
 
-def _hole_fill(film: Any, f, memory: MassConservingMemory,
-               previous: MassConservingMemory | None, cell: float, dt: float,
-               viscosity: float) -> tuple[float, float]:
+def _hole_fill(f, memory: MassConservingMemory, previous: MassConservingMemory | None,
+               cell: float, viscosity: float) -> tuple[float, float]:
     """Oil the journal's holes (all supply features) put into the nodes they hold at the
     end of a step besides their flux into the free nodes [m³/s]: the step's content change
     of those nodes, full
@@ -139,22 +138,22 @@ def _hole_fill(film: Any, f, memory: MassConservingMemory,
     flow (the shell's fixed features held by a fed hole part of the cycle included)."""
     if f.fed is None:
         return 0.0, 0.0
-    before = _content(film, f, memory, cell, dt, held=False)
+    before = _content(f, memory, cell)
     if previous is None:
         change = cell * f.h - before
     else:
         change = (1.5 * cell * f.h - 2.0 * before
-                  + 0.5 * _content(film, f, previous, cell, dt, held=False))
+                  + 0.5 * _content(f, previous, cell))
     scale = 1.0 / (12.0 * viscosity)
     return float(np.sum(change[f.fed])) * scale, float(np.sum(change[f.supply])) * scale
 
 
-def _content(film: Any, f, memory: MassConservingMemory, cell: float,
-             dt: float, held: bool = True) -> np.ndarray:
-    """12μΔxΔz ϑh/Δt of ``memory`` [Pa m³]; without its thickness, h^n = h − Δt ∂h/∂t
-    (the backward Euler position of a rigid film)."""
-    fraction = (film.fraction_field(memory.fraction, f) if held  # full where now held
-                else np.clip(np.asarray(memory.fraction, dtype=float), 0.0, 1.0))
+def _content(f, memory: MassConservingMemory, cell: float) -> np.ndarray:
+    """12μΔxΔz ϑh/Δt of ``memory`` [Pa m³] with its own film fraction on every node (held
+    nodes included); without its thickness, h^n = h − Δt ∂h/∂t (the backward Euler position
+    of a rigid film). The step's own content, full on the nodes held now, is computed in
+    its compiled call (:func:`~conrod.film.mass_conserving.kernel.content_step_sweep`)."""
+    fraction = np.clip(np.asarray(memory.fraction, dtype=float), 0.0, 1.0)
     if memory.thickness is not None:
         return cell * fraction * memory.thickness
     return fraction * (cell * f.h - f.squeeze)
