@@ -48,6 +48,9 @@ SAME_FILM = 1.0e-9
 """Largest difference of the film thickness, share of the radial clearance, at which a
 step's memory is the answer at a state [-]."""
 
+_NONE = np.empty((0, 0))
+"""What the compiled step takes for a field that is not there (a memory without thickness,
+no step before, no warm pressure)."""
 
 
 def content_step(
@@ -97,9 +100,6 @@ def _field(values: np.ndarray | None) -> np.ndarray:
     """``values`` as a C-contiguous float array for the compiled step; an empty (0, 0) one
     for None."""
     return _NONE if values is None else np.ascontiguousarray(values, dtype=float)
-
-
-_NONE = np.empty((0, 0))
 
 
 def accepted_result(film: Any, state: FilmState, memory: MassConservingMemory | None,
