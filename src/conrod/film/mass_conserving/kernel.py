@@ -199,9 +199,10 @@ def content_step_sweep(
     known = np.empty((n, m))
     fraction = np.empty((n, m))
     pressure = np.empty((n, m))
+    solved = ~(edge | supply)
     for i in range(n):
         for j in range(m):
-            free = not (edge[i, j] or supply[i, j])
+            free = solved[i, j]
             held = _held(fraction_n, i, j, free)
             if thickness_n.shape[0] > 0:
                 content = cell * held * thickness_n[i, j]
@@ -224,7 +225,7 @@ def content_step_sweep(
                 pressure[i, j] = start_pressure[i, j]
             else:
                 pressure[i, j] = offset
-    sweeps, change = elrod_adams_step(pressure, fraction, ~(edge | supply), a_east, a_north,
+    sweeps, change = elrod_adams_step(pressure, fraction, solved, a_east, a_north,
                                       couette_east, capacity, known, omega, tolerance,
                                       max_iterations)
     return sweeps, change, pressure, fraction
