@@ -275,6 +275,19 @@ def film_gap(clearance, e_x, e_y, v_x, v_y, cos_theta, sin_theta, n_nodes):
 
 
 @nb.njit(cache=True)
+def mirror_equal(field):
+    """True when every row of ``field`` (2-D) reads the same backwards, field[i, k] =
+    field[i, m − 1 − k] (NaN equal to nothing, the middle one to itself neither) [-]: stops
+    at the first difference."""
+    n, m = field.shape
+    for i in range(n):
+        for k in range((m + 1) // 2):
+            if field[i, k] != field[i, m - 1 - k]:
+                return False
+    return True
+
+
+@nb.njit(cache=True)
 def warm_field(last, previous, step, floor, fixed, fixed_values):
     """Warm-start field max(p + α(p − p_previous), floor) [Pa] (α = ``step``; pass
     ``previous`` = ``last`` and α = 0 for the last field itself) with the Dirichlet
