@@ -58,6 +58,7 @@ from conrod.numerics.newton import (
     UpdateLimits,
     solve_step,
 )
+from conrod.numerics.pairwise import exact_order, weighted_row_sums
 
 STEP_SOLVES = 40
 """Most film steps of the mass-conserving film's step system before the step is left to the
@@ -158,6 +159,8 @@ def bore_loads(weights: Any, pressure: np.ndarray) -> np.ndarray:
     :func:`bore_force_weights`: f_j = Σ_k W_jk p_jk per row, f_jk = w_jk p_jk per node."""
     if weights.ndim == 1:
         return weights * pressure.ravel()
+    if exact_order(weights, pressure):  # the same sums in one compiled call
+        return weighted_row_sums(weights, pressure)
     return (weights * pressure).sum(axis=1)
 
 
@@ -213,10 +216,17 @@ def carried_chord(film, key: str) -> ChordJacobian:
     return film.chords[key]
 
 
-def _state(request: StepRequest, velocity: np.ndarray, deformation=None) -> FilmState:
+def _state(request: StepRequest, velocity: np.ndarray, deformation=None,
+           like: FilmState | None = None) -> FilmState:
     """The film state at the end of the step with the end velocity ``velocity`` (with the
-    journal's tilt when the step has one, :class:`~conrod.film.step_system.TiltRequest`)."""
+    journal's tilt when the step has one, :class:`~conrod.film.step_system.TiltRequest`);
+    without tilt ``like``, a state of the same step, moved there (:meth:`FilmState.moved`:
+    its other fields are the step's)."""
     x, y = request.position(velocity)[:2]
+    if like is not None and request.tilt is None:
+        return like.moved(eccentricity_x=float(x), eccentricity_y=float(y),
+                          velocity_x=float(velocity[0]), velocity_y=float(velocity[1]),
+                          deformation=deformation)
     tilt = {} if request.tilt is None else dict(zip(
         ("tilt_x", "tilt_y", "tilt_rate_x", "tilt_rate_y"),
         request.tilt.at_end(request, velocity), strict=True))
@@ -244,10 +254,12 @@ def pressure_step_system(film, request: StepRequest) -> BoreSystem:
     lever = request.tilt.lever if free else 1.0
 
     warm = [at_end.inner]  # the film's warm start: the step's last solve (module docstring)
+    step_state = (_state(request, request.velocity_reference) if request.tilt is None
+                  else None)  # checked once a step
 
     def evaluate(own: np.ndarray, velocity: np.ndarray, accuracy: float | None = None):
-        forces, h_min, payload = film.evaluator(_state(request, velocity), at_end, accuracy,
-                                                warm[0])(own)
+        forces, h_min, payload = film.evaluator(_state(request, velocity, like=step_state),
+                                                at_end, accuracy, warm[0])(own)
         warm[0] = payload.memory()
         if not free:
             return forces, payload.force(), h_min, payload

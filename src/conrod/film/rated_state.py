@@ -12,7 +12,6 @@ transient Reynolds equation includes the surface's normal velocity).
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -30,17 +29,11 @@ class RatedFilmState(FilmState):
     deformation_rate: np.ndarray | None = None
 
 
-_STATE_FIELDS = tuple(field.name for field in dataclasses.fields(FilmState))
-"""The fields a :class:`RatedFilmState` takes over from its state [-]."""
-
-
 def rated(state: FilmState, deformation: np.ndarray, rate: np.ndarray | None) -> FilmState:
     """``state`` with the deformation field and (when given) its rate [m], [m/s]."""
     if rate is None:
-        return dataclasses.replace(state, deformation=deformation)
-    fields = {name: getattr(state, name) for name in _STATE_FIELDS}
-    fields["deformation"] = deformation
-    return RatedFilmState(**fields, deformation_rate=rate)
+        return state.moved(deformation=deformation)
+    return state.moved(RatedFilmState, deformation=deformation, deformation_rate=rate)
 
 
 def state_rate(state: FilmState) -> np.ndarray | None:

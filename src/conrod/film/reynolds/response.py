@@ -39,7 +39,7 @@ from typing import Any
 
 import numpy as np
 from scipy.linalg import lu_factor, lu_solve
-from scipy.sparse import coo_matrix, csr_matrix
+from scipy.sparse import csr_matrix
 
 from conrod.film.base import FilmResult
 from conrod.film.linearised import active_matrix
@@ -50,9 +50,12 @@ from conrod.film.reynolds.response_kernel import (
     active_rows,
     bore_node_imbalance,
     bore_row_imbalance,
+    row_directions,
+    row_load_response,
 )
 from conrod.film.step_system import FilmResponse
 from conrod.film.tilt import thickness_directions
+from conrod.numerics.pairwise import exact_order, weighted_sums
 from conrod.numerics.sparse_lu import ManyRightHandSides, banded_solve_rows
 
 
@@ -201,9 +204,7 @@ def _nodal_response(solved: np.ndarray, nodal: np.ndarray, nodes, shape,
         out[flat] = (solved * nodal[flat]).T
         return out
     columns = np.arange(nodes[0].size) if representative is None else representative
-    rows = coo_matrix((nodal[nodes], (nodes[0], columns)),
-                      shape=(shape[0], solved.shape[1])).tocsr()
-    return np.asarray(rows @ solved.T)
+    return row_load_response(solved, nodal[nodes], nodes[0], columns, shape[0])
 
 
 def _split(nodal_response: np.ndarray, n_bore: int) -> tuple[np.ndarray, np.ndarray]:
@@ -227,17 +228,8 @@ def _velocity_directions(film: Any, shape: tuple[int, int], tilt: tuple[float, f
 def _row_directions(pressure, h, rate, grid, omega_sum, viscosity, index) -> np.ndarray:
     """−∂r_A/∂u_j (n_θ, n_A) of whole film rows at the active nodes (``index``: a node's
     place among them, −1 where not active) [Pa m^3]."""
-    n_theta = pressure.shape[0]
-    rows = bore_row_imbalance(pressure, h, rate, grid.radius, grid.d_theta, grid.d_z,
-                              omega_sum, viscosity)
-    right = np.zeros((n_theta, int(index.max()) + 1))
-    bore = np.arange(n_theta)
-    for shift in range(3):
-        place = index[(bore - 1 + shift) % n_theta]
-        keep = place >= 0
-        right[np.broadcast_to(bore[:, None], place.shape)[keep], place[keep]] = \
-            -rows[:, shift, :][keep]
-    return right
+    return row_directions(bore_row_imbalance(pressure, h, rate, grid.radius, grid.d_theta,
+                                             grid.d_z, omega_sum, viscosity), index)
 
 
 def _node_directions(pressure, h, rate, grid, omega_sum, viscosity, index) -> np.ndarray:
@@ -337,6 +329,8 @@ class PressureEvaluation:
     def resultant(self, pressure: np.ndarray) -> np.ndarray:
         """Force of ``pressure`` [Pa] on the journal, −Σ p (w_x, w_y) (2,) [N]."""
         w_x, w_y = self.film.force_weights
+        if exact_order(pressure, w_x, w_y):  # the same sums in one compiled call
+            return -np.array(weighted_sums(pressure, w_x, w_y))
         return -np.array([(pressure * w_x).sum(), (pressure * w_y).sum()])
 
     def min_film_thickness(self) -> float:

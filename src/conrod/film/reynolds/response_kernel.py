@@ -143,3 +143,53 @@ def active_rows(a_east: np.ndarray, a_north: np.ndarray, active: np.ndarray, hal
                 at += 1
             indptr[row + 1] = at
     return indptr, indices[:at], data[:at]
+
+
+@nb.njit(cache=True)
+def row_directions(rows: np.ndarray, index: np.ndarray) -> np.ndarray:
+    """−∂r/∂u_j (n_θ, n_solved) at the solved nodes from D of :func:`bore_row_imbalance`
+    (``index``: a node's place among the solved nodes, −1 elsewhere) [Pa m^3]: row j
+    holds −D[j, s, k] at the place of node ((j − 1 + s) mod n_θ, k)."""
+    n_theta, _, n_nodes = rows.shape
+    right = np.zeros((n_theta, index.max() + 1))
+    for shift in range(3):
+        for j in range(n_theta):
+            row = (j - 1 + shift) % n_theta
+            for k in range(n_nodes):
+                place = index[row, k]
+                if place >= 0:
+                    right[j, place] = -rows[j, shift, k]
+    return right
+
+
+@nb.njit(cache=True)
+def row_load_response(solved: np.ndarray, weights: np.ndarray, node_rows: np.ndarray,
+                      columns: np.ndarray, n_rows: int) -> np.ndarray:
+    """∂f/∂q (n_rows, n_q) of the row loads f_j = Σ W p over the solved nodes: active node a
+    (row ``node_rows[a]``, ascending) adds ``weights[a]`` × the column ``columns[a]`` of
+    ``solved`` (n_q, n_solved) [N per unit q]. Each row's entries are taken by column, two
+    on one column (a node and its mirror image) added first, then w ∂p/∂q summed from zero
+    in that order: SciPy's sparse rows (duplicates summed, indices sorted) times a dense
+    matrix, the same operations, without building the sparse matrix."""
+    n_q = solved.shape[0]
+    out = np.zeros((n_rows, n_q))
+    count = weights.size
+    first = 0
+    while first < count:
+        row = node_rows[first]
+        last = first
+        while last < count and node_rows[last] == row:
+            last += 1
+        order = np.argsort(columns[first:last], kind="mergesort")
+        k = 0
+        while k < order.size:
+            column = columns[first + order[k]]
+            weight = weights[first + order[k]]
+            k += 1
+            while k < order.size and columns[first + order[k]] == column:
+                weight += weights[first + order[k]]
+                k += 1
+            for q in range(n_q):
+                out[row, q] += weight * solved[q, column]
+        first = last
+    return out
