@@ -108,3 +108,23 @@ def test_moved_state_equals_a_new_state_and_refuses_checked_fields():
         state.moved(viscosity=-1.0)  # a checked field: a new state must be made
     with pytest.raises(ValueError, match="deformation_rate"):
         state.moved(RatedFilmState, deformation=field)  # the rate missing
+
+
+def test_length_of_two_components_is_numpys_hypot():
+    from conrod.numerics.newton import length
+
+    rng = np.random.default_rng(3)
+    pairs = rng.standard_normal((20000, 2)) * 10.0 ** rng.uniform(-12, 6, (20000, 2))
+    assert all(length(pair) == np.hypot(*pair) for pair in pairs)
+    assert length(np.array([3.0, 4.0, 12.0])) == 13.0
+
+
+def test_plane_housing_field_is_the_rows_repeated():
+    from types import SimpleNamespace
+
+    from conrod.housing.housing import Housing
+
+    rows = np.random.default_rng(4).standard_normal(36)
+    field = Housing.film_field(SimpleNamespace(axial=None), rows, 9)
+    assert np.array_equal(field, np.repeat(rows[:, None], 9, axis=1))
+    assert field.flags.c_contiguous and field.flags.writeable

@@ -207,10 +207,18 @@ class NewtonOutcome:
 
 
 def length(vector: np.ndarray) -> float:
-    """Euclidean length of a short vector (numpy's hypot for two components) [-]."""
+    """Euclidean length of a short vector (the C library's hypot for two components, as
+    numpy's) [-]."""
     if vector.size == 2:
-        return float(np.hypot(*vector))
+        return _hypot(vector[0], vector[1])
     return _euclidean(vector)
+
+
+@nb.njit(cache=True)
+def _hypot(x: float, y: float) -> float:
+    """√(x² + y²) by the C library's ``hypot``, numpy's ``np.hypot`` bit for bit without its
+    dispatch on two scalars (0.4 against 2.5 µs, once or twice per update of a step) [-]."""
+    return math.hypot(x, y)
 
 
 def solve_step(system: NewtonSystem, velocity: np.ndarray, load: np.ndarray,

@@ -20,6 +20,8 @@ from __future__ import annotations
 import numba as nb
 import numpy as np
 
+FLOAT = np.dtype(np.float64)
+"""The one element type summed here [-]."""
 BLOCK = 128
 """NumPy's ``PW_BLOCKSIZE``: the longest run summed in eight running sums [-]."""
 
@@ -27,9 +29,11 @@ BLOCK = 128
 def exact_order(*arrays: np.ndarray) -> bool:
     """True when the arrays are C-contiguous float64 arrays of one shape, where the
     compiled sums here give NumPy's bits [-]."""
-    first = arrays[0]
-    return all(a.dtype == np.float64 and a.flags.c_contiguous and a.shape == first.shape
-               for a in arrays)
+    shape = arrays[0].shape
+    for array in arrays:  # a loop, not all(...): its generator cost more than the sums saved
+        if array.dtype != FLOAT or not array.flags.c_contiguous or array.shape != shape:
+            return False
+    return True
 
 
 @nb.njit(cache=True)

@@ -42,6 +42,15 @@ class DiscreteProblem:
     conduction: np.ndarray | None = None
     """Conductance thickness h (μ_r/μ)^{1/3} of a viscosity field [m]
     (:mod:`conrod.film.reynolds.viscosity_field`); None: the conductances of h."""
+    h_min: float | None = None
+    """Smallest film thickness min h [m], where the problem's maker computed it (None: not
+    computed)."""
+
+    def min_film_thickness(self) -> float:
+        """min h [m], computed once."""
+        if self.h_min is None:
+            self.h_min = float(self.h.min())
+        return self.h_min
 
     def coarsened(self) -> DiscreteProblem:
         """The same problem on every other node (coinciding nodes, exact subsampling)."""

@@ -335,7 +335,7 @@ class PressureEvaluation:
 
     def min_film_thickness(self) -> float:
         """Smallest nodal film thickness [m]."""
-        return float(self.problem.h.min())
+        return self.problem.min_film_thickness()
 
     def finish(self) -> tuple[FilmResult, ReynoldsMemory]:
         """All characteristics, pressure included, and the film memory after the solve; with
