@@ -14,12 +14,33 @@ import numpy as np  # noqa: E402
 from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 from matplotlib.image import imsave  # noqa: E402
+from matplotlib.layout_engine import ConstrainedLayoutEngine  # noqa: E402
 
 from conrod.io.atomic import atomic_path  # noqa: E402
 
 _REPRODUCIBLE_METADATA = {"png": {"Software": None}, "pdf": {"CreationDate": None},
                           "svg": {"Date": None}}
 """Metadata entries removed per format so that reruns give byte-identical figures."""
+
+
+def fitting_layout() -> ConstrainedLayoutEngine:
+    """A constrained layout that keeps every axes, title and colour bar :func:`fitting_pad`
+    inside the canvas, so that the padded tight box lies within it and :func:`figure_bytes`
+    draws the figure once (a figure legend placed "outside" needs ``borderaxespad`` as
+    large)."""
+    return ConstrainedLayoutEngine(w_pad=fitting_pad(), h_pad=fitting_pad())
+
+
+def fitting_pad() -> float:
+    """Distance from the canvas edge of everything a :func:`fitting_layout` places [in]:
+    :rc:`savefig.pad_inches` plus :data:`CANVAS_MARGIN`."""
+    return matplotlib.rcParams["savefig.pad_inches"] + CANVAS_MARGIN
+
+
+CANVAS_MARGIN = 0.02
+"""Margin of :func:`fitting_layout` beyond the padding of the tight box [in]."""
+POINTS_PER_INCH = 72.0
+"""Typographic points in an inch [pt/in]."""
 
 
 def save_figure(figure: Figure, target: str | os.PathLike[str], *, dpi: int = 130) -> Path:
