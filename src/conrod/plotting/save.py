@@ -27,8 +27,9 @@ def fitting_layout() -> ConstrainedLayoutEngine:
     """A constrained layout that keeps every axes, title and colour bar :func:`fitting_pad`
     inside the canvas, so that the padded tight box lies within it and :func:`figure_bytes`
     draws the figure once (a figure legend placed "outside" needs ``borderaxespad`` as
-    large)."""
-    return ConstrainedLayoutEngine(w_pad=fitting_pad(), h_pad=fitting_pad())
+    large). The pad is also kept around each axes: no further space between them."""
+    return ConstrainedLayoutEngine(w_pad=fitting_pad(), h_pad=fitting_pad(), wspace=0.0,
+                                   hspace=0.0)
 
 
 def fitting_pad() -> float:
