@@ -55,6 +55,7 @@ def load_diagram_figure(cycle) -> Figure:
     line.set_title("load magnitude over the cycle", fontsize=10)
     for ax in (polar, line):
         ax.grid(True, lw=0.3)
+    fig.subplots_adjust(bottom=0.13)  # the axis labels within the canvas
     return fig
 
 
