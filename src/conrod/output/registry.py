@@ -200,7 +200,8 @@ def draw_figures(specs: tuple[FigureSpec, ...], folder: Path,
     least :data:`TWO_PROCESSES_FROM` figures left and an idle core
     (:func:`conrod.io.cores.spare_core`) a forked process draws every second one meanwhile:
     the same code on the same data, the same bytes (README main job, 2-core machine: 14
-    figures in 2.0 s against 3.2 s in one process). What that process does not deliver
+    figures in 2.0 s against 3.2 s in one process, measured when every figure was drawn
+    twice, before :func:`conrod.plotting.save.figure_bytes`). What that process does not deliver
     (it failed or ended) is drawn here, where a failure raises as it would have.
     ``CONROD_FIGURE_PROCESS=0`` turns it off."""
     drawn = drawn or {}

@@ -63,9 +63,11 @@ def figure_bytes(figure: Figure, file_format: str, *, dpi: float) -> bytes:
 
     A PNG is drawn once (:func:`png_drawn_once`) where everything drawn lies on the figure's
     canvas: the image ``savefig(bbox_inches="tight")`` writes, within a fraction of a pixel
-    of where it draws each thing (``tests/test_figure_save.py``), in about two thirds of its
-    time (it draws the figure twice: once to find the box, once for the pixels). Where
-    something overhangs the canvas, and in every other format, ``savefig`` writes it."""
+    of where it draws each thing (``tests/test_figure_save.py``), without its first drawing
+    (the one that finds the box). The README job's 14 figures (144 × 16 grid), built and
+    written in one process: 4.86 s against 6.78 s with ``savefig`` (medians of 6 runs, each
+    in turn, on a 2-core machine shared with other work). Where something overhangs the
+    canvas, and in every other format, ``savefig`` writes it."""
     file_format = file_format.lower()
     if file_format == "png":
         drawn = png_drawn_once(figure, dpi)
