@@ -13,8 +13,8 @@ matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
-from matplotlib.image import imsave  # noqa: E402
 from matplotlib.layout_engine import ConstrainedLayoutEngine  # noqa: E402
+from PIL import Image  # noqa: E402
 
 from conrod.io.atomic import atomic_path  # noqa: E402
 
@@ -102,7 +102,7 @@ def png_drawn_once(figure: Figure, dpi: float) -> bytes | None:
     top = round(canvas_height - height - box.y0 * dpi)
     if left < 0 or top < 0 or left + width > canvas_width or top + height > canvas_height:
         return None
-    buffer = io.BytesIO()
-    imsave(buffer, pixels[top:top + height, left:left + width],
-           format="png", dpi=dpi, metadata=_REPRODUCIBLE_METADATA["png"])
+    buffer = io.BytesIO()  # written as savefig writes it (matplotlib.image.imsave), no text
+    Image.fromarray(pixels[top:top + height, left:left + width]).save(
+        buffer, format="png", dpi=(dpi, dpi))
     return buffer.getvalue()
