@@ -45,11 +45,13 @@ POINTS_PER_INCH = 72.0
 
 
 def save_figure(figure: Figure, target: str | os.PathLike[str], *, dpi: int = 130) -> Path:
-    """Write ``figure`` to ``target`` (format from the suffix) atomically, then close it:
-    the bytes of :func:`figure_bytes` at ``dpi`` [dots per inch]."""
+    """Write ``figure`` to ``target`` (format from the suffix, :rc:`savefig.format` without
+    one) atomically, then close it: the bytes of :func:`figure_bytes` at ``dpi`` [dots per
+    inch]."""
     import matplotlib.pyplot as plt
 
-    content = figure_bytes(figure, Path(target).suffix[1:], dpi=dpi)
+    file_format = Path(target).suffix[1:] or matplotlib.rcParams["savefig.format"]
+    content = figure_bytes(figure, file_format, dpi=dpi)
     with atomic_path(target) as tmp:
         tmp.write_bytes(content)
     plt.close(figure)
