@@ -28,7 +28,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import io
 import multiprocessing
 import os
 import time
@@ -176,18 +175,22 @@ def _write_bytes(path: Path, content: bytes) -> Path:
 
 
 def _save(figure: Any, path: Path) -> Path:
-    """Save a matplotlib Figure (duck-typed: this module never imports matplotlib)."""
-    with atomic_path(path) as tmp:
-        figure.savefig(tmp, dpi=FIGURE_DPI, bbox_inches="tight")
-    return path
+    """Save a matplotlib Figure atomically: :func:`_rendered` 's bytes."""
+    return _write_bytes(path, _figure_bytes(figure, path.suffix[1:]))
 
 
 def _rendered(spec: FigureSpec) -> bytes:
     """The file ``spec`` saves, in memory (the bytes :func:`_save` writes)."""
-    buffer = io.BytesIO()
-    spec.build().savefig(buffer, format=Path(spec.file).suffix[1:], dpi=FIGURE_DPI,
-                         bbox_inches="tight")
-    return buffer.getvalue()
+    return _figure_bytes(spec.build(), Path(spec.file).suffix[1:])
+
+
+def _figure_bytes(figure: Any, file_format: str) -> bytes:
+    """``figure`` as a file of ``file_format`` at :data:`FIGURE_DPI`, cut to its tight box, a
+    PNG drawn once (:func:`conrod.plotting.save.figure_bytes`; imported here, not at the top:
+    this module never imports matplotlib)."""
+    from conrod.plotting.save import figure_bytes
+
+    return figure_bytes(figure, file_format, dpi=FIGURE_DPI)
 
 
 def draw_figures(specs: tuple[FigureSpec, ...], folder: Path,
@@ -197,7 +200,8 @@ def draw_figures(specs: tuple[FigureSpec, ...], folder: Path,
     least :data:`TWO_PROCESSES_FROM` figures left and an idle core
     (:func:`conrod.io.cores.spare_core`) a forked process draws every second one meanwhile:
     the same code on the same data, the same bytes (README main job, 2-core machine: 14
-    figures in 2.0 s against 3.2 s in one process). What that process does not deliver
+    figures in 2.0 s against 3.2 s in one process, measured when every figure was drawn
+    twice, before :func:`conrod.plotting.save.figure_bytes`). What that process does not deliver
     (it failed or ended) is drawn here, where a failure raises as it would have.
     ``CONROD_FIGURE_PROCESS=0`` turns it off."""
     drawn = drawn or {}

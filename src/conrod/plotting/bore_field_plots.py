@@ -8,6 +8,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from conrod.plotting.save import fitting_layout
+
 UM, MM = 1e6, 1e3
 
 
@@ -24,7 +26,7 @@ def plot_bore_field(results) -> Figure:
             "smallest h_min": int(np.argmin(cycle.h_min))}
     theta_deg = np.degrees(results.bore_angles)
     z_mm = results.axial_positions * MM
-    fig = Figure(figsize=(15.0, 7.5), layout="constrained")
+    fig = Figure(figsize=(15.0, 7.5), layout=fitting_layout())
     axes = fig.subplot_mosaic([["whole 0", "along 0", "profile"],
                                ["whole 1", "along 1", "profile"]],
                               width_ratios=(1.0, 1.0, 0.75))

@@ -92,7 +92,7 @@ def plot_wear_polar(contact) -> Figure:
         axis.plot(closed, closed_work, color="tab:blue")
         axis.fill(closed, closed_work, color="tab:blue", alpha=0.2)
         axis.set_rlim(0.0, 1.05 * float(work.max()))
-    figure.tight_layout()
+    figure.tight_layout(pad=2.0)  # [font sizes]: the polar labels and titles within the canvas
     return figure
 
 

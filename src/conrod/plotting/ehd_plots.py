@@ -111,6 +111,7 @@ def plot_deformed_film_maps(results) -> Figure:
         ax.set_title(f"{label.split(' [')[0]} at φ = {cycle.crank_angle_deg[i]:.0f}°",
                      fontsize=9)
     axes[0].set_ylabel("z [mm]")
+    fig.subplots_adjust(bottom=0.13)  # the axis labels within the canvas
     return fig
 
 

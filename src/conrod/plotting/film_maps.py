@@ -52,6 +52,7 @@ def plot_film_thickness_map(results: RunResults) -> Figure:
     ax.set_yticks(np.arange(0, 361, 90))
     ax.set_title(f"Film thickness over the shell and the cycle ({_which_bore(results)})",
                  fontsize=10)
+    fig.subplots_adjust(bottom=0.14)  # the axis label within the canvas
     return fig
 
 

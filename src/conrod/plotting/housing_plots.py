@@ -37,6 +37,7 @@ def housing_mesh_figure(structure) -> Figure:
     n_el, n_dof = mesh.t.shape[1], structure.model.n_dofs
     axes.set_title(f"Housing mesh: {n_el} six-node triangles, {n_dof} unknowns")
     axes.legend(loc="upper right", fontsize=8)
+    figure.subplots_adjust(bottom=0.13)  # the axis label within the canvas
     return figure
 
 
@@ -102,6 +103,7 @@ def inertia_deformation_figure(results) -> Figure:
     axes.grid(alpha=0.3)
     axes.legend(fontsize=8)
     axes.set_title("Inertia deformation of the bore (superposition of base fields)")
+    figure.subplots_adjust(bottom=0.13)  # the axis label within the canvas
     return figure
 
 

@@ -6,6 +6,7 @@ given), and the cavitation-erosion map — drawn from what
 from __future__ import annotations
 
 import math
+import textwrap
 
 import numpy as np
 from matplotlib.figure import Figure
@@ -18,6 +19,8 @@ LIMIT_OF_MAP = {"max_pressure": "max_pressure", "pressure_range": "pressure_rang
                 "max_temperature": "max_temperature"}
 """Indicator map → the ``[limits]`` key drawn as its contour."""
 CMAPS = {"min_film_thickness": "viridis_r", "erosion": "magma"}
+TITLE_CHARACTERS = 85
+"""Longest line of the erosion map's title (9 pt type, as wide as the axes) [characters]."""
 
 
 def plot_indicator_maps(results, frame: str = "shell") -> Figure:
@@ -54,7 +57,9 @@ def plot_erosion_map(results) -> Figure:
         ax.text(0.5, 0.5, note, ha="center", wrap=True)
         return fig
     _draw_map(ax, fig, indicators.erosion, indicators, None)
-    ax.set_title(f"Cavitation erosion: {indicators.erosion.long_name}", fontsize=9)
+    ax.set_title(textwrap.fill(f"Cavitation erosion: {indicators.erosion.long_name}",
+                               TITLE_CHARACTERS), fontsize=9)
+    fig.subplots_adjust(bottom=0.17, top=0.84)  # the axis label and title within the canvas
     return fig
 
 

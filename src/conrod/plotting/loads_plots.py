@@ -274,4 +274,5 @@ def plot_table_load_over_crank_angle(loads) -> Figure:
     axes.set_ylabel("load [kN]")
     axes.legend(fontsize=8)
     axes.grid(True, lw=0.3)
+    figure.subplots_adjust(bottom=0.13)  # the axis label within the canvas
     return figure

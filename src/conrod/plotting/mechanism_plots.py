@@ -7,6 +7,7 @@ from matplotlib.figure import Figure
 
 from conrod.mechanism.regimes import SweepResults
 from conrod.mechanism.results import JOINT_NAMES, MechanismResults
+from conrod.plotting.save import POINTS_PER_INCH, fitting_layout, fitting_pad
 
 LABELS = {"big_end": "big end (crank pin)", "small_end": "small end (piston pin)"}
 UM = 1.0e6
@@ -43,7 +44,7 @@ def plot_gaps_and_forces(results: MechanismResults) -> Figure:
 def plot_journal_orbits(results: MechanismResults) -> Figure:
     """Journal centre relative to the shell centre in the rod frame, with the worn outline."""
     mask = results.last_cycle()
-    figure = Figure(figsize=(9.0, 4.8), layout="constrained")
+    figure = Figure(figsize=(9.0, 4.8), layout=fitting_layout())
     axes = figure.subplots(1, 2)
     for index, name in enumerate(JOINT_NAMES):
         ax = axes[index]
@@ -78,13 +79,14 @@ def plot_impacts(results: MechanismResults) -> Figure:
     ax.set_ylim(bottom=0.0)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
+    figure.subplots_adjust(bottom=0.15)  # the axis label within the canvas
     return figure
 
 
 def plot_sweep_map(sweep: SweepResults) -> Figure:
     """Max impact velocity of each joint and the worn joint's excess Δv over speed × load;
     the most informative mode marked, with the joint that drives it."""
-    figure = Figure(figsize=(14.0, 4.4), layout="constrained")
+    figure = Figure(figsize=(14.0, 4.4), layout=fitting_layout())
     axes = figure.subplots(1, 3)
     panels = [(sweep.max_velocity[0], "max impact velocity, big end [m/s]"),
               (sweep.max_velocity[1], "max impact velocity, small end [m/s]"),
@@ -100,5 +102,7 @@ def plot_sweep_map(sweep: SweepResults) -> Figure:
         ax.set_xlabel("crank speed [rpm]")
         ax.set_ylabel("load (gas pressure scale) [-]")
         ax.grid(alpha=0.3)
-    figure.legend(*axes[2].get_legend_handles_labels(), loc="outside lower center", fontsize=8)
+    type_size = 8.0  # [pt]; the legend as far from the canvas edge as the layout's axes
+    figure.legend(*axes[2].get_legend_handles_labels(), loc="outside lower center",
+                  fontsize=type_size, borderaxespad=fitting_pad() * POINTS_PER_INCH / type_size)
     return figure

@@ -8,14 +8,14 @@ Figure; :func:`png_bytes` turns a Figure into PNG bytes for embedding.
 
 from __future__ import annotations
 
-import io
-
 import matplotlib
 
 matplotlib.use("Agg")
 
 import numpy as np  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
+
+from conrod.plotting.save import figure_bytes  # noqa: E402
 
 UM = 1e6
 KN = 1e-3
@@ -25,13 +25,13 @@ LPM = 6.0e4
 
 
 def png_bytes(figure: Figure, dpi: int = 110) -> bytes:
-    """The figure as PNG bytes (then closed)."""
+    """The figure as PNG bytes at ``dpi`` [dots per inch], cut to its tight box and drawn
+    once where it fits its canvas (:func:`conrod.plotting.save.figure_bytes`), then closed."""
     import matplotlib.pyplot as plt
 
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=dpi, bbox_inches="tight")
+    drawn = figure_bytes(figure, "png", dpi=dpi)
     plt.close(figure)
-    return buffer.getvalue()
+    return drawn
 
 
 def load_diagram_figure(cycle) -> Figure:
@@ -55,6 +55,7 @@ def load_diagram_figure(cycle) -> Figure:
     line.set_title("load magnitude over the cycle", fontsize=10)
     for ax in (polar, line):
         ax.grid(True, lw=0.3)
+    fig.subplots_adjust(bottom=0.13)  # the axis labels within the canvas
     return fig
 
 

@@ -53,6 +53,7 @@ def engine_map_figure(frame, x: str, y: str, column: str, limit: float | None = 
     ax.set_ylabel(y_label)
     ax.legend(fontsize=7, loc="best", framealpha=0.8)
     ax.set_title(title or column, fontsize=10)
+    fig.subplots_adjust(bottom=0.14)  # the axis label within the canvas
     return fig
 
 

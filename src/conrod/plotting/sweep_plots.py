@@ -74,6 +74,7 @@ def sweep_figure(frame, x: str, y: str, hue: str | None = None,
     failed = len(frame) - len(drawn)
     if failed:
         ax.set_title(f"{failed} failed variant(s) not drawn", fontsize=8, color="C3")
+    fig.subplots_adjust(bottom=0.14)  # the axis label within the canvas
     return fig
 
 

@@ -8,6 +8,8 @@ import math
 import numpy as np
 from matplotlib.figure import Figure
 
+from conrod.plotting.save import fitting_layout
+
 
 def plot_temperature_maps(maps) -> Figure:
     """T(θ, z) [°C] over shell angle θ [deg] and axial position z [mm] per crank angle, on
@@ -15,7 +17,7 @@ def plot_temperature_maps(maps) -> Figure:
     count = maps.crank_angle_deg.size
     columns = min(count, 3)
     rows = math.ceil(count / columns)
-    fig = Figure(figsize=(4.2 * columns + 1.2, 2.6 * rows + 0.8), layout="constrained")
+    fig = Figure(figsize=(4.2 * columns + 1.2, 2.6 * rows + 0.8), layout=fitting_layout())
     axes = np.atleast_1d(fig.subplots(rows, columns, sharex=True, sharey=True, squeeze=False)
                          ).ravel()
     low, high = float(maps.temperature.min()), float(maps.temperature.max())

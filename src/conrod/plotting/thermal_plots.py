@@ -27,6 +27,7 @@ def plot_temperature_map(thermal) -> Figure:
                  f"{thermal.shell_temperature:.1f} °C; heat {thermal.generated:.0f} W → oil "
                  f"{thermal.to_oil:.0f}, journal {thermal.to_journal:.0f}, shell "
                  f"{thermal.to_shell:.0f} W", fontsize=9)
+    fig.subplots_adjust(bottom=0.14)  # the axis label within the canvas
     return fig
 
 
