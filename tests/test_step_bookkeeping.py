@@ -9,7 +9,7 @@ import pytest
 from scipy.sparse import coo_matrix
 
 from conrod.film.base import FilmState
-from conrod.film.rated_state import RatedFilmState, rated
+from conrod.film.rated_state import RatedFilmState, moved, rated
 from conrod.film.reynolds.kernel import mirror_equal
 from conrod.film.reynolds.response_kernel import row_directions, row_load_response
 from conrod.numerics.newton import _largest
@@ -96,18 +96,18 @@ def test_row_load_response_is_scipys_sparse_product(mirrored):
 def test_moved_state_equals_a_new_state_and_refuses_checked_fields():
     state = FilmState(eccentricity_x=1e-5, eccentricity_y=-2e-5, velocity_x=0.1,
                       journal_speed=200.0, shell_speed=-20.0, viscosity=0.012)
-    moved = state.moved(eccentricity_x=3e-5, velocity_y=-0.2)
-    assert moved == dataclasses.replace(state, eccentricity_x=3e-5, velocity_y=-0.2)
-    assert type(moved) is FilmState and state.eccentricity_x == 1e-5  # a new state
+    there = moved(state, eccentricity_x=3e-5, velocity_y=-0.2)
+    assert there == dataclasses.replace(state, eccentricity_x=3e-5, velocity_y=-0.2)
+    assert type(there) is FilmState and state.eccentricity_x == 1e-5  # a new state
     field, rate = np.ones((4, 3)), np.zeros((4, 3))
     both = rated(state, field, rate)
     assert type(both) is RatedFilmState and both.deformation is field
     assert both.deformation_rate is rate and both.viscosity == 0.012
     assert rated(state, field, None) == dataclasses.replace(state, deformation=field)
     with pytest.raises(ValueError, match="viscosity"):
-        state.moved(viscosity=-1.0)  # a checked field: a new state must be made
+        moved(state, viscosity=-1.0)  # a checked field: a new state must be made
     with pytest.raises(ValueError, match="deformation_rate"):
-        state.moved(RatedFilmState, deformation=field)  # the rate missing
+        moved(state, RatedFilmState, deformation=field)  # the rate missing
 
 
 def test_length_of_two_components_is_numpys_hypot():

@@ -47,6 +47,7 @@ import numpy as np
 from conrod.ehd.coupling import CouplingOutcome
 from conrod.ehd.memory import answer_key, content_bdf2, coupling_extra, start_deformation
 from conrod.film.base import FilmState
+from conrod.film.rated_state import moved
 from conrod.film.step_system import FilmResponse, StepRequest
 from conrod.film.tilt import pressure_moments
 from conrod.numerics.newton import (
@@ -220,13 +221,13 @@ def _state(request: StepRequest, velocity: np.ndarray, deformation=None,
            like: FilmState | None = None) -> FilmState:
     """The film state at the end of the step with the end velocity ``velocity`` (with the
     journal's tilt when the step has one, :class:`~conrod.film.step_system.TiltRequest`);
-    without tilt ``like``, a state of the same step, moved there (:meth:`FilmState.moved`:
-    its other fields are the step's)."""
+    without tilt ``like``, a state of the same step, moved there
+    (:func:`~conrod.film.rated_state.moved`: its other fields are the step's)."""
     x, y = request.position(velocity)[:2]
     if like is not None and request.tilt is None:
-        return like.moved(eccentricity_x=float(x), eccentricity_y=float(y),
-                          velocity_x=float(velocity[0]), velocity_y=float(velocity[1]),
-                          deformation=deformation)
+        return moved(like, eccentricity_x=float(x), eccentricity_y=float(y),
+                     velocity_x=float(velocity[0]), velocity_y=float(velocity[1]),
+                     deformation=deformation)
     tilt = {} if request.tilt is None else dict(zip(
         ("tilt_x", "tilt_y", "tilt_rate_x", "tilt_rate_y"),
         request.tilt.at_end(request, velocity), strict=True))

@@ -40,8 +40,6 @@ All quantities are given in one *film frame* with axes x, y in the bearing mid-p
 
 from __future__ import annotations
 
-import dataclasses
-import functools
 import math
 from dataclasses import dataclass, field
 from typing import Any, Protocol, runtime_checkable
@@ -338,38 +336,6 @@ class FilmState:
     def tilted(self) -> bool:
         """True when the journal is tilted or tilting (any tilt angle or rate ≠ 0) [-]."""
         return bool(self.tilt_x or self.tilt_y or self.tilt_rate_x or self.tilt_rate_y)
-
-    def moved(self, kind: type[FilmState] | None = None, **changes: Any) -> FilmState:
-        """This state with ``changes`` to fields that :meth:`__post_init__` does not check
-        (:data:`UNCHECKED_FIELDS`: the journal's position and velocity, the deformation
-        field and its rate), as a ``kind`` (default: this state's class, which takes no
-        field this one lacks unless ``changes`` gives it); the other fields are taken over
-        as they were checked when this state was made. ~1.5 µs against ~10 µs for a new
-        state: an elastic implicit step makes two per film solve."""
-        kind = kind or type(self)
-        if not changes.keys() <= UNCHECKED_FIELDS:
-            raise ValueError(f"FilmState.moved: {sorted(changes.keys() - UNCHECKED_FIELDS)} "
-                             "are checked fields (allowed: "
-                             f"{sorted(UNCHECKED_FIELDS)}); make a new state")
-        state = object.__new__(kind)
-        state.__dict__.update(self.__dict__)
-        state.__dict__.update(changes)
-        if kind is not type(self) and not field_names(kind) <= state.__dict__.keys():
-            raise ValueError(f"FilmState.moved: a {kind.__name__} needs "
-                             f"{sorted(field_names(kind) - state.__dict__.keys())}")
-        return state
-
-
-@functools.cache
-def field_names(kind: type) -> frozenset[str]:
-    """The names of the dataclass fields of ``kind`` [-]."""
-    return frozenset(item.name for item in dataclasses.fields(kind))
-
-
-UNCHECKED_FIELDS = frozenset({"eccentricity_x", "eccentricity_y", "velocity_x", "velocity_y",
-                              "deformation", "deformation_rate"})
-"""The fields of a film state that :meth:`FilmState.moved` changes: those its check does
-not read [-]."""
 
 
 @dataclass

@@ -401,8 +401,7 @@ class ReynoldsFilm:
         field = self._field(state)
         conduction = None if field is None else vf.conduction_thickness(h, state.viscosity, field)
         return _Problem(self.film_grid, h, h_rate, fixed, values, self._reduced(
-            g.cavitation_pressure, state), journal_holes=fed, conduction=conduction,
-            h_min=smallest)
+            g.cavitation_pressure, state), journal_holes=fed, conduction=conduction, h_min=smallest)
 
     def _levels(self, problem: _Problem) -> list[_Problem]:
         """Coarse-to-fine problems: up to three nested grids for a cold start, none
