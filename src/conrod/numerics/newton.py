@@ -49,7 +49,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Protocol
+from typing import Any, NamedTuple, Protocol
 
 import numba as nb
 import numpy as np
@@ -230,6 +230,16 @@ def solve_step(system: NewtonSystem, velocity: np.ndarray, load: np.ndarray,
     return iteration.run()
 
 
+class _Trial(NamedTuple):
+    """One evaluation of the iteration: the scaled residual r, h_min [m], the system's
+    payload and ‖r‖₂ (computed once, compared up to three times)."""
+
+    r: np.ndarray
+    h_min: float
+    payload: Any
+    norm: float
+
+
 class _Iteration:
     """The state of one :func:`solve_step` call."""
 
@@ -244,8 +254,8 @@ class _Iteration:
         self.travel = None if travel is None else travel * controls.velocity_scale / controls.scale
         self.smallest = math.inf  # the smallest max|r| so far (the inexact accuracy)
 
-    def residual(self, z: np.ndarray):
-        """(r, h_min, payload, ‖r‖₂) at the scaled unknowns z."""
+    def residual(self, z: np.ndarray) -> _Trial:
+        """The trial at the scaled unknowns z."""
         c, n = self.controls.scale, self.n
         own = c * z[:n]
         velocity = self.controls.velocity_scale * z[n:] if self.k else self.v0
@@ -257,7 +267,7 @@ class _Iteration:
             r = np.concatenate([r, (force + self.load) / self.w_scale])
         if self.inexact:
             self.smallest = min(self.smallest, _largest(r))
-        return r, h_min, payload, _euclidean(r)
+        return _Trial(r, h_min, payload, _euclidean(r))
 
     def done(self, r: np.ndarray) -> bool:
         own, force = self.residuals(r)
@@ -290,7 +300,7 @@ class _Iteration:
                 best, best_lam = self.line_search(z, step, norm)
             else:  # a carried inverse is not cut back: where its full update fails, rebuild
                 best, best_lam = _attempt(self.residual, z + step), 1.0
-                if best is None or best[3] >= norm:
+                if best is None or best.norm >= norm:
                     inverse = None
                     continue
             if best is None:
@@ -300,8 +310,8 @@ class _Iteration:
             # film's cavitation set the residual is only piecewise smooth (semismooth Newton)
             z = z + best_lam * step
             increment = c * _largest(best_lam * step[:n]) if n else 0.0
-            change = best[0] - r
-            stalled = best[3] > CONTRACTION * norm or best_lam < 1.0
+            change = best.r - r
+            stalled = best.norm > CONTRACTION * norm or best_lam < 1.0
             r, h_min, payload, norm = best
             updates += 1
             inverse = None if stalled else broyden_update(inverse, step, change)
@@ -314,9 +324,9 @@ class _Iteration:
         best, best_lam, lam = None, 1.0, 1.0
         for _ in range(LINE_SEARCH_CUTS):
             trial = _attempt(self.residual, z + lam * step)
-            if trial is not None and (best is None or trial[3] < best[3]):
+            if trial is not None and (best is None or trial.norm < best.norm):
                 best, best_lam = trial, lam
-            if best is not None and (best[3] < norm
+            if best is not None and (best.norm < norm
                                      or self.solves >= self.controls.max_solves):
                 break
             lam *= 0.5
