@@ -1,6 +1,7 @@
 """The rigid companion and the coarser grid-error orbits computed by a forked process while
-the elastic orbit runs: jobs in order, silent, failed or unsendable jobs left to the run's
-own process, off where it cannot pay, and the same answer bit for bit."""
+the run's own orbit runs (elastic or rigid): jobs in order, silent, failed or unsendable
+jobs left to the run's own process, off where it cannot pay, and the same answer bit for
+bit."""
 
 from __future__ import annotations
 
@@ -156,6 +157,44 @@ def test_elastic_run_with_side_runs_writes_the_same_files_as_without(
     assert sorted(key for key, _ in handed if key in figures) == figures and figures
     for name in ("cycle.csv", "cycle_rigid.csv", *figures):
         assert (outs["beside"] / name).read_bytes() == (outs["alone"] / name).read_bytes()
+    summaries = [_untimed(json.loads((outs[m] / "summary.json").read_text()))
+                 for m in ("beside", "alone")]
+    assert summaries[0] == summaries[1]
+    assert "grid error +" in json.dumps(summaries[0]) or "grid error -" in json.dumps(
+        summaries[0])
+
+
+def test_rigid_run_with_its_coarse_orbits_beside_writes_the_same_files_as_without(
+        fresh, tmp_path, monkeypatch):
+    """`conrod run` of a grid film on a rigid bore: a process started on the coarser
+    grid-error orbits (no rigid companion to compute), the same files bit for bit."""
+    import json
+
+    from hardening_helpers import cheap_table_run, write_case
+
+    case = cheap_table_run()
+    case["solver"].update(film="reynolds", n_theta=36, n_z=8)
+    path = str(write_case(tmp_path, case))
+    started = []
+    start = side_runs.start
+
+    def spied(jobs):
+        side = start(jobs)
+        started.append(([key for key, _ in jobs], side is not None))
+        return side
+
+    monkeypatch.setattr(side_runs, "start", spied)
+    outs = {}
+    for mode in ("beside", "alone"):
+        if mode == "alone":
+            monkeypatch.setenv(side_runs.SWITCH, "0")
+        outs[mode] = tmp_path / mode
+        result = CliRunner().invoke(app, ["run", path, "--out", str(outs[mode]),
+                                          "--no-figures"])
+        assert result.exit_code in (0, 4), result.output
+    assert started == [([(26, 6), (18, 4)], True), ([(26, 6), (18, 4)], False)]
+    assert (outs["beside"] / "cycle.csv").read_bytes() == (
+        outs["alone"] / "cycle.csv").read_bytes()
     summaries = [_untimed(json.loads((outs[m] / "summary.json").read_text()))
                  for m in ("beside", "alone")]
     assert summaries[0] == summaries[1]

@@ -1,10 +1,11 @@
 """The rigid companion and the coarser orbits of the grid-error estimate, computed on a
-second core while the elastic orbit runs.
+second core while the run's own orbit runs.
 
 An elastic run (``conrod run`` on an elastic ``[housing]``) computes, besides its own
 orbit, the same bearing on a rigid bore and, for the grid error, its orbit on two coarser
-grids; none of them needs the elastic orbit's answer. Where a second core is idle, a forked
-process computes them one after the other while the elastic orbit runs, and hands each
+grids; a rigid run of a grid film computes the two coarser orbits. None of them needs the
+run's own answer. Where a second core is idle, a forked
+process computes them one after the other while the run's orbit runs, and hands each
 result over the moment the run needs it; a job it has not started when the run needs it,
 or while the run waits for another, the run computes itself (work stealing). numba's
 kernels it compiles on the way stay in the disk cache. The process runs the same code on
@@ -211,11 +212,11 @@ def take(key: Any) -> Any:
 
 
 def _jobs(simulation: Any, more: tuple[tuple[Any, Any], ...]) -> list[tuple[Any, Any]]:
-    """Only beside an elastic orbit: a rigid one is cheaper than what the process costs."""
-    if not simulation.elastic():
-        return []
+    """The rigid companion of an elastic orbit (when asked for), then the ``more`` jobs: a
+    rigid orbit's coarser grid-error orbits cost about as much CPU as the orbit itself
+    (module docstring)."""
     jobs: list[tuple[Any, Any]] = []
-    if simulation.rigid_companion() is not None:
+    if simulation.elastic() and simulation.rigid_companion() is not None:
         jobs.append((RIGID, lambda: _rigid_companion(simulation)))
     return jobs + list(more)
 
