@@ -156,6 +156,38 @@ def test_report_shows_the_margins_and_maps_in_a_browser(run_folder, tmp_path):
     assert_not_blank(pixels)
 
 
+def test_fields_are_the_rows_the_characteristics_solved(monkeypatch):
+    """A rigid Reynolds run solves the film once per output angle: the sign-off reads the
+    pressure fields of the characteristics' solves (no film solve of its own), and they
+    are the fields that solving every row again gives, bit for bit."""
+    from conrod.orbit.memory import FilmSession
+    from conrod.simulation.fields import cycle_fields
+
+    case = cheap_table_run()
+    case["solver"].update(film="reynolds", n_theta=36, n_z=8)
+    results, thermal = Simulation(Case.from_dict(case)).run_orbit()
+    cycle, memory = results.cycle, thermal.orbit.last.film_memory
+    assert len(thermal.rows) == len(cycle.crank_angle) and memory is None
+    again = cycle_fields(thermal.problem, cycle, memory)  # every row solved again
+    solves = []
+    solve = FilmSession.solve
+
+    def counted(self, *args, **kwargs):
+        solves.append(1)
+        return solve(self, *args, **kwargs)
+
+    monkeypatch.setattr(FilmSession, "solve", counted)
+    kept = cycle_fields(thermal.problem, cycle, memory, thermal.rows)
+    assert solves == []
+    assert sorted(kept.values) == sorted(again.values)
+    for name, values in again.values.items():
+        assert np.array_equal(kept.values[name], values), name
+    for name, (values, angles) in again.row_extremes.items():
+        assert np.array_equal(kept.row_extremes[name][0], values)
+        assert np.array_equal(kept.row_extremes[name][1], angles)
+    assert Simulation(Case.from_dict(case), signoff=False).run_orbit()[1].rows is None
+
+
 def test_mass_conserving_film_gives_the_reformation_intensity():
     """The fed passenger car with the mass-conserving film (massless orbit, 36 x 8): its
     fields hold the film fraction, the erosion map is the reformation intensity, and the

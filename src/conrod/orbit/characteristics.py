@@ -54,23 +54,34 @@ def film_states(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[Fi
     ]
 
 
-def film_results(problem: OrbitProblem, traj: CycleTrajectory, wj, wb) -> list[FilmResult]:
-    """Film results at the output angles, each with the film memory sampled there by the
-    integrator when it carried one (film fraction of a mass-conserving film), else with
-    the memory threaded from angle to angle (warm start). Where that memory is the answer
-    of the implicit step that ended at the angle (the content step of a mass-conserving
-    film), the row is that answer: one truth, the pressure of the converged state the orbit
-    accepted there (a new solve with the film fraction frozen is another problem, whose
-    pressure can be tens of times off in single rows)."""
+def film_results(problem: OrbitProblem, traj: CycleTrajectory, wj, wb,
+                 with_pressure: bool = False) -> list[FilmResult]:
+    """Film results at the output angles (with their pressure fields when
+    ``with_pressure``), each with the film memory sampled there by the integrator when it
+    carried one (film fraction of a mass-conserving film), else with the memory threaded
+    from angle to angle (warm start). Where that memory is the answer of the implicit step
+    that ended at the angle (the content step of a mass-conserving film), the row is that
+    answer: one truth, the pressure of the converged state the orbit accepted there (a new
+    solve with the film fraction frozen is another problem, whose pressure can be tens of
+    times off in single rows)."""
     session = problem.session()
     results = []
     for i, state in enumerate(film_states(problem, traj, wj, wb)):
         if traj.film_memory:
             session.restore(traj.film_memory[i])
-            results.append(session.accepted(state))
+            results.append(session.accepted(state, with_pressure=with_pressure))
         else:
-            results.append(session.solve(state))
+            results.append(session.solve(state, with_pressure=with_pressure))
     return results
+
+
+def row_results(problem: OrbitProblem, traj: CycleTrajectory,
+                with_pressure: bool = False) -> list[FilmResult]:
+    """:func:`film_results` at the output angles of ``traj``, for
+    :func:`cycle_characteristics` and whoever reads the same rows' fields after it (the
+    sign-off), so that the film is solved there once."""
+    wj, wb = problem.loads.speeds(traj.crank_angle)
+    return film_results(problem, traj, wj, wb, with_pressure)
 
 
 def _film_columns(results: list[FilmResult], relative_speed: np.ndarray) -> dict[str, np.ndarray]:
@@ -88,13 +99,16 @@ def _film_columns(results: list[FilmResult], relative_speed: np.ndarray) -> dict
     }
 
 
-def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory) -> CycleResults:
-    """Per-angle characteristics of the orbit ``traj`` (SI units, see :class:`CycleResults`)."""
+def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory,
+                          results: list[FilmResult] | None = None) -> CycleResults:
+    """Per-angle characteristics of the orbit ``traj`` (SI units, see :class:`CycleResults`)
+    from the film ``results`` at its output angles (None: :func:`row_results` here)."""
     phi = traj.crank_angle
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)
     relative = wj - wb
-    results = film_results(problem, traj, wj, wb)
+    if results is None:
+        results = film_results(problem, traj, wj, wb)
     film = _film_columns(results, relative)
     rotation = journal_rotation(phi, relative, problem.crank_speed)
     contact_angle = np.arctan2(traj.y, traj.x) % TWO_PI

@@ -35,10 +35,14 @@ from conrod.results.indicators import cell_indicators
 from conrod.results.margins import SignOff, margins
 
 
-def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None
-                 ) -> CycleFields | None:
+def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None,
+                 solved: list | None = None) -> CycleFields | None:
     """The fields at every output angle of ``cycle`` (module docstring); None for a film
-    without a pressure field (table, mobility)."""
+    without a pressure field (table, mobility). ``solved``: the film results the cycle's
+    characteristics came from, with their pressure fields
+    (:func:`conrod.orbit.characteristics.row_results`): the film is not solved again
+    where the rows need no film memory (a film without fields or content of its own
+    whose orbit carried none: the same solves, warm-started alike, so the same bits)."""
     film = problem.film
     theta, z = (np.asarray(a, dtype=float) for a in film.grid())
     session = problem.session()
@@ -46,10 +50,14 @@ def cycle_fields(problem: OrbitProblem, cycle: CycleResults, film_memory: list |
     specs: dict[str, FieldSpec] = {}
     extremes: list[tuple[float, float, float, float]] = []
     declares = (isinstance(film, HasFilmFields), isinstance(film, HasMixableContent))
+    if film_memory or any(declares) or solved is None or len(solved) != len(cycle.crank_angle):
+        solved = None
     nodes = (theta, z, np.cos(theta)[:, None], np.sin(theta)[:, None])  # once per cycle
     for i in range(len(cycle.crank_angle)):
         state = problem.row_state(cycle, i)
-        if film_memory:
+        if solved is not None and solved[i].pressure is not None:
+            result = solved[i]
+        elif film_memory:
             session.restore(film_memory[i])
             result = session.accepted(state, with_pressure=True)
         else:
@@ -115,10 +123,12 @@ def film_thickness_field(geometry, state: FilmState, theta: np.ndarray, z: np.nd
 
 
 def sign_off(problem: OrbitProblem, cycle: CycleResults, film_memory: list | None, summary,
-             limits: dict[str, float], stride_deg: float | None = None) -> SignOff:
+             limits: dict[str, float], stride_deg: float | None = None,
+             solved: list | None = None) -> SignOff:
     """Per-cell indicators, the erosion indicator and the margins against ``limits``; the
-    fields kept at ``stride_deg`` [deg] when asked for (None: not kept)."""
-    fields = cycle_fields(problem, cycle, film_memory)
+    fields kept at ``stride_deg`` [deg] when asked for (None: not kept); ``solved``: the
+    rows' film results of the characteristics (:func:`cycle_fields`)."""
+    fields = cycle_fields(problem, cycle, film_memory, solved)
     notes: list[str] = []
     if fields is None:
         notes.append(f"film {problem.film.name!r} gives no pressure field: no per-cell maps")
@@ -171,13 +181,14 @@ def signed_off(results, thermal, case, request: SignOffRequest):
         return results
     limits = case.limits.given() if case.limits is not None else {}
     return with_sign_off(results, thermal.problem, thermal.orbit.last.film_memory, limits,
-                         request.stride_deg)
+                         request.stride_deg, thermal.rows)
 
 
-def with_sign_off(results, problem, film_memory, limits, stride_deg=None):
-    """``results`` with its :class:`SignOff` and a warning per crossed limit."""
+def with_sign_off(results, problem, film_memory, limits, stride_deg=None, solved=None):
+    """``results`` with its :class:`SignOff` and a warning per crossed limit (``solved``:
+    the rows' film results of the characteristics, :func:`cycle_fields`)."""
     signoff = sign_off(problem, results.cycle, film_memory, results.summary, limits,
-                       stride_deg)
+                       stride_deg, solved)
     summary = dataclasses.replace(
         results.summary, warnings=(*results.summary.warnings, *signoff.warnings()))
     return dataclasses.replace(results, summary=summary, signoff=signoff)

@@ -34,7 +34,7 @@ from conrod.loads.cycle import LoadCycle
 from conrod.loads.forces import two_mass_split
 from conrod.loads.oil_feed import feed_schedule, wear_diagram_angle
 from conrod.loads.tilt import journal_tilt
-from conrod.orbit.characteristics import cycle_characteristics
+from conrod.orbit.characteristics import cycle_characteristics, row_results
 from conrod.orbit.heat_balance import relaxed_update
 from conrod.orbit.integrators import Integrator
 from conrod.orbit.periodic import PeriodicOrbit, periodic_orbit
@@ -331,13 +331,16 @@ class Simulation:
             current = problem.with_viscosity(viscosity)
             orbit = self._orbit(current, state, stage, progress)
             cycles += orbit.cycles_run
-            cycle = cycle_characteristics(current, orbit.last)
+            keep = self.signoff.wanted and not orbit.last.film_memory  # the sign-off reads
+            rows = row_results(current, orbit.last, with_pressure=keep)  # them (cycle_fields)
+            cycle = cycle_characteristics(current, orbit.last, rows)
             asperity = film_asperity_force(current, cycle, orbit.last.film_memory)
             boundary = asperity_friction_power(self.case, cycle, asperity)
             target = heat_balance_temperature(cycle, lubricant, float(boundary.mean()))
             if (target is None or iteration == iterations
                     or abs(target - temperature) <= s.thermal_tolerance):
-                return ThermalOrbit(orbit, current, cycle, target, cycles, iteration, asperity)
+                return ThermalOrbit(orbit, current, cycle, target, cycles, iteration, asperity,
+                                    rows if keep else None)
             temperature, state = relaxed_update(temperature, target), orbit.last.end_state
             viscosity = lubricant.viscosity_at(temperature)
         raise AssertionError("unreachable")  # pragma: no cover
@@ -375,6 +378,11 @@ class ThermalOrbit:
     """Greenwood–Tripp asperity force at each output angle as the film computed it on its
     own (deformed) gap [N]; None when the film does not carry it (the contact analysis then
     takes it on the rigid shell)."""
+    rows: list | None = None
+    """The film results the characteristics came from, one per output angle, with their
+    pressure fields, for the sign-off to read instead of solving the film there again
+    (:func:`conrod.simulation.fields.cycle_fields`); None where no sign-off is asked for
+    or the orbit carried a film memory (its rows are read from that memory)."""
 
 
 def check_oil_feed(geometry: BearingGeometry, film: str) -> None:

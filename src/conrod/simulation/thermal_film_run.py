@@ -50,6 +50,10 @@ class ThermalFilmOrbit:
     iterations: int
     asperity_force: np.ndarray | None
     film: ThermalFilmResults
+    rows: None = None
+    """No film results kept for the sign-off: the thermal film's rows carry its temperature
+    field, which the sign-off reads from the film (as :class:`~conrod.simulation.simulation.\
+ThermalOrbit`'s ``rows``)."""
 
 
 def thermal_orbit(sim: Any, heat_balance: Callable, progress: Any = None) -> Any:
