@@ -102,7 +102,7 @@ def _film_columns(results: list[FilmResult], relative_speed: np.ndarray) -> dict
 def cycle_characteristics(problem: OrbitProblem, traj: CycleTrajectory,
                           results: list[FilmResult] | None = None) -> CycleResults:
     """Per-angle characteristics of the orbit ``traj`` (SI units, see :class:`CycleResults`)
-    from the film ``results`` at its output angles (None: :func:`row_results` here)."""
+    from the film ``results`` at its output angles (None: solved here, :func:`film_results`)."""
     phi = traj.crank_angle
     load_x, load_y = problem.loads.load(phi)
     wj, wb = problem.loads.speeds(phi)

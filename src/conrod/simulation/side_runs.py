@@ -4,10 +4,10 @@ second core while the run's own orbit runs.
 An elastic run (``conrod run`` on an elastic ``[housing]``) computes, besides its own
 orbit, the same bearing on a rigid bore and, for the grid error, its orbit on two coarser
 grids; a rigid run of a grid film computes the two coarser orbits. None of them needs the
-run's own answer. Where a second core is idle, a forked
-process computes them one after the other while the run's orbit runs, and hands each
-result over the moment the run needs it; a job it has not started when the run needs it,
-or while the run waits for another, the run computes itself (work stealing). numba's
+run's own answer. Where a second core is idle, a forked process computes them one after the
+other while the run's orbit runs, and hands each result over the moment the run needs it;
+a job it has not started when the run needs it, or while the run waits for another, the run
+computes itself (work stealing). numba's
 kernels it compiles on the way stay in the disk cache. The process runs the same code on
 the same input, so the answer is the same bit for bit; a solver's error there is raised in
 the run as it would have been, and a job it could not finish otherwise (a result that
