@@ -75,9 +75,9 @@ def test_results_are_frozen_and_characteristics_solved_once_per_orbit(case, monk
     calls = []
     original = simulation_module.cycle_characteristics
 
-    def counted(problem, trajectory):
+    def counted(problem, trajectory, *rows):
         calls.append(problem.viscosity)
-        return original(problem, trajectory)
+        return original(problem, trajectory, *rows)
 
     monkeypatch.setattr(simulation_module, "cycle_characteristics", counted)
     results = Simulation(case, **QUICK).run()
@@ -99,9 +99,9 @@ def _blas_threads_seen(case, monkeypatch, method: str) -> list[int]:
     seen = []
     original = simulation_module.cycle_characteristics
 
-    def watched(problem, trajectory):
+    def watched(problem, trajectory, *rows):
         seen.append(blas_threads())
-        return original(problem, trajectory)
+        return original(problem, trajectory, *rows)
 
     monkeypatch.setattr(simulation_module, "cycle_characteristics", watched)
     with two_blas_threads():

@@ -1,6 +1,7 @@
 """What a run with oil holes in the crank pin (``[[bearing.journal_holes]]``) can be
 combined with: refused before the run where the hole would be ignored or left where it
-was (used by :class:`conrod.simulation.simulation.Simulation`)."""
+was; and the oil feed the mass-conserving film's orbit needs (both used by
+:class:`conrod.simulation.simulation.Simulation`)."""
 
 from __future__ import annotations
 
@@ -30,3 +31,18 @@ def check_journal_holes(geometry: Any, film: str, tilt: Any, elastic: bool = Fal
         raise CaseError("bearing.journal_holes with an elastic [housing]: not available "
                         "(allowed: housing.model = 'rigid', or the feed through shell "
                         "grooves and holes)")
+
+
+def check_oil_feed(geometry: Any, film: str) -> None:
+    """The mass-conserving film in an orbit needs oil fed above the cavitation pressure
+    through a groove or a hole: without it the lands starve over the cycle and the orbit
+    cannot converge (a steady film solve does not need it)."""
+    fed = (geometry.grooves or geometry.feed_holes) and (
+        geometry.supply_pressure > geometry.cavitation_pressure) or geometry.journal_holes
+    if film == "mass_conserving" and not fed:
+        raise CaseError(
+            "solver.film = 'mass_conserving': needs an oil feed above the cavitation pressure "
+            f"(bearing.supply_pressure = {geometry.supply_pressure:g} Pa, cavitation "
+            f"{geometry.cavitation_pressure:g} Pa, {len(geometry.grooves)} groove(s), "
+            f"{len(geometry.feed_holes)} hole(s)): add a groove or feed hole to [bearing] and "
+            "set bearing.supply_pressure, or use film = 'reynolds'")

@@ -44,7 +44,7 @@ from conrod.results.feed import starvation_warnings
 from conrod.results.plausibility import check_run, table_range_warnings
 from conrod.results.summary import contact_warnings, summarise
 from conrod.simulation.as_built_run import as_built, warm_note
-from conrod.simulation.feed_checks import check_journal_holes
+from conrod.simulation.feed_checks import check_journal_holes, check_oil_feed
 from conrod.simulation.fields import signed_off, signoff_request
 from conrod.simulation.orbit_outputs import (
     film_asperity_force,
@@ -383,21 +383,6 @@ class ThermalOrbit:
     pressure fields, for the sign-off to read instead of solving the film there again
     (:func:`conrod.simulation.fields.cycle_fields`); None where no sign-off is asked for
     or the orbit carried a film memory (its rows are read from that memory)."""
-
-
-def check_oil_feed(geometry: BearingGeometry, film: str) -> None:
-    """The mass-conserving film in an orbit needs oil fed above the cavitation pressure
-    through a groove or a hole: without it the lands starve over the cycle and the orbit
-    cannot converge (a steady film solve does not need it)."""
-    fed = (geometry.grooves or geometry.feed_holes) and (
-        geometry.supply_pressure > geometry.cavitation_pressure) or geometry.journal_holes
-    if film == "mass_conserving" and not fed:
-        raise CaseError(
-            "solver.film = 'mass_conserving': needs an oil feed above the cavitation pressure "
-            f"(bearing.supply_pressure = {geometry.supply_pressure:g} Pa, cavitation "
-            f"{geometry.cavitation_pressure:g} Pa, {len(geometry.grooves)} groove(s), "
-            f"{len(geometry.feed_holes)} hole(s)): add a groove or feed hole to [bearing] and "
-            "set bearing.supply_pressure, or use film = 'reynolds'")
 
 
 def default_film(case: Case) -> FilmModel:
