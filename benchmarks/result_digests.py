@@ -83,12 +83,12 @@ def case_file(name: str, scratch: Path) -> Path:
     return path
 
 
-def _scrub(value):
+def scrub_wall_times(value):
     """summary.json without its wall times (the only field that differs between runs)."""
     if isinstance(value, dict):
-        return {k: _scrub(v) for k, v in value.items() if "wall_time" not in k}
+        return {k: scrub_wall_times(v) for k, v in value.items() if "wall_time" not in k}
     if isinstance(value, list):
-        return [_scrub(v) for v in value]
+        return [scrub_wall_times(v) for v in value]
     return value
 
 
@@ -121,7 +121,7 @@ def fingerprint(name: str, extra: tuple[str, ...], scratch: Path) -> dict:
         if path.suffix == ".csv":
             record["digests"][path.name] = hashlib.sha256(path.read_bytes()).hexdigest()
         elif path.name == "summary.json":
-            summary = _scrub(json.loads(path.read_text(encoding="utf-8")))
+            summary = scrub_wall_times(json.loads(path.read_text(encoding="utf-8")))
             text = json.dumps(summary, sort_keys=True).encode()
             record["digests"][path.name] = hashlib.sha256(text).hexdigest()
             record["numbers"] = _numbers(summary)

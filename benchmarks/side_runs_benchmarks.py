@@ -32,6 +32,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from result_digests import scrub_wall_times  # beside this script
+
 REPO = Path(__file__).resolve().parents[1]
 OUT = REPO / "benchmarks" / "side_runs_benchmarks.md"
 CLI = "from conrod.cli.app import main; main()"
@@ -65,18 +67,12 @@ def same_files(a: Path, b: Path) -> bool:
             continue
         if not filecmp.cmp(a / name, b / name, shallow=False):
             return False
-    return _untimed(a / "summary.json") == _untimed(b / "summary.json")
+    return _summary(a) == _summary(b)
 
 
-def _untimed(path: Path):
-    def strip(value):
-        if isinstance(value, dict):
-            return {k: strip(v) for k, v in value.items() if "time" not in k}
-        if isinstance(value, list):
-            return [strip(v) for v in value]
-        return value
-
-    return strip(json.loads(path.read_text(encoding="utf-8")))
+def _summary(folder: Path):
+    """``summary.json`` of a result folder without its wall times."""
+    return scrub_wall_times(json.loads((folder / "summary.json").read_text(encoding="utf-8")))
 
 
 def measure(example: str, rounds: int) -> dict:
