@@ -7,6 +7,7 @@ import json
 import os
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -325,3 +326,42 @@ def test_the_quasi_static_contact_forces_are_one_cached_kernel_per_film_force():
     _contact_forces(problem, python, load_x, load_y, speeds, np.zeros(3))
     np.testing.assert_allclose(compiled, python, rtol=1e-10, atol=0.0)
     assert compiled[0, 4] > 0.0 and compiled[2, 4] > 0.0 and compiled[1, 4] == 0.0
+
+
+COMPILE_AT_THE_SIGNAL = """
+import json, sys, time
+from pathlib import Path
+import conrod  # noqa: F401 - guards numba's cache
+from conrod.film.short.kernel import short_bearing_force
+
+ready, go = Path(sys.argv[1]), Path(sys.argv[2])
+ready.write_text("")
+while not go.exists():
+    time.sleep(0.001)
+short_bearing_force(3e-5, -1e-5, 0.01, 0.02, 400.0, 0.01, 0.05, 0.025, 5e-5)
+stats = short_bearing_force.stats
+print(json.dumps([sum(stats.cache_hits.values()), sum(stats.cache_misses.values())]))
+"""
+
+
+def test_two_processes_missing_the_same_kernel_compile_it_once(tmp_path):
+    """Two processes call the same uncompiled kernel at the same moment on one empty cache
+    folder: one compiles it while the other waits for its lock and loads what it saved
+    (without the lock both miss and both compile)."""
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src"),
+           "NUMBA_CACHE_DIR": str(tmp_path / "cache")}
+    go = tmp_path / "go"
+    processes = [subprocess.Popen([sys.executable, "-c", COMPILE_AT_THE_SIGNAL,
+                                   str(tmp_path / f"ready{k}"), str(go)], env=env,
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                 for k in range(2)]
+    while not all((tmp_path / f"ready{k}").exists() for k in range(2)):
+        assert all(process.poll() is None for process in processes)
+        time.sleep(0.01)
+    go.write_text("")
+    counts = []
+    for process in processes:
+        out, err = process.communicate(timeout=300)
+        assert process.returncode == 0, err[-2000:]
+        counts.append(json.loads(out.splitlines()[-1]))
+    assert sorted(counts) == [[0, 1], [1, 0]]  # (hits, misses) of each process

@@ -26,23 +26,37 @@ loads the kernels compiled beside the sources it was copied from
     tolerate_unreadable_cache()   # done by ``import conrod``; numba need not be loaded yet
 
 Compile time: :func:`default_optimisation_level` (also done by ``import conrod``) compiles
-conrod's kernels at LLVM level :data:`OPTIMISATION_LEVEL` unless ``NUMBA_OPT`` is set.
+conrod's kernels at LLVM level :data:`OPTIMISATION_LEVEL` unless ``NUMBA_OPT`` is set. Two
+processes that miss the same kernel in the same cache folder (the test suite's workers, a run
+and its second process, a sweep's workers on a cold cache) compile it once: the first takes
+the kernel's lock (a byte of :data:`LOCK_FILE` in the cache folder, locked with ``fcntl``;
+the system releases it when the process ends) until it has saved the kernel, and the others
+wait for it and load the saved kernel instead of compiling it as well. A folder where the
+lock file cannot be written, or a wait longer than :data:`LOCK_PATIENCE`, compiles as numba
+does.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import functools
 import hashlib
 import importlib.machinery
 import os
 import sys
+import time
 import warnings
 from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING, Any, cast
 
 from conrod.errors import CacheWarning
+
+try:
+    import fcntl
+except ImportError:  # pragma: no cover - not on Windows: kernels compiled as numba does
+    fcntl = None  # type: ignore[assignment]
 
 if TYPE_CHECKING:  # pragma: no cover
     from importlib.abc import Loader
@@ -56,7 +70,16 @@ CACHING_MODULE = "numba.core.caching"
 """The numba module whose ``Cache`` loads and saves compiled kernels."""
 OWN_PREFIX = "conrod."
 """Kernels of modules below this prefix are guarded; numba's other users are left alone."""
+LOCK_FILE = "conrod-compile.lock"
+"""File in each cache folder whose bytes lock the kernels being compiled (one byte per
+kernel, at an offset hashed from the name of its index file)."""
+LOCK_PATIENCE = 300.0
+"""Longest wait for another process compiling the same kernel [s]; then it is compiled here
+too (the tilted flight, the longest, compiles in 70-110 s on 2 cores)."""
+LOCK_POLL = 0.02
+"""Interval of the lock's tries while another process holds it [s]."""
 _state = {"warned": False}
+_locks: dict[str, Any] = {"files": {}, "held": set()}
 
 
 def default_optimisation_level() -> None:
@@ -91,14 +114,22 @@ def guard(caching: ModuleType) -> None:
             cache_file = numba_attribute(self, "_cache_file")
             vars(cache_file)["_source_stamp"] = package_stamp()
 
-    def load_overload(self: Any, sig: Any, target_context: Any) -> Any:
-        if not _own(self):
-            return load(self, sig, target_context)
+    def load_or_discard(self: Any, sig: Any, target_context: Any) -> Any:
         try:
             return load(self, sig, target_context)
         except Exception as error:  # any unreadable entry: a cache miss
             discard(self, error)
             return None
+
+    def load_overload(self: Any, sig: Any, target_context: Any) -> Any:
+        if not _own(self):
+            return load(self, sig, target_context)
+        found = load_or_discard(self, sig, target_context)
+        if found is None and lock_kernel(self):  # another process may have compiled it
+            found = load_or_discard(self, sig, target_context)  # while this one waited
+            if found is not None:
+                unlock_kernel(self)
+        return found  # None: compiled here, the lock held until it is saved
 
     def save_overload(self: Any, sig: Any, data: Any) -> None:
         if not _own(self):
@@ -112,6 +143,8 @@ def guard(caching: ModuleType) -> None:
                       f"({error.strerror or error}); going on without it")
         except Exception as error:  # its index could not be read (nor removed): not cached
             discard(self, error)
+        finally:
+            unlock_kernel(self)
 
     load_overload.conrod_guarded = True  # type: ignore[attr-defined]
     cache_class.__init__ = stamped_init
@@ -130,6 +163,58 @@ def package_stamp(root: str | None = None) -> str:
         digest.update(f"{path.relative_to(folder).as_posix()}:{len(content)};".encode())
         digest.update(content)
     return digest.hexdigest()
+
+
+def lock_kernel(cache: Any) -> bool:
+    """Take the lock of ``cache``'s kernel, waiting while another process holds it (module
+    docstring); True when this process holds it now (also when it held it already: a
+    compile that numba repeats with literal arguments), False when it cannot be locked."""
+    key = _lock_key(cache)
+    if key is None:
+        return False
+    if key in _locks["held"]:
+        return True
+    descriptor, offset = key
+    deadline = time.monotonic() + LOCK_PATIENCE
+    while True:
+        try:
+            fcntl.lockf(descriptor, fcntl.LOCK_EX | fcntl.LOCK_NB, 1, offset)
+        except OSError as error:
+            if error.errno not in (errno.EACCES, errno.EAGAIN) or time.monotonic() > deadline:
+                return False
+            time.sleep(LOCK_POLL)
+            continue
+        _locks["held"].add(key)
+        return True
+
+
+def unlock_kernel(cache: Any) -> None:
+    """Release the lock of ``cache``'s kernel if this process holds it."""
+    key = _lock_key(cache)
+    if key is not None and key in _locks["held"]:
+        _locks["held"].discard(key)
+        with contextlib.suppress(OSError):
+            fcntl.lockf(key[0], fcntl.LOCK_UN, 1, key[1])
+
+
+def _lock_key(cache: Any) -> tuple[int, int] | None:
+    """(descriptor of the cache folder's lock file, byte of the kernel), or None where the
+    file cannot be opened for writing (kept open for the process's life: closing any
+    descriptor of the file would release all its locks)."""
+    if fcntl is None:
+        return None
+    _, folder, index_name = _files(cache)
+    files = _locks["files"]
+    if folder not in files:
+        try:
+            files[folder] = os.open(os.path.join(folder, LOCK_FILE), os.O_RDWR | os.O_CREAT,
+                                    0o666)
+        except OSError:
+            files[folder] = None
+    if files[folder] is None:
+        return None
+    offset = int.from_bytes(hashlib.sha256(index_name.encode()).digest()[:5], "big")
+    return files[folder], offset
 
 
 def numba_attribute(instance: Any, name: str) -> Any:
