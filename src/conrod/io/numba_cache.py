@@ -32,8 +32,8 @@ and its second process, a sweep's workers on a cold cache) compile it once: the 
 the kernel's lock (a byte of :data:`LOCK_FILE` in the cache folder, locked with ``fcntl``;
 the system releases it when the process ends) until it has saved the kernel, and the others
 wait for it and load the saved kernel instead of compiling it as well. A folder where the
-lock file cannot be written, or a wait longer than :data:`LOCK_PATIENCE`, compiles as numba
-does.
+lock file cannot be written (or locked: some network file systems), a wait longer than
+:data:`LOCK_PATIENCE`, or ``CONROD_COMPILE_LOCK=0`` compiles as numba does.
 """
 
 from __future__ import annotations
@@ -73,6 +73,8 @@ OWN_PREFIX = "conrod."
 LOCK_FILE = "conrod-compile.lock"
 """File in each cache folder whose bytes lock the kernels being compiled (one byte per
 kernel, at an offset hashed from the name of its index file)."""
+LOCK_SWITCH = "CONROD_COMPILE_LOCK"
+"""Environment variable: ``0`` turns the compile lock off."""
 LOCK_PATIENCE = 300.0
 """Longest wait for another process compiling the same kernel [s]; then it is compiled here
 too (the tilted flight, the longest, compiles in 70-110 s on 2 cores)."""
@@ -201,7 +203,7 @@ def _lock_key(cache: Any) -> tuple[int, int] | None:
     """(descriptor of the cache folder's lock file, byte of the kernel), or None where the
     file cannot be opened for writing (kept open for the process's life: closing any
     descriptor of the file would release all its locks)."""
-    if fcntl is None:
+    if fcntl is None or os.environ.get(LOCK_SWITCH, "1") == "0":
         return None
     _, folder, index_name = _files(cache)
     files = _locks["files"]
