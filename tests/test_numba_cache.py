@@ -365,3 +365,31 @@ def test_two_processes_missing_the_same_kernel_compile_it_once(tmp_path):
         assert process.returncode == 0, err[-2000:]
         counts.append(json.loads(out.splitlines()[-1]))
     assert sorted(counts) == [[0, 1], [1, 0]]  # (hits, misses) of each process
+
+
+FAIL_TO_COMPILE = """
+import json
+import conrod  # noqa: F401 - guards numba's cache
+from conrod.io import numba_cache
+from conrod.film.short.kernel import short_bearing_force
+
+try:
+    short_bearing_force("not a number", 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 5e-5)
+except Exception as error:
+    failed = type(error).__name__
+print(json.dumps([failed, len(numba_cache._locks["held"]),
+                  len(short_bearing_force.stats.cache_misses)]))
+"""
+
+
+def test_a_compile_that_raises_releases_its_kernel_lock(tmp_path):
+    """A kernel called with arguments it cannot compile for misses the cache, takes its lock
+    and raises numba's typing error: the lock is released at once (numba saves nothing), so
+    that another process of a long-lived program does not wait for it."""
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src"), "NUMBA_CACHE_DIR": str(tmp_path)}
+    done = subprocess.run([sys.executable, "-c", FAIL_TO_COMPILE], capture_output=True,
+                          text=True, env=env, check=False)
+    assert done.returncode == 0, done.stderr[-2000:]
+    failed, held, misses = json.loads(done.stdout.splitlines()[-1])
+    assert (failed, misses) == ("TypingError", 1)  # it did miss, lock and fail
+    assert held == 0

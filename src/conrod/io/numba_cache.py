@@ -30,9 +30,9 @@ conrod's kernels at LLVM level :data:`OPTIMISATION_LEVEL` unless ``NUMBA_OPT`` i
 processes that miss the same kernel in the same cache folder (the test suite's workers, a run
 and its second process, a sweep's workers on a cold cache) compile it once: the first takes
 the kernel's lock (a byte of :data:`LOCK_FILE` in the cache folder, locked with ``fcntl``;
-the system releases it when the process ends) until it has saved the kernel, and the others
-wait for it and load the saved kernel instead of compiling it as well. A folder where the
-lock file cannot be written (or locked: some network file systems), a wait longer than
+the system releases it when the process ends, a compile that raises at once) until it has
+saved the kernel, and the others wait for it and load the saved kernel instead of compiling
+it as well. A folder where the lock file cannot be written (or locked: some network file systems), a wait longer than
 :data:`LOCK_PATIENCE`, or ``CONROD_COMPILE_LOCK=0`` compiles as numba does.
 """
 
@@ -152,6 +152,37 @@ def guard(caching: ModuleType) -> None:
     cache_class.__init__ = stamped_init
     cache_class.load_overload = load_overload
     cache_class.save_overload = save_overload
+    with contextlib.suppress(Exception):  # numba's events: a lock of a failed compile
+        from numba.core import event
+
+        event.register("numba:compile", _failed_compile_listener(event.Listener)())
+
+
+def _failed_compile_listener(base: type) -> type:
+    """A numba event listener releasing the lock of a kernel whose compile raised (the
+    signature did not become one of its dispatcher's overloads; numba then saves nothing):
+    otherwise another process of a long-lived program (a sweep's worker) would wait
+    :data:`LOCK_PATIENCE` for it."""
+
+    class FailedCompile(base):  # type: ignore[misc, valid-type]
+        def on_start(self, event: Any) -> None:
+            pass
+
+        def on_end(self, event: Any) -> None:
+            release_if_failed(event.data)
+
+    return FailedCompile
+
+
+def release_if_failed(data: Any) -> None:
+    """Release the kernel's lock if the compile of ``data`` (the ``numba:compile`` event's
+    dispatcher and argument types) left no overload."""
+    with contextlib.suppress(Exception):
+        dispatcher = data["dispatcher"]
+        cache = vars(dispatcher).get("_cache")
+        if cache is not None and hasattr(cache, "_cache_file") and _own(cache) and (
+                tuple(data["args"]) not in dispatcher.overloads):
+            unlock_kernel(cache)
 
 
 @functools.cache
@@ -169,8 +200,10 @@ def package_stamp(root: str | None = None) -> str:
 
 def lock_kernel(cache: Any) -> bool:
     """Take the lock of ``cache``'s kernel, waiting while another process holds it (module
-    docstring); True when this process holds it now (also when it held it already: a
-    compile that numba repeats with literal arguments), False when it cannot be locked."""
+    docstring); True when this process holds it now (also when it held it already), False
+    when it cannot be locked. A compile that raises releases it
+    (:func:`release_if_failed`; numba then compiles again with literal arguments, or the
+    error reaches the caller)."""
     key = _lock_key(cache)
     if key is None:
         return False
