@@ -33,7 +33,7 @@ from pathlib import Path
 
 import pandas as pd
 from compile_benchmarks import readme_job, with_grid  # beside this script
-from side_runs_benchmarks import machine, same_files
+from side_runs_benchmarks import append_section, cell, machine, same_files
 
 REPO = Path(__file__).resolve().parents[1]
 OUT = REPO / "benchmarks" / "compile_lock_benchmarks.md"
@@ -100,23 +100,13 @@ def main() -> None:
     for job, row in rows.items():
         plain, locked = row["runs"]["no lock"], row["runs"]["lock"]
 
-        def cell(runs, key):
-            values = [r[key] for r in runs]
-            return f"{statistics.median(values):.1f} ({min(values):.1f}–{max(values):.1f})"
-
         ratios = [b["cpu"] / a["cpu"] for a, b in zip(plain, locked, strict=True)]
         codes = sorted({r["code"] for r in plain + locked})
         lines.append(f"| {job} | {cell(plain, 'wall')} | {cell(plain, 'cpu')} | "
                      f"{cell(locked, 'wall')} | {cell(locked, 'cpu')} | "
                      f"{statistics.median(ratios):.2f} | {'/'.join(map(str, codes))} | "
                      f"{'yes' if row['same'] else 'NO'} |")
-    text = "\n".join(lines) + "\n"
-    print(text)
-    previous = OUT.read_text(encoding="utf-8") if OUT.exists() else (
-        "# First runs on an empty numba cache: the compile lock\n\n"
-        "Written by `python benchmarks/compile_lock_benchmarks.py` (its docstring says what "
-        "is measured).\n\n")
-    OUT.write_text(previous + text + "\n", encoding="utf-8")
+    append_section(OUT, "First runs on an empty numba cache: the compile lock", lines)
 
 
 if __name__ == "__main__":

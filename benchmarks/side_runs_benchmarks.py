@@ -97,6 +97,24 @@ def machine() -> str:
             "at the start")
 
 
+def cell(runs: list[dict], key: str) -> str:
+    """Median (min–max) of ``key`` over ``runs``, one decimal."""
+    values = [r[key] for r in runs]
+    return f"{statistics.median(values):.1f} ({min(values):.1f}–{max(values):.1f})"
+
+
+def append_section(out: Path, title: str, lines: list[str]) -> None:
+    """Print ``lines`` and append them to the record ``out`` (started with ``title`` and the
+    name of the script writing it)."""
+    text = "\n".join(lines) + "\n"
+    print(text)
+    script = Path(sys.argv[0]).name
+    previous = out.read_text(encoding="utf-8") if out.exists() else (
+        f"# {title}\n\nWritten by `python benchmarks/{script}` (its docstring says what is "
+        "measured).\n\n")
+    out.write_text(previous + text + "\n", encoding="utf-8")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--rounds", type=int, default=3)
@@ -112,21 +130,11 @@ def main() -> None:
     for example, row in rows.items():
         alone, beside = row["runs"]["in turn"], row["runs"]["beside"]
 
-        def cell(runs, key):
-            values = [r[key] for r in runs]
-            return f"{statistics.median(values):.1f} ({min(values):.1f}–{max(values):.1f})"
-
         ratios = [b["wall"] / a["wall"] for a, b in zip(alone, beside, strict=True)]
         lines.append(f"| `{example}` | {cell(alone, 'wall')} | {cell(alone, 'cpu')} | "
                      f"{cell(beside, 'wall')} | {cell(beside, 'cpu')} | "
                      f"{statistics.median(ratios):.2f} | {'yes' if row['same'] else 'NO'} |")
-    text = "\n".join(lines) + "\n"
-    print(text)
-    previous = OUT.read_text(encoding="utf-8") if OUT.exists() else (
-        "# Rigid grid-film runs: coarse orbits beside the run or in turn\n\n"
-        "Written by `python benchmarks/side_runs_benchmarks.py` (its docstring says what is "
-        "measured).\n\n")
-    OUT.write_text(previous + text + "\n", encoding="utf-8")
+    append_section(OUT, "Rigid grid-film runs: coarse orbits beside the run or in turn", lines)
 
 
 if __name__ == "__main__":
