@@ -146,6 +146,17 @@ def test_help_keeps_units_and_version(runner):
     assert result.exit_code == 0 and result.output.strip() == f"conrod {__version__}"
 
 
+def test_root_help_lists_each_command_s_whole_summary(runner):
+    """`conrod --help` (80 columns) gives each command's first help paragraph whole,
+    wrapped, not cut at the terminal's width with "..."."""
+    import inspect
+
+    root = " ".join(runner.invoke(app, ["--help"]).output.split())
+    for info in app.registered_commands:
+        first = (info.help or inspect.getdoc(info.callback)).split("\n\n")[0].split()
+        assert " ".join(first[-3:]) in root, first
+
+
 def test_film_choice_is_validated_by_the_command_line(runner, tmp_path):
     result = runner.invoke(app, ["run", str(EXAMPLES / "flores2006_table_load.toml"),
                                  "--out", str(tmp_path / "o"), "--film", "shortt"])

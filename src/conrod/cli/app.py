@@ -15,6 +15,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import importlib
+import inspect
 import os
 import sys
 import warnings
@@ -185,6 +186,15 @@ def _register_commands() -> None:
         if name not in _registered:
             importlib.import_module(f"conrod.cli.{name}_command").register(app)
             _registered.append(name)
+    for info in app.registered_commands:  # `conrod --help` lists each whole, wrapped
+        if info.short_help is None:
+            info.short_help = summary(info.help or inspect.getdoc(info.callback) or "")
+
+
+def summary(text: str) -> str:
+    """The first paragraph of a command's help on one line: what ``conrod --help`` lists
+    for it (click would cut it at the terminal's width with "...")."""
+    return " ".join(text.strip().split("\n\n")[0].split())
 
 
 def encoding_safe_streams() -> None:
