@@ -4,6 +4,9 @@ line with its "did you mean", not that line plus the required field it misspells
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import pytest
 from typer.testing import CliRunner
 
@@ -16,6 +19,24 @@ from conrod.film.table.film import TabulatedFilm
 from hardening_helpers import FLORES_TABLE, example_dict, mutated, write_case
 
 _register_commands()
+
+
+@pytest.mark.parametrize("args, named", [
+    (("run", "{case}", "--film", "foo"), "'--film'"), (("run", "{case}", "--bogus"), "--bogus"),
+    (("runn", "{case}"), "'runn'"), (("run",), "'case_file'"),
+    (("loads", "{case}", "--grid"), "--grid")])
+def test_a_mistake_on_the_command_line_is_one_line(tmp_path, args, named):
+    """The console command: an unknown option or command, a value not among the choices, a
+    missing argument: one line on stderr naming it (not click's usage, hint and message),
+    exit 2, nothing on stdout."""
+    case = write_case(tmp_path, example_dict("flores2006_table_load"))
+    done = subprocess.run(
+        [sys.executable, "-c", "from conrod.cli.app import main; main()",
+         *(arg.format(case=case) for arg in args)],
+        capture_output=True, text=True, timeout=120, check=False)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == 2 and done.stdout == "", (done.returncode, done.stdout)
+    assert len(lines) == 1 and lines[0].startswith("error: ") and named in lines[0], lines
 
 
 @pytest.mark.parametrize("film", ["table", "mobility"])

@@ -217,4 +217,31 @@ def main() -> None:
         warnings.formatwarning = _one_line_warning
         _register_commands()
         sys.argv[1:] = optional_fields_stride(sys.argv[1:])
-        app()
+        sys.exit(exit_code(app))
+
+
+def exit_code(command: Callable[..., Any]) -> int:
+    """Run the typer ``command`` on ``sys.argv`` and return its exit code; a mistake on the
+    command line (an unknown option or command, a value of the wrong type or choice, a
+    missing argument) is one line on stderr, ``error: <click's message> (conrod ... --help)``,
+    exit 2, instead of click's usage, hint and message; a missing command still prints the
+    help."""
+    try:
+        outcome = command(standalone_mode=False)  # the exit code, or a command's None
+    except CLICK_ERROR as error:
+        if type(error).__name__ == "NoArgsIsHelpError":  # `conrod` alone: the help
+            error.show()
+        else:
+            context = getattr(error, "ctx", None)
+            where = f" (see {context.command_path} --help)" if context is not None else ""
+            typer.echo(f"error: {' '.join(error.format_message().split())}{where}", err=True)
+        return int(error.exit_code)
+    except typer.Abort:
+        typer.echo("Aborted!", err=True)
+        return 1
+    return outcome if isinstance(outcome, int) else 0
+
+
+CLICK_ERROR = next(kind for kind in typer.BadParameter.__mro__
+                   if kind.__name__ == "ClickException")
+"""click's base of the errors it reports to the user (typer's own copy of click, or click)."""
