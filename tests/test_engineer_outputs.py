@@ -157,6 +157,14 @@ def test_root_help_lists_each_command_s_whole_summary(runner):
         assert " ".join(first[-3:]) in root, first
 
 
+def test_help_pages_show_units_without_markup_escapes(runner):
+    """Every command's help is plain text: a unit in brackets shows as written, not with
+    the backslash rich markup needed (`\\[rpm]`)."""
+    for info in app.registered_commands:
+        page = runner.invoke(app, [info.name, "--help"]).output
+        assert "\\" not in page, (info.name, page)
+
+
 def test_film_choice_is_validated_by_the_command_line(runner, tmp_path):
     result = runner.invoke(app, ["run", str(EXAMPLES / "flores2006_table_load.toml"),
                                  "--out", str(tmp_path / "o"), "--film", "shortt"])

@@ -60,10 +60,10 @@ def register(app: typer.Typer) -> None:
     @exits_cleanly
     def mechanism_command(
         case_file: Annotated[Path, typer.Argument(
-            help="Case file with \\[engine] and \\[clearance]")],
+            help="Case file with [engine] and [clearance]")],
         out: Annotated[Path, typer.Option("--out", help="Output folder (created if absent)")],
         sweep: Annotated[list[str] | None, typer.Option(
-            "--sweep", help="speed=START:STOP:COUNT \\[rpm] or load=START:STOP:COUNT \\[-]; "
+            "--sweep", help="speed=START:STOP:COUNT [rpm] or load=START:STOP:COUNT [-]; "
             "repeatable")] = None,
         jobs: Annotated[int, typer.Option(
             "--jobs", min=1, help="Worker processes for --sweep (1 = in this process)")] = 1,
