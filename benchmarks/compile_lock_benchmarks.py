@@ -99,7 +99,6 @@ def main() -> None:
              "| --- | ---: | ---: | ---: | ---: | ---: | --- | --- |"]
     for job, row in rows.items():
         plain, locked = row["runs"]["no lock"], row["runs"]["lock"]
-
         ratios = [b["cpu"] / a["cpu"] for a, b in zip(plain, locked, strict=True)]
         codes = sorted({r["code"] for r in plain + locked})
         lines.append(f"| {job} | {cell(plain, 'wall')} | {cell(plain, 'cpu')} | "

@@ -57,8 +57,8 @@ app = typer.Typer(
     add_completion=False,
     pretty_exceptions_enable=False,
     # plain click help: units such as [rpm] stay as written, the text takes the terminal's
-    # width (up to 100 columns), and no help page imports rich or markdown-it (`conrod run
-    # --help` 0.58 -> 0.3 s on a 2-core machine; benchmarks/startup_benchmarks.md)
+    # width (up to 100 columns), and no help page imports rich or markdown-it (timings:
+    # benchmarks/startup_benchmarks.md)
     rich_markup_mode=None,
     context_settings={"max_content_width": 100},
 )
