@@ -32,8 +32,9 @@ and its second process, a sweep's workers on a cold cache) compile it once: the 
 the kernel's lock (a byte of :data:`LOCK_FILE` in the cache folder, locked with ``fcntl``;
 the system releases it when the process ends, a compile that raises at once) until it has
 saved the kernel, and the others wait for it and load the saved kernel instead of compiling
-it as well. A folder where the lock file cannot be written (or locked: some network file systems), a wait longer than
-:data:`LOCK_PATIENCE`, or ``CONROD_COMPILE_LOCK=0`` compiles as numba does.
+it as well. A folder where the lock file cannot be written (or locked: some network file
+systems), a wait longer than :data:`LOCK_PATIENCE`, or ``CONROD_COMPILE_LOCK=0`` compiles as
+numba does.
 """
 
 from __future__ import annotations
