@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import gc
 import importlib
 import inspect
 import os
@@ -217,7 +218,9 @@ def main() -> None:
         warnings.formatwarning = _one_line_warning
         _register_commands()
         sys.argv[1:] = optional_fields_stride(sys.argv[1:])
-        sys.exit(exit_code(app))
+        code = exit_code(app)
+        gc.freeze()  # the process ends: its last collection need not walk what is alive
+        sys.exit(code)
 
 
 def exit_code(command: Callable[..., Any]) -> int:

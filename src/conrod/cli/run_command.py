@@ -175,23 +175,26 @@ def register(app: typer.Typer) -> None:
 
             case = Case.from_toml(case_file)
         n_theta, n_z = parse_grid(grid)
-        simulation = Simulation(case, film=film and film.value,
-                                integrator=integrator and integrator.value, max_cycles=max_cycles,
-                                step_deg=step_deg, n_theta=n_theta, n_z=n_z,
-                                rigid_companion=rigid, fields=fields)
+        from conrod.io.cores import long_lived_objects_frozen
         from conrod.output.registry import FigureDraft
         from conrod.simulation.grid_error import coarse_jobs
         from conrod.simulation.side_runs import beside, fork
 
-        draft = FigureDraft(fork) if figures else None  # drawn while the coarse orbits run
-        try:
-            with beside(simulation, coarse_jobs(simulation) if grid_error else ()) as side:
-                results = _computed(simulation, step_check, grid_error,
-                                    draft if side is not None else None)
-            write_results(results, out, figures=figures, draft=draft)
-        finally:
-            if draft is not None:
-                draft.close()
+        with long_lived_objects_frozen() as freeze_alive:  # the modules, then the results
+            simulation = Simulation(case, film=film and film.value,
+                                    integrator=integrator and integrator.value,
+                                    max_cycles=max_cycles, step_deg=step_deg, n_theta=n_theta,
+                                    n_z=n_z, rigid_companion=rigid, fields=fields)
+            draft = FigureDraft(fork) if figures else None  # drawn while coarse orbits run
+            try:
+                with beside(simulation, coarse_jobs(simulation) if grid_error else ()) as side:
+                    results = _computed(simulation, step_check, grid_error,
+                                        draft if side is not None else None)
+                freeze_alive()
+                write_results(results, out, figures=figures, draft=draft)
+            finally:
+                if draft is not None:
+                    draft.close()
         note = _renew_report(out) if had_report else None
         with printing_after_results(out):
             print_headline(results, out)

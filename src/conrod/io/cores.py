@@ -1,14 +1,18 @@
 """How many of this machine's usable cores other processes use now: whether a second
 process of conrod's can pay (the rigid companion and coarse orbits beside an elastic orbit,
 :mod:`conrod.simulation.side_runs`; the figures of a result set,
-:mod:`conrod.output.registry`)."""
+:mod:`conrod.output.registry`); and what a computing process asks of its machine: BLAS on
+one thread (:func:`one_blas_thread`), a command's long-lived objects left out of the
+garbage collector's passes (:func:`long_lived_objects_frozen`)."""
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import multiprocessing
 import os
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 
 LOAD_WINDOW = 0.1
 """How long the usable cores' use is sampled before the process starts [s]."""
@@ -83,6 +87,31 @@ def one_blas_thread():
     from threadpoolctl import threadpool_limits
 
     return threadpool_limits(limits=1, user_api="blas")
+
+
+_frozen = [0]
+"""How many :func:`long_lived_objects_frozen` blocks are open in this process [-]."""
+
+
+@contextlib.contextmanager
+def long_lived_objects_frozen() -> Iterator[Callable[[], None]]:
+    """Within the block the objects alive at its start (the imported modules, their functions
+    and classes, numba's types) are left out of the cyclic garbage collector's passes
+    (:func:`gc.freeze`); the block is given a function that adds those alive when it is
+    called (a run's results, before they are written). When the outermost block ends they
+    are collected as before (:func:`gc.unfreeze`); objects made in the block are collected
+    as usual throughout, and a process forked in it inherits the setting. A full pass walks
+    every object the collector tracks, and a command's objects stay alive to its end: in the
+    README's main job the run process's five full passes took 0.45 s of its 6 s
+    (benchmarks/compile_benchmarks.md)."""
+    _frozen[0] += 1
+    gc.freeze()
+    try:
+        yield gc.freeze
+    finally:
+        _frozen[0] -= 1
+        if _frozen[0] == 0:
+            gc.unfreeze()
 
 
 def usable_cores() -> list[int]:

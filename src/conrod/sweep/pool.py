@@ -41,7 +41,7 @@ from multiprocessing.connection import Connection, wait
 from typing import Any
 
 from conrod.errors import CaseError
-from conrod.io.cores import one_blas_thread
+from conrod.io.cores import long_lived_objects_frozen, one_blas_thread
 from conrod.io.interrupts import raise_if_interrupted
 
 BATCH_SECONDS = 0.5
@@ -217,6 +217,12 @@ def serve(conn: Connection, parent_pid: int | None) -> None:
         return  # the sweep ended while this worker started
     _die_with_parent()
     one_blas_thread()  # the worker has its core; NumPy is loaded already
+    with long_lived_objects_frozen():  # what it was forked with stays to its end
+        _serve_batches(conn, parent)
+
+
+def _serve_batches(conn: Connection, parent: int) -> None:
+    """:func:`serve`'s loop once the worker is set up."""
     while True:
         try:
             while not conn.poll(POLL_SECONDS * 10):
