@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import os
 from pathlib import Path
 
@@ -23,6 +24,15 @@ import pytest  # noqa: E402
 matplotlib.use("Agg")
 
 REPO = Path(__file__).resolve().parents[1]
+
+
+def pytest_collection_finish(session: pytest.Session) -> None:
+    """The test modules, conrod and its libraries, imported now and alive to the end, are
+    left out of the garbage collector's passes (as ``conrod run`` does with its own:
+    conrod.io.cores): in a whole suite the two workers' full passes took 19.5 s of CPU."""
+    gc.freeze()
+
+
 SHARED_DATA = REPO / "tests" / "data"
 EXAMPLES = REPO / "examples"
 

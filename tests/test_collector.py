@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import gc
 
+import pytest
 from typer.testing import CliRunner
 
 from conrod.cli.app import _register_commands, app
@@ -21,8 +22,18 @@ def _tracked(thing: object) -> bool:
     return any(other is thing for other in gc.get_objects())
 
 
-def test_the_objects_of_the_block_s_start_are_left_alone_and_collected_after_it():
-    assert gc.get_freeze_count() == 0
+@pytest.fixture
+def unfrozen():
+    """Nothing frozen during the test (the suite freezes its modules after collecting them:
+    tests/conftest.py); as it was after it."""
+    frozen = gc.get_freeze_count() > 0
+    gc.unfreeze()
+    yield
+    if frozen:
+        gc.freeze()
+
+
+def test_the_objects_of_the_block_s_start_are_left_alone_and_collected_after_it(unfrozen):
     before = [[]]
     with long_lived_objects_frozen() as freeze_alive:
         assert not _tracked(before) and gc.get_freeze_count() > 0
@@ -38,7 +49,20 @@ def test_the_objects_of_the_block_s_start_are_left_alone_and_collected_after_it(
     assert gc.get_freeze_count() == 0
 
 
-def test_conrod_run_writes_its_results_with_them_left_alone(tmp_path, monkeypatch, repo):
+def test_objects_frozen_before_the_block_stay_frozen_after_it(unfrozen):
+    """The program around it froze objects of its own: the block does not unfreeze them (nor
+    what it froze itself: :func:`gc.unfreeze` cannot tell them apart)."""
+    theirs = [[]]
+    gc.freeze()
+    with long_lived_objects_frozen():
+        ours = [[]]
+        with long_lived_objects_frozen():
+            pass
+    assert not _tracked(theirs) and not _tracked(ours)
+
+
+def test_conrod_run_writes_its_results_with_them_left_alone(tmp_path, monkeypatch, repo,
+                                                           unfrozen):
     """The results written are frozen while they are written; nothing is frozen after the
     command (an in-process caller's objects are collected as before)."""
     import conrod.output.registry as registry
@@ -63,8 +87,8 @@ def _frozen_here(_: int) -> bool:
     return gc.get_freeze_count() > 0
 
 
-def test_a_sweep_worker_computes_its_variants_with_its_start_left_alone():
+def test_a_sweep_worker_computes_its_variants_with_its_start_left_alone(unfrozen):
     with LocalPool(_frozen_here, 1) as pool:
         outcomes = [(kind, value) for _, kind, value in pool.imap([(i,) for i in range(2)])]
     assert outcomes == [(DONE, True), (DONE, True)]
-    assert gc.get_freeze_count() == 0
+    assert gc.get_freeze_count() == 0  # the sweep's own process as it was

@@ -89,8 +89,9 @@ def one_blas_thread():
     return threadpool_limits(limits=1, user_api="blas")
 
 
-_frozen = [0]
-"""How many :func:`long_lived_objects_frozen` blocks are open in this process [-]."""
+_frozen = [0, False]
+"""How many :func:`long_lived_objects_frozen` blocks are open in this process [-], and
+whether objects were frozen already when the outermost began."""
 
 
 @contextlib.contextmanager
@@ -99,18 +100,21 @@ def long_lived_objects_frozen() -> Iterator[Callable[[], None]]:
     and classes, numba's types) are left out of the cyclic garbage collector's passes
     (:func:`gc.freeze`); the block is given a function that adds those alive when it is
     called (a run's results, before they are written). When the outermost block ends they
-    are collected as before (:func:`gc.unfreeze`); objects made in the block are collected
-    as usual throughout, and a process forked in it inherits the setting. A full pass walks
+    are collected as before (:func:`gc.unfreeze`), unless some were frozen when it began (by
+    the program around it: all stay frozen then). Objects made in the block are collected
+    as usual throughout; a process forked in it inherits the setting. A full pass walks
     every object the collector tracks, and a command's objects stay alive to its end: in the
     README's main job the run process's five full passes took 0.45 s of its 6 s
     (benchmarks/compile_benchmarks.md)."""
+    if _frozen[0] == 0:
+        _frozen[1] = gc.get_freeze_count() > 0
     _frozen[0] += 1
     gc.freeze()
     try:
         yield gc.freeze
     finally:
         _frozen[0] -= 1
-        if _frozen[0] == 0:
+        if _frozen[0] == 0 and not _frozen[1]:
             gc.unfreeze()
 
 
