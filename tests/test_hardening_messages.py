@@ -21,14 +21,16 @@ from hardening_helpers import FLORES_TABLE, example_dict, mutated, write_case
 _register_commands()
 
 
-@pytest.mark.parametrize("args, named", [
-    (("run", "{case}", "--film", "foo"), "'--film'"), (("run", "{case}", "--bogus"), "--bogus"),
-    (("runn", "{case}"), "'runn'"), (("run",), "'case_file'"),
-    (("loads", "{case}", "--grid"), "--grid")])
-def test_a_mistake_on_the_command_line_is_one_line(tmp_path, args, named):
+@pytest.mark.parametrize("args, named, page", [
+    (("run", "{case}", "--film", "foo"), "'--film'", "conrod run"),
+    (("run", "{case}", "--bogus"), "--bogus", "conrod run"),
+    (("runn", "{case}"), "'runn'", "conrod"), (("run",), "'case_file'", "conrod run"),
+    (("loads", "{case}", "--grid"), "--grid", "conrod loads"),
+    (("run", "{case}", "--grid"), "--grid", "conrod run")])
+def test_a_mistake_on_the_command_line_is_one_line(tmp_path, args, named, page):
     """The console command: an unknown option or command, a value not among the choices, a
-    missing argument: one line on stderr naming it (not click's usage, hint and message),
-    exit 2, nothing on stdout."""
+    missing argument or option value: one line on stderr naming it and the help page to read
+    (not click's usage, hint and message), exit 2, nothing on stdout."""
     case = write_case(tmp_path, example_dict("flores2006_table_load"))
     done = subprocess.run(
         [sys.executable, "-c", "from conrod.cli.app import main; main()",
@@ -37,6 +39,7 @@ def test_a_mistake_on_the_command_line_is_one_line(tmp_path, args, named):
     lines = done.stderr.strip().splitlines()
     assert done.returncode == 2 and done.stdout == "", (done.returncode, done.stdout)
     assert len(lines) == 1 and lines[0].startswith("error: ") and named in lines[0], lines
+    assert lines[0].endswith(f"(see {page} --help)"), lines
 
 
 @pytest.mark.parametrize("film", ["table", "mobility"])

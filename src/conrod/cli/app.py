@@ -230,19 +230,31 @@ def exit_code(command: Callable[..., Any]) -> int:
     exit 2, instead of click's usage, hint and message; a missing command still prints the
     help."""
     try:
-        outcome = command(standalone_mode=False)  # the exit code, or a command's None
+        # the exit code, or a command's None; pages and messages say "conrod" also where
+        # Python runs it as ``python -c``
+        outcome = command(standalone_mode=False, prog_name=app.info.name)
     except CLICK_ERROR as error:
         if type(error).__name__ == "NoArgsIsHelpError":  # `conrod` alone: the help
             error.show()
         else:
             context = getattr(error, "ctx", None)
-            where = f" (see {context.command_path} --help)" if context is not None else ""
-            typer.echo(f"error: {' '.join(error.format_message().split())}{where}", err=True)
+            where = context.command_path if context is not None else _command_path()
+            typer.echo(f"error: {' '.join(error.format_message().split())} "
+                       f"(see {where} --help)", err=True)
         return int(error.exit_code)
     except typer.Abort:
         typer.echo("Aborted!", err=True)
         return 1
     return outcome if isinstance(outcome, int) else 0
+
+
+def _command_path() -> str:
+    """``conrod`` and the command that the first word of ``sys.argv`` not an option names
+    (``conrod`` alone where it names none), for a mistake click reports without its context
+    (an option given without its value)."""
+    name = next((arg for arg in sys.argv[1:] if not arg.startswith("-")), None)
+    commands = getattr(typer.main.get_command(app), "commands", {})
+    return f"{app.info.name} {name}" if name in commands else str(app.info.name)
 
 
 CLICK_ERROR = next(kind for kind in typer.BadParameter.__mro__
