@@ -253,7 +253,7 @@ def _command_path() -> str:
     (``conrod`` alone where it names none), for a mistake click reports without its context
     (an option given without its value)."""
     name = next((arg for arg in sys.argv[1:] if not arg.startswith("-")), None)
-    commands = getattr(typer.main.get_command(app), "commands", {})
+    commands = {info.name for info in app.registered_commands}
     return f"{app.info.name} {name}" if name in commands else str(app.info.name)
 
 

@@ -89,11 +89,6 @@ def one_blas_thread():
     return threadpool_limits(limits=1, user_api="blas")
 
 
-_frozen = [0, False]
-"""How many :func:`long_lived_objects_frozen` blocks are open in this process [-], and
-whether objects were frozen already when the outermost began."""
-
-
 @contextlib.contextmanager
 def long_lived_objects_frozen() -> Iterator[Callable[[], None]]:
     """Within the block the objects alive at its start (the imported modules, their functions
@@ -106,15 +101,12 @@ def long_lived_objects_frozen() -> Iterator[Callable[[], None]]:
     every object the collector tracks, and a command's objects stay alive to its end: in the
     README's main job the run process's five full passes took 0.45 s of its 6 s
     (benchmarks/compile_benchmarks.md)."""
-    if _frozen[0] == 0:
-        _frozen[1] = gc.get_freeze_count() > 0
-    _frozen[0] += 1
+    frozen_before = gc.get_freeze_count() > 0  # also inside another such block
     gc.freeze()
     try:
         yield gc.freeze
     finally:
-        _frozen[0] -= 1
-        if _frozen[0] == 0 and not _frozen[1]:
+        if not frozen_before:
             gc.unfreeze()
 
 

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import contextlib
 import ctypes
+import gc
 import multiprocessing
 import os
 import signal
@@ -41,7 +42,7 @@ from multiprocessing.connection import Connection, wait
 from typing import Any
 
 from conrod.errors import CaseError
-from conrod.io.cores import long_lived_objects_frozen, one_blas_thread
+from conrod.io.cores import one_blas_thread
 from conrod.io.interrupts import raise_if_interrupted
 
 BATCH_SECONDS = 0.5
@@ -217,12 +218,7 @@ def serve(conn: Connection, parent_pid: int | None) -> None:
         return  # the sweep ended while this worker started
     _die_with_parent()
     one_blas_thread()  # the worker has its core; NumPy is loaded already
-    with long_lived_objects_frozen():  # what it was forked with stays to its end
-        _serve_batches(conn, parent)
-
-
-def _serve_batches(conn: Connection, parent: int) -> None:
-    """:func:`serve`'s loop once the worker is set up."""
+    gc.freeze()  # what it was forked with stays to its end: the collector's passes skip it
     while True:
         try:
             while not conn.poll(POLL_SECONDS * 10):
